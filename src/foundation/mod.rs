@@ -1,0 +1,151 @@
+//! Foundation operators: the compliance T (pressure → surface settlement, tested against
+//! pressure shape functions) and the coupling B between plate deflections and pressures.
+//!
+//! The pressure σ is interpolated with the same bilinear functions f_i as the deflection, one
+//! unknown per model node. The discrete gap is g = Tσ − Bᵀu and the plate feels the load −Bσ.
+
+pub mod halfspace;
+pub mod winkler;
+
+use crate::mesh::{Dof, DofMap, Mesh};
+
+/// Which foundation model.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum FoundationKind {
+    /// Winkler subgrade: settlement = pressure / K at each point (paper eq. 2.8).
+    Winkler,
+    /// Homogeneous isotropic elastic half-space (Boussinesq kernel, paper eq. 2.6).
+    HalfSpace,
+}
+
+impl FoundationKind {
+    /// Name used in scene files and reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            FoundationKind::Winkler => "winkler",
+            FoundationKind::HalfSpace => "half-space",
+        }
+    }
+}
+
+/// The compliance operator T.
+#[derive(Debug, Clone)]
+pub enum Compliance {
+    /// Winkler: T = (1/K) diag(∫ f_i).
+    Diagonal(Vec<f64>),
+    /// Half-space: T_ij = ⟨f_i, 𝒯 f_j⟩, dense symmetric positive definite.
+    Dense(faer::Mat<f64>),
+}
+
+impl Compliance {
+    /// y = T x.
+    pub fn apply(&self, x: &[f64]) -> Vec<f64> {
+        match self {
+            Compliance::Diagonal(d) => d.iter().zip(x).map(|(a, b)| a * b).collect(),
+            Compliance::Dense(t) => {
+                let n = t.nrows();
+                let mut y = vec![0.0; n];
+                for (j, &xj) in x.iter().enumerate() {
+                    if xj != 0.0 {
+                        let col = t.col(j);
+                        for (i, yi) in y.iter_mut().enumerate() {
+                            *yi += col[i] * xj;
+                        }
+                    }
+                }
+                y
+            }
+        }
+    }
+
+    /// Size n_σ.
+    pub fn len(&self) -> usize {
+        match self {
+            Compliance::Diagonal(d) => d.len(),
+            Compliance::Dense(t) => t.nrows(),
+        }
+    }
+
+    /// True when there are no pressure unknowns.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+/// ∫ f_i dA over the model for every node (the lumped, row-sum mass).
+pub fn nodal_areas(mesh: &Mesh) -> Vec<f64> {
+    let mut m = vec![0.0; mesh.n_nodes()];
+    let quarter = 0.25 * mesh.element_area();
+    for e in 0..mesh.n_elements() {
+        for n in mesh.element_nodes(e) {
+            m[n] += quarter;
+        }
+    }
+    m
+}
+
+/// Consistent bilinear mass matrix of one hx × hy rectangle: ∫ N_a N_b dA.
+pub fn element_mass(hx: f64, hy: f64) -> [[f64; 4]; 4] {
+    let c = hx * hy / 36.0;
+    let pattern = [[4.0, 2.0, 1.0, 2.0], [2.0, 4.0, 2.0, 1.0], [1.0, 2.0, 4.0, 2.0], [2.0, 1.0, 2.0, 4.0]];
+    let mut m = [[0.0; 4]; 4];
+    for a in 0..4 {
+        for b in 0..4 {
+            m[a][b] = c * pattern[a][b];
+        }
+    }
+    m
+}
+
+/// Coupling B (n_eq × n_σ): B[w_i, j] = ∫ f_i f_j dA, consistent or lumped (row sums).
+pub fn coupling(mesh: &Mesh, dofs: &DofMap, lumped: bool) -> sprs::CsMat<f64> {
+    let n_sigma = mesh.n_nodes();
+    let mut tri = sprs::TriMat::new((dofs.n_eq(), n_sigma));
+    if lumped {
+        for (j, a) in nodal_areas(mesh).into_iter().enumerate() {
+            if let Some(r) = dofs.eq(j, Dof::W) {
+                tri.add_triplet(r, j, a);
+            }
+        }
+    } else {
+        let me = element_mass(mesh.hx, mesh.hy);
+        for e in 0..mesh.n_elements() {
+            let nodes = mesh.element_nodes(e);
+            for (a, &na) in nodes.iter().enumerate() {
+                let Some(r) = dofs.eq(na, Dof::W) else { continue };
+                for (b, &nb) in nodes.iter().enumerate() {
+                    tri.add_triplet(r, nb, me[a][b]);
+                }
+            }
+        }
+    }
+    tri.to_csc()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn nodal_areas_sum_to_model_area() {
+        let m = Mesh::new(2.0, 1.0, [6, 4], true, false);
+        let total: f64 = nodal_areas(&m).iter().sum();
+        assert!((total - 1.0).abs() < 1e-14, "half of a 2 × 1 plate has area 1, got {total}");
+    }
+
+    #[test]
+    fn consistent_and_lumped_coupling_have_equal_row_sums() {
+        let m = Mesh::new(2.0, 2.0, [4, 4], false, false);
+        let d = DofMap::new(&m);
+        let bc = coupling(&m, &d, false);
+        let bl = coupling(&m, &d, true);
+        let ones = vec![1.0; m.n_nodes()];
+        let rc = &bc * &sprs::CsVec::new(ones.len(), (0..ones.len()).collect(), ones.clone());
+        let rl = &bl * &sprs::CsVec::new(ones.len(), (0..ones.len()).collect(), ones);
+        for (i, v) in rc.iter() {
+            let l = rl.get(i).copied().unwrap_or(0.0);
+            assert!((v - l).abs() < 1e-14, "row {i}: consistent {v} vs lumped {l}");
+        }
+    }
+}

@@ -1,0 +1,37 @@
+//! # liftoff
+//!
+//! A free rectangular Mindlin plate on a Winkler or elastic half-space foundation that can push
+//! but never pull (Ascione, Olivito & Spadea 1983).
+//!
+//! Plate (virtual work, paper eq. 2.9a): B[(ψ, w), (φ, v)] = ⟨p − r, v⟩ for all (φ, v), with the
+//! Mindlin bilinear form of eq. 2.2. Foundation: w_s = T r (Winkler T = I/K; half-space
+//! T r = (1 − ν_s²)/(π E_s) ∫ r / |x − x'| dA'). Unilateral contact (2.9b, c):
+//!
+//! r ≥ 0,  g = T r − w ≥ 0,  ⟨r, g⟩ = 0.
+//!
+//! Discretised with MITC4 plate elements and bilinear pressures ([`operators`]), the problem is
+//! K u + B σ = f, g = T σ − Bᵀ u, Gσ ≥ 0, g ≥ 0, σ·g = 0. Eliminating the plate with a
+//! generalised inverse K⁻ and its rigid modes R turns it into the convex QP
+//!
+//! min ½ σᵀ(T + BᵀK⁻B)σ − σᵀBᵀK⁻f  subject to  Rᵀ(f − Bσ) = 0,  Gσ ≥ 0,
+//!
+//! whose KKT conditions are exactly the discrete unilateral conditions.
+//!
+//! Conventions: w positive downward, loads positive downward, pressure positive in compression,
+//! gap ≥ 0 where the plate is above the soil surface; the plate occupies
+//! [−L, L] × [−μL, μL].
+#![warn(missing_docs)]
+
+pub mod error;
+pub mod foundation;
+pub mod mesh;
+pub mod operators;
+pub mod plate;
+pub mod quadrature;
+pub mod scene;
+pub mod solve;
+
+pub use error::{Error, Result};
+pub use operators::Operators;
+pub use scene::Problem;
+pub use solve::{Solution, Status};

@@ -1,0 +1,205 @@
+//! Bonded (bilateral) contact: the gap vanishes, g = T σ − Bᵀ u = 0, and the foundation may
+//! pull. It is the first step of the paper's penalty iteration and the reference of its Fig. 7.
+//!
+//! Winkler (B, T diagonal): σ = T⁻¹ Bᵀ u and (K + B T⁻¹ Bᵀ) u = f, a sparse SPD system.
+//!
+//! Half-space: with K⁻ a generalised inverse of the free plate and R its rigid modes,
+//! u = K⁻(f − Bσ) + Rα, and the gap and the rigid-body equilibrium Rᵀ(f − Bσ) = 0 give
+//!
+//! [ S   −C ] [σ]   [ BᵀK⁻f ]
+//! [ −Cᵀ  0 ] [α] = [ −Rᵀf  ],   S = T + BᵀK⁻B,  C = BᵀR,
+//!
+//! solved by a dense Cholesky of S and the small system Cᵀ S⁻¹ C α = Rᵀf − Cᵀ S⁻¹ BᵀK⁻f.
+
+use std::time::Instant;
+
+use faer::linalg::solvers::Solve;
+use faer::Mat;
+
+use super::linalg::{dense_cholesky, schur_complement, sparse_solve, PlateInverse, SparseCholesky};
+use super::{discrete_gap, Solution, Status};
+use crate::error::{Error, Result};
+use crate::foundation::Compliance;
+use crate::operators::Operators;
+
+/// Position of each diagonal entry in the data array of a CSC matrix.
+pub fn diagonal_positions(m: &sprs::CsMat<f64>) -> Result<Vec<usize>> {
+    let indptr = m.indptr();
+    let ptr = indptr.raw_storage();
+    (0..m.cols())
+        .map(|j| {
+            (ptr[j]..ptr[j + 1])
+                .find(|&p| m.indices()[p] == j)
+                .ok_or_else(|| Error::numerical("assembly", format!("stiffness has no diagonal entry in column {j}")))
+        })
+        .collect()
+}
+
+/// The diagonal coupling of a Winkler model: for each pressure node, its w equation and ∫ f_j.
+pub fn lumped_coupling(ops: &Operators) -> Result<Vec<(usize, f64)>> {
+    ops.b
+        .outer_iterator()
+        .enumerate()
+        .map(|(j, col)| {
+            let mut it = col.iter();
+            match (it.next(), it.next()) {
+                (Some((i, &v)), None) => Ok((i, v)),
+                _ => Err(Error::numerical("coupling", format!("pressure node {j} is not lumped"))),
+            }
+        })
+        .collect()
+}
+
+/// Bonded solve.
+pub fn solve(ops: &Operators) -> Result<Solution> {
+    match &ops.t {
+        Compliance::Diagonal(t) => solve_springs(ops, t),
+        Compliance::Dense(_) => solve_schur(ops),
+    }
+}
+
+fn solve_springs(ops: &Operators, t: &[f64]) -> Result<Solution> {
+    let t0 = Instant::now();
+    let coupling = lumped_coupling(ops)?;
+    let mut k = ops.k.clone();
+    let diag = diagonal_positions(&k)?;
+    for (j, &(eq, b)) in coupling.iter().enumerate() {
+        k.data_mut()[diag[eq]] += b * b / t[j];
+    }
+    let chol = SparseCholesky::analyse(&k)?;
+    let t_an = t0.elapsed().as_secs_f64();
+    let llt = chol.factor(&k, "bonded Winkler system K + B T⁻¹ Bᵀ")?;
+    let t_fac = t0.elapsed().as_secs_f64() - t_an;
+    let mut u = ops.f.clone();
+    sparse_solve(&llt, &mut u);
+    let sigma: Vec<f64> = coupling.iter().zip(t).map(|(&(eq, b), &tj)| b * u[eq] / tj).collect();
+    let gap = discrete_gap(ops, &u, &sigma);
+    finite(&u, "bonded Winkler solve")?;
+    Ok(Solution {
+        method: "bonded",
+        u,
+        sigma,
+        gap,
+        rigid: Vec::new(),
+        status: Status::Converged,
+        iterations: 1,
+        history: Vec::new(),
+        timings: vec![
+            ("analyse".into(), t_an),
+            ("factor".into(), t_fac),
+            ("total".into(), t0.elapsed().as_secs_f64()),
+        ],
+    })
+}
+
+/// Quantities of the Schur formulation shared by the bonded half-space solve and the QP.
+pub struct SchurSystem {
+    /// Generalised inverse of K.
+    pub kinv: PlateInverse,
+    /// S = T + BᵀK⁻B.
+    pub s: Mat<f64>,
+    /// h = BᵀK⁻f.
+    pub h: Vec<f64>,
+    /// C = BᵀR (n_σ × n_r), column per rigid mode.
+    pub c: Vec<Vec<f64>>,
+    /// Rᵀf.
+    pub rf: Vec<f64>,
+    /// Seconds spent factoring K.
+    pub time_plate: f64,
+    /// Seconds spent forming S.
+    pub time_schur: f64,
+}
+
+impl SchurSystem {
+    /// Build S and the right-hand sides.
+    pub fn new(ops: &Operators) -> Result<Self> {
+        let t0 = Instant::now();
+        let kinv = PlateInverse::new(ops)?;
+        let time_plate = t0.elapsed().as_secs_f64();
+        let s = schur_complement(ops, &kinv);
+        let time_schur = t0.elapsed().as_secs_f64() - time_plate;
+        let h = ops.bt_times(&kinv.apply(&ops.f));
+        let c: Vec<Vec<f64>> = ops.rigid.iter().map(|r| ops.bt_times(r)).collect();
+        let rf = ops.rigid.iter().map(|r| dot(r, &ops.f)).collect();
+        Ok(Self { kinv, s, h, c, rf, time_plate, time_schur })
+    }
+
+    /// Displacements from pressures and rigid amplitudes: u = K⁻(f − Bσ) + Rα.
+    pub fn displacements(&self, ops: &Operators, sigma: &[f64], alpha: &[f64]) -> Vec<f64> {
+        let bs = ops.b_times(sigma);
+        let r: Vec<f64> = ops.f.iter().zip(&bs).map(|(f, b)| f - b).collect();
+        let mut u = self.kinv.apply(&r);
+        for (mode, &a) in ops.rigid.iter().zip(alpha) {
+            for (ui, ri) in u.iter_mut().zip(mode) {
+                *ui += a * ri;
+            }
+        }
+        u
+    }
+}
+
+/// Solve [S −C; −Cᵀ 0][σ; α] = [h; −Rᵀf] given a factor of S.
+pub fn saddle_solve(
+    llt: &faer::linalg::solvers::Llt<f64>,
+    h: &[f64],
+    c: &[Vec<f64>],
+    rf: &[f64],
+) -> Result<(Vec<f64>, Vec<f64>)> {
+    let n = h.len();
+    let m = c.len();
+    let mut z = Mat::<f64>::from_fn(n, 1, |i, _| h[i]);
+    llt.solve_in_place(z.as_mut());
+    let mut y = Mat::<f64>::from_fn(n, m, |i, j| c[j][i]);
+    llt.solve_in_place(y.as_mut());
+    // (Cᵀ Y) α = Rᵀf − Cᵀ z
+    let ctyy = Mat::<f64>::from_fn(m, m, |a, b| (0..n).map(|i| c[a][i] * y[(i, b)]).sum());
+    let mut rhs = Mat::<f64>::from_fn(m, 1, |a, _| rf[a] - (0..n).map(|i| c[a][i] * z[(i, 0)]).sum::<f64>());
+    let small = dense_cholesky(&ctyy, "rigid-body equilibrium (Cᵀ S⁻¹ C)")?;
+    small.solve_in_place(rhs.as_mut());
+    let alpha: Vec<f64> = (0..m).map(|a| rhs[(a, 0)]).collect();
+    let sigma = (0..n)
+        .map(|i| z[(i, 0)] + (0..m).map(|a| y[(i, a)] * alpha[a]).sum::<f64>())
+        .collect();
+    Ok((sigma, alpha))
+}
+
+fn solve_schur(ops: &Operators) -> Result<Solution> {
+    let t0 = Instant::now();
+    let sys = SchurSystem::new(ops)?;
+    let t1 = Instant::now();
+    let llt = dense_cholesky(&sys.s, "bonded half-space Schur complement")?;
+    let t_fac = t1.elapsed().as_secs_f64();
+    let (sigma, alpha) = saddle_solve(&llt, &sys.h, &sys.c, &sys.rf)?;
+    let u = sys.displacements(ops, &sigma, &alpha);
+    finite(&u, "bonded half-space solve")?;
+    let gap = discrete_gap(ops, &u, &sigma);
+    Ok(Solution {
+        method: "bonded",
+        u,
+        sigma,
+        gap,
+        rigid: alpha,
+        status: Status::Converged,
+        iterations: 1,
+        history: Vec::new(),
+        timings: vec![
+            ("plate factor".into(), sys.time_plate),
+            ("schur".into(), sys.time_schur),
+            ("factor".into(), t_fac),
+            ("total".into(), t0.elapsed().as_secs_f64()),
+        ],
+    })
+}
+
+/// Dot product.
+pub fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+/// Error if any entry is not finite.
+pub fn finite(v: &[f64], stage: &str) -> Result<()> {
+    match v.iter().position(|x| !x.is_finite()) {
+        Some(i) => Err(Error::numerical(stage, format!("non-finite value at unknown {i}: the system is singular or overflowed"))),
+        None => Ok(()),
+    }
+}

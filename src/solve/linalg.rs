@@ -1,0 +1,208 @@
+//! Thin wrappers over faer: sparse Cholesky with a reusable symbolic analysis, the generalised
+//! inverse of the free plate's stiffness, and dense Cholesky.
+
+use faer::linalg::solvers::Solve;
+use faer::sparse::linalg::solvers::{Llt as SparseLlt, SymbolicLlt};
+use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
+use faer::{Mat, MatMut, Side};
+
+use crate::error::{Error, Result};
+use crate::operators::Operators;
+
+/// A faer view of an sprs CSC matrix (sorted, no duplicates, as `TriMat::to_csc` makes them).
+pub fn faer_view(m: &sprs::CsMat<f64>) -> SparseColMatRef<'_, usize, f64> {
+    let sym = SymbolicSparseColMatRef::new_checked(
+        m.rows(),
+        m.cols(),
+        m.indptr().into_raw_storage(),
+        None,
+        m.indices(),
+    );
+    SparseColMatRef::new(sym, m.data())
+}
+
+/// Sparse LLᵀ whose symbolic analysis (ordering, elimination tree, supernodes) is done once and
+/// reused for every matrix of the same pattern.
+pub struct SparseCholesky {
+    symbolic: SymbolicLlt<usize>,
+}
+
+impl SparseCholesky {
+    /// Analyse the pattern of `m` (lower triangle read).
+    pub fn analyse(m: &sprs::CsMat<f64>) -> Result<Self> {
+        let symbolic = SymbolicLlt::try_new(faer_view(m).symbolic(), Side::Lower)
+            .map_err(|e| Error::numerical("sparse Cholesky analysis", format!("{e:?}")))?;
+        Ok(Self { symbolic })
+    }
+
+    /// Numeric factorisation of a matrix with the analysed pattern.
+    pub fn factor(&self, m: &sprs::CsMat<f64>, stage: &str) -> Result<SparseLlt<usize, f64>> {
+        SparseLlt::try_new_with_symbolic(self.symbolic.clone(), faer_view(m), Side::Lower).map_err(|e| {
+            Error::numerical(
+                stage,
+                format!(
+                    "the matrix is not positive definite ({e:?}); the plate may be unsupported (check the foundation stiffness and the loads)"
+                ),
+            )
+        })
+    }
+}
+
+/// Solve in place with a sparse factor, one right-hand side.
+pub fn sparse_solve(llt: &SparseLlt<usize, f64>, rhs: &mut [f64]) {
+    let n = rhs.len();
+    let mat = MatMut::from_column_major_slice_mut(rhs, n, 1);
+    llt.solve_in_place(mat);
+}
+
+/// Generalised inverse K⁻ of the free (singular) plate stiffness: the equations in
+/// `Operators::fixed` are set to zero and the rest of K, which is then positive definite, is
+/// factored. K K⁻ K = K, and K⁻ r solves K u = r whenever r is orthogonal to the rigid modes.
+pub struct PlateInverse {
+    llt: SparseLlt<usize, f64>,
+    /// Reduced index of each equation (None for fixed ones).
+    map: Vec<Option<usize>>,
+    n_red: usize,
+}
+
+impl PlateInverse {
+    /// Factor K with the fixed equations removed.
+    pub fn new(ops: &Operators) -> Result<Self> {
+        let n = ops.n_eq();
+        let mut map = vec![None; n];
+        let mut n_red = 0;
+        let mut fixed = vec![false; n];
+        for &e in &ops.fixed {
+            fixed[e] = true;
+        }
+        for (e, m) in map.iter_mut().enumerate() {
+            if !fixed[e] {
+                *m = Some(n_red);
+                n_red += 1;
+            }
+        }
+        let mut indptr = Vec::with_capacity(n_red + 1);
+        let mut indices = Vec::with_capacity(ops.k.nnz());
+        let mut data = Vec::with_capacity(ops.k.nnz());
+        indptr.push(0);
+        for (j, col) in ops.k.outer_iterator().enumerate() {
+            if map[j].is_none() {
+                continue;
+            }
+            for (i, &v) in col.iter() {
+                if let Some(r) = map[i] {
+                    indices.push(r);
+                    data.push(v);
+                }
+            }
+            indptr.push(indices.len());
+        }
+        let kr = sprs::CsMat::new((n_red, n_red), indptr, indices, data);
+        let chol = SparseCholesky::analyse(&kr)?;
+        let llt = chol.factor(&kr, "plate stiffness (generalised inverse)")?;
+        Ok(Self { llt, map, n_red })
+    }
+
+    /// K⁻ r for one vector.
+    pub fn apply(&self, r: &[f64]) -> Vec<f64> {
+        let mut red = vec![0.0; self.n_red];
+        for (e, m) in self.map.iter().enumerate() {
+            if let Some(i) = m {
+                red[*i] = r[e];
+            }
+        }
+        sparse_solve(&self.llt, &mut red);
+        let mut out = vec![0.0; r.len()];
+        for (e, m) in self.map.iter().enumerate() {
+            if let Some(i) = m {
+                out[e] = red[*i];
+            }
+        }
+        out
+    }
+
+    /// K⁻ R for the columns of a dense n_eq × m matrix, in place (rows of fixed equations are
+    /// zeroed).
+    pub fn apply_block(&self, block: &mut Mat<f64>) {
+        let m = block.ncols();
+        let mut red = Mat::<f64>::zeros(self.n_red, m);
+        for (e, map) in self.map.iter().enumerate() {
+            if let Some(i) = map {
+                for j in 0..m {
+                    red[(*i, j)] = block[(e, j)];
+                }
+            }
+        }
+        self.llt.solve_in_place(red.as_mut());
+        for (e, map) in self.map.iter().enumerate() {
+            for j in 0..m {
+                block[(e, j)] = match map {
+                    Some(i) => red[(*i, j)],
+                    None => 0.0,
+                };
+            }
+        }
+    }
+}
+
+/// Dense Cholesky with a stage name in the error.
+pub fn dense_cholesky(a: &Mat<f64>, stage: &str) -> Result<faer::linalg::solvers::Llt<f64>> {
+    a.llt(Side::Lower).map_err(|e| {
+        Error::numerical(
+            stage,
+            format!("matrix is not positive definite ({e:?}): the problem is too badly conditioned at this mesh and stiffness ratio"),
+        )
+    })
+}
+
+/// Schur complement S = T + Bᵀ K⁻ B (dense, n_σ × n_σ), computed in column blocks so K⁻B is
+/// never held whole.
+pub fn schur_complement(ops: &Operators, kinv: &PlateInverse) -> Mat<f64> {
+    let n_sigma = ops.n_sigma();
+    let n_eq = ops.n_eq();
+    let mut s = match &ops.t {
+        crate::foundation::Compliance::Dense(t) => t.clone(),
+        crate::foundation::Compliance::Diagonal(d) => {
+            let mut m = Mat::<f64>::zeros(n_sigma, n_sigma);
+            for (i, &v) in d.iter().enumerate() {
+                m[(i, i)] = v;
+            }
+            m
+        }
+    };
+    let block = 256;
+    let mut start = 0;
+    while start < n_sigma {
+        let width = block.min(n_sigma - start);
+        let mut x = Mat::<f64>::zeros(n_eq, width);
+        for jj in 0..width {
+            let col = ops.b.outer_view(start + jj);
+            if let Some(col) = col {
+                for (i, &v) in col.iter() {
+                    x[(i, jj)] = v;
+                }
+            }
+        }
+        kinv.apply_block(&mut x);
+        // S[:, start..] += Bᵀ X
+        for (i, col) in ops.b.outer_iterator().enumerate() {
+            for jj in 0..width {
+                let mut acc = 0.0;
+                for (r, &v) in col.iter() {
+                    acc += v * x[(r, jj)];
+                }
+                s[(i, start + jj)] += acc;
+            }
+        }
+        start += width;
+    }
+    // Symmetrise the round-off of the block products.
+    for j in 0..n_sigma {
+        for i in (j + 1)..n_sigma {
+            let v = 0.5 * (s[(i, j)] + s[(j, i)]);
+            s[(i, j)] = v;
+            s[(j, i)] = v;
+        }
+    }
+    s
+}

@@ -1,0 +1,111 @@
+//! Solution methods and what they return.
+//!
+//! Every method takes the same [`Operators`] and returns a [`Solution`]. A method that ran but
+//! did not reach an answer returns a `Solution` whose [`Status`] says so; only failures that
+//! leave nothing to report (a factorisation breaking down, a problem too large) are errors.
+
+pub mod bonded;
+pub mod linalg;
+
+use crate::error::Result;
+use crate::operators::Operators;
+use crate::scene::{Contact, MethodKind, SolverSettings};
+
+/// Outcome of a solve that ran.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+#[serde(tag = "kind", rename_all = "kebab-case")]
+pub enum Status {
+    /// The discrete conditions hold to the method's tolerance.
+    Converged,
+    /// The penalised set repeated an earlier set without settling (period in iterations).
+    Cycling {
+        /// Length of the cycle.
+        period: usize,
+    },
+    /// The iteration cap was reached while the set was still changing.
+    IterationLimit {
+        /// The cap.
+        limit: usize,
+    },
+    /// The external solver stopped without a solution.
+    SolverFailure {
+        /// The solver's own status.
+        detail: String,
+    },
+}
+
+impl Status {
+    /// True for [`Status::Converged`].
+    pub fn converged(&self) -> bool {
+        matches!(self, Status::Converged)
+    }
+
+    /// One-line description.
+    pub fn describe(&self) -> String {
+        match self {
+            Status::Converged => "converged".into(),
+            Status::Cycling { period } => format!(
+                "not converged: the penalised set cycles with period {period} (contact set oscillates)"
+            ),
+            Status::IterationLimit { limit } => {
+                format!("not converged: the penalised set was still changing after {limit} iterations")
+            }
+            Status::SolverFailure { detail } => format!("not converged: {detail}"),
+        }
+    }
+}
+
+/// One step of an iterative method.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Iteration {
+    /// Step number, from 1.
+    pub step: usize,
+    /// Constraint points in the penalised (lifted) set after this step.
+    pub penalised: usize,
+    /// Points that entered the set in this step.
+    pub entered: usize,
+    /// Points that left the set in this step.
+    pub left: usize,
+    /// Most negative pressure at a constraint point.
+    pub min_pressure: f64,
+}
+
+/// What every method returns.
+#[derive(Debug, Clone)]
+pub struct Solution {
+    /// "bonded", "penalty" or "qp".
+    pub method: &'static str,
+    /// Plate dofs (unit system).
+    pub u: Vec<f64>,
+    /// Nodal pressures (unit system; the paper's σ is μ times these).
+    pub sigma: Vec<f64>,
+    /// Discrete gap T σ − Bᵀ u (weighted by the pressure shape functions).
+    pub gap: Vec<f64>,
+    /// Rigid-body amplitudes α (QP and half-space bonded; empty otherwise).
+    pub rigid: Vec<f64>,
+    /// Outcome.
+    pub status: Status,
+    /// Linear solves or solver iterations.
+    pub iterations: usize,
+    /// Per-step history of iterative methods.
+    pub history: Vec<Iteration>,
+    /// Named timings of the method's phases, seconds.
+    pub timings: Vec<(String, f64)>,
+}
+
+/// Solve with the contact law and method of the settings.
+pub fn solve(ops: &Operators, settings: &SolverSettings) -> Result<Solution> {
+    match (settings.contact, settings.method) {
+        (Contact::Bonded, _) => bonded::solve(ops),
+        (Contact::Unbonded, MethodKind::Penalty | MethodKind::Qp) => Err(crate::error::Error::Unsupported(
+            "unbonded contact is not available yet in this version: run with --contact bonded (or contact = \"bonded\" in [solver])".into(),
+        )),
+    }
+}
+
+/// Nodal gap and residual bookkeeping shared by the methods: g = T σ − Bᵀ u.
+pub fn discrete_gap(ops: &Operators, u: &[f64], sigma: &[f64]) -> Vec<f64> {
+    let ts = ops.t.apply(sigma);
+    let btu = ops.bt_times(u);
+    ts.iter().zip(&btu).map(|(a, b)| a - b).collect()
+}
