@@ -35,3 +35,5 @@ pub use error::{Error, Result};
 pub use operators::Operators;
 pub use scene::Problem;
 pub use solve::{Solution, Status};
+pub mod output;
+pub mod post;

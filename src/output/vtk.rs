@@ -1,0 +1,1 @@
+//! ParaView output (being written).

@@ -1,0 +1,409 @@
+//! Post-processing: whole-plate fields (mirrored from a reduced model), stress resultants,
+//! profiles along the paper's lines, contact measures, resultants and residuals.
+//!
+//! Physical quantities are in SI units for a scene given in SI units, and in units of
+//! L = P = D = 1 for a dimensionless scene. Dimensionless ones follow the paper (eq. 4.1):
+//! V = D w / (P L²), σ = μ L² r / P.
+
+use serde::Serialize;
+
+use crate::foundation::nodal_areas;
+use crate::mesh::{Dof, Mesh};
+use crate::operators::Operators;
+use crate::plate::{centre_resultants, ElementVector};
+use crate::scene::{Physical, Problem};
+use crate::solve::Solution;
+
+/// A pressure counts as contact above this fraction of the peak pressure (QP interior points
+/// leave ~1e-9 on lifted nodes; penalty leaves small negative values there).
+pub const CONTACT_THRESHOLD: f64 = 1e-6;
+
+/// Nodal fields over the whole plate on the (nx + 1) × (ny + 1) grid, node index i + j (nx + 1).
+#[derive(Debug, Clone)]
+pub struct FullField {
+    /// Elements along x over the whole plate.
+    pub nx: usize,
+    /// Elements along y over the whole plate.
+    pub ny: usize,
+    /// x, physical.
+    pub x: Vec<f64>,
+    /// y, physical.
+    pub y: Vec<f64>,
+    /// s = x / L.
+    pub s: Vec<f64>,
+    /// t = y / (μL).
+    pub t: Vec<f64>,
+    /// Deflection w, physical, downward.
+    pub w: Vec<f64>,
+    /// ψx, physical (rad).
+    pub psi_x: Vec<f64>,
+    /// ψy, physical (rad).
+    pub psi_y: Vec<f64>,
+    /// Contact pressure r, physical, compression positive.
+    pub pressure: Vec<f64>,
+    /// Gap (foundation settlement − w), physical length; ≥ 0 where the plate lifted.
+    pub gap: Vec<f64>,
+    /// V = D w / (P L²).
+    pub v: Vec<f64>,
+    /// σ = μ L² r / P.
+    pub sigma: Vec<f64>,
+    /// Pressure above [`CONTACT_THRESHOLD`] of the peak.
+    pub contact: Vec<bool>,
+}
+
+impl FullField {
+    /// Nodes along x.
+    pub fn nodes_x(&self) -> usize {
+        self.nx + 1
+    }
+
+    /// Bilinear interpolation of a nodal field at (s, t) ∈ [−1, 1]².
+    pub fn interpolate(&self, field: &[f64], s: f64, t: f64) -> f64 {
+        let fx = ((s + 1.0) * 0.5 * self.nx as f64).clamp(0.0, self.nx as f64);
+        let fy = ((t + 1.0) * 0.5 * self.ny as f64).clamp(0.0, self.ny as f64);
+        let i = (fx.floor() as usize).min(self.nx - 1);
+        let j = (fy.floor() as usize).min(self.ny - 1);
+        let (a, b) = (fx - i as f64, fy - j as f64);
+        let n = self.nodes_x();
+        let v00 = field[i + j * n];
+        let v10 = field[i + 1 + j * n];
+        let v01 = field[i + (j + 1) * n];
+        let v11 = field[i + 1 + (j + 1) * n];
+        (1.0 - a) * (1.0 - b) * v00 + a * (1.0 - b) * v10 + (1.0 - a) * b * v01 + a * b * v11
+    }
+}
+
+/// Stress resultants per unit length at element centres over the whole plate, physical units,
+/// element index ie + je nx. Moments are positive when the soil-side face is in tension.
+#[derive(Debug, Clone, Default)]
+pub struct ElementField {
+    /// Centre x.
+    pub x: Vec<f64>,
+    /// Centre y.
+    pub y: Vec<f64>,
+    /// Bending moment about the y axis, per unit length.
+    pub mx: Vec<f64>,
+    /// Bending moment about the x axis, per unit length.
+    pub my: Vec<f64>,
+    /// Twisting moment, per unit length.
+    pub mxy: Vec<f64>,
+    /// Transverse shear force on x faces, per unit length.
+    pub qx: Vec<f64>,
+    /// Transverse shear force on y faces, per unit length.
+    pub qy: Vec<f64>,
+}
+
+/// One point of a profile.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct ProfilePoint {
+    /// Position along the line: s, t, or the signed fraction of the half-diagonal.
+    pub coord: f64,
+    /// s.
+    pub s: f64,
+    /// t.
+    pub t: f64,
+    /// V.
+    pub v: f64,
+    /// σ.
+    pub sigma: f64,
+}
+
+/// Values along one of the paper's lines.
+#[derive(Debug, Clone, Serialize)]
+pub struct Profile {
+    /// x-axis (t = 0), y-axis (s = 0), edge-x (t = 1), edge-y (s = 1) or diagonal.
+    pub line: &'static str,
+    /// Points in order of `coord`.
+    pub points: Vec<ProfilePoint>,
+}
+
+/// Contact extents from the centre along +s, +t and the diagonal.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct Extent {
+    /// Along +s, fraction of L.
+    pub x: f64,
+    /// Along +t, fraction of μL.
+    pub y: f64,
+    /// Along the diagonal to (+L, +μL), fraction of the half-diagonal.
+    pub diagonal: f64,
+}
+
+/// Load resultant and reaction.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct Resultant {
+    /// Load resultant (physical force).
+    pub load: f64,
+    /// ∫ r dA over the plate (physical force).
+    pub reaction: f64,
+    /// |reaction − load| / |load|.
+    pub relative_error: f64,
+}
+
+/// Discrete unilateral conditions, dimensionless.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct Complementarity {
+    /// Minimum σ at the constraint points (≥ 0 up to round-off when unbonded).
+    pub min_pressure: f64,
+    /// Minimum nodal gap in units of V (≥ 0 when unbonded; 0 when bonded).
+    pub min_gap: f64,
+    /// Max |σ_i g_i| over nodes, σ·V units.
+    pub max_product: f64,
+}
+
+/// Everything the outputs need.
+#[derive(Debug, Clone)]
+pub struct Report {
+    /// Nodal fields.
+    pub field: FullField,
+    /// Element resultants.
+    pub elements: ElementField,
+    /// Profiles.
+    pub profiles: Vec<Profile>,
+    /// Largest deflection (physical).
+    pub w_max: f64,
+    /// Largest V.
+    pub v_max: f64,
+    /// V at the centre.
+    pub v_center: f64,
+    /// V at the corner (+L, +μL).
+    pub v_corner: f64,
+    /// Contact area / plate area.
+    pub contact_fraction: f64,
+    /// √(contact area / π) / L.
+    pub contact_radius: f64,
+    /// Contact extents.
+    pub contact_extent: Extent,
+    /// Equilibrium.
+    pub resultant: Resultant,
+    /// Unilateral residuals.
+    pub complementarity: Complementarity,
+}
+
+fn scales(problem: &Problem) -> Physical {
+    problem.physical.unwrap_or(Physical {
+        half_length: 1.0,
+        force: 1.0,
+        rigidity: 1.0,
+    })
+}
+
+/// Build the report of a solution.
+pub fn report(problem: &Problem, ops: &Operators, sol: &Solution) -> Report {
+    let mesh = &ops.mesh;
+    let mu = problem.groups.mu;
+    let ph = scales(problem);
+    let [nx, ny] = mesh.full_elements();
+    let nnx = nx + 1;
+    let n_full = nnx * (ny + 1);
+    let areas = nodal_areas(mesh);
+    let peak = sol.sigma.iter().cloned().fold(0.0_f64, f64::max);
+    let threshold = CONTACT_THRESHOLD * peak;
+
+    // Model node and rotation signs of every whole-plate node.
+    let mut field = FullField {
+        nx,
+        ny,
+        x: Vec::with_capacity(n_full),
+        y: Vec::with_capacity(n_full),
+        s: Vec::with_capacity(n_full),
+        t: Vec::with_capacity(n_full),
+        w: Vec::with_capacity(n_full),
+        psi_x: Vec::with_capacity(n_full),
+        psi_y: Vec::with_capacity(n_full),
+        pressure: Vec::with_capacity(n_full),
+        gap: Vec::with_capacity(n_full),
+        v: Vec::with_capacity(n_full),
+        sigma: Vec::with_capacity(n_full),
+        contact: Vec::with_capacity(n_full),
+    };
+    // Unit-system nodal dofs over the whole plate (for element resultants).
+    let mut full_u = vec![[0.0; 3]; n_full];
+    for jj in 0..=ny {
+        for ii in 0..=nx {
+            let (i, sx) = model_index(ii, mesh.nx, mesh.sym_x);
+            let (j, sy) = model_index(jj, mesh.ny, mesh.sym_y);
+            let n = mesh.node(i, j);
+            let get = |d: Dof| ops.dofs.eq(n, d).map_or(0.0, |e| sol.u[e]);
+            let w = get(Dof::W);
+            let px = sx * get(Dof::PsiX);
+            let py = sy * get(Dof::PsiY);
+            full_u[ii + jj * nnx] = [w, px, py];
+            let xu = -1.0 + ii as f64 * 2.0 / nx as f64;
+            let yu = mu * (-1.0 + jj as f64 * 2.0 / ny as f64);
+            let r = sol.sigma[n];
+            let g = sol.gap[n] / areas[n];
+            field.x.push(xu * ph.half_length);
+            field.y.push(yu * ph.half_length);
+            field.s.push(xu);
+            field.t.push(yu / mu);
+            field.w.push(w * ph.deflection());
+            field.psi_x.push(px * ph.rotation());
+            field.psi_y.push(py * ph.rotation());
+            field.pressure.push(r * ph.pressure());
+            field.gap.push(g * ph.deflection());
+            field.v.push(w);
+            field.sigma.push(mu * r);
+            field.contact.push(r > threshold);
+        }
+    }
+
+    // Element resultants on the whole plate.
+    let full_mesh = Mesh::new(2.0, 2.0 * mu, [nx, ny], false, false);
+    let mut elements = ElementField::default();
+    for e in 0..full_mesh.n_elements() {
+        let nodes = full_mesh.element_nodes(e);
+        let mut ue = ElementVector::zeros();
+        for (a, &n) in nodes.iter().enumerate() {
+            for d in 0..3 {
+                ue[3 * a + d] = full_u[n][d];
+            }
+        }
+        let r = centre_resultants(&ops.section, full_mesh.hx, full_mesh.hy, &ue);
+        let (xc, yc) = full_mesh.element_centre(e);
+        elements.x.push(xc * ph.half_length);
+        elements.y.push(yc * ph.half_length);
+        elements.mx.push(r[0] * ph.moment());
+        elements.my.push(r[1] * ph.moment());
+        elements.mxy.push(r[2] * ph.moment());
+        elements.qx.push(r[3] * ph.shear());
+        elements.qy.push(r[4] * ph.shear());
+    }
+
+    let profiles = profiles(&field);
+    let v_max = field.v.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+    let w_max = field.w.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+    let v_center = field.interpolate(&field.v, 0.0, 0.0);
+    let v_corner = field.v[n_full - 1];
+
+    // Contact area: sample the bilinear σ on 8 × 8 points per element of the model.
+    let sub = 8;
+    let mut in_contact = 0.0;
+    for e in 0..mesh.n_elements() {
+        let nodes = mesh.element_nodes(e);
+        for p in 0..sub {
+            for q in 0..sub {
+                let xi = -1.0 + (2.0 * p as f64 + 1.0) / sub as f64;
+                let eta = -1.0 + (2.0 * q as f64 + 1.0) / sub as f64;
+                let sh = crate::plate::shape(xi, eta);
+                let s: f64 = (0..4).map(|a| sh[a] * sol.sigma[nodes[a]]).sum();
+                if s > threshold {
+                    in_contact += 1.0;
+                }
+            }
+        }
+    }
+    let model_cells = (mesh.n_elements() * sub * sub) as f64;
+    let contact_fraction = in_contact / model_cells;
+    let plate_area_unit = 4.0 * mu;
+    let contact_radius = (contact_fraction * plate_area_unit / std::f64::consts::PI).sqrt();
+    let contact_extent = Extent {
+        x: ray_extent(&field, threshold * mu, 1.0, 0.0),
+        y: ray_extent(&field, threshold * mu, 0.0, 1.0),
+        diagonal: ray_extent(&field, threshold * mu, 1.0, 1.0),
+    };
+
+    // Equilibrium: reaction of the model times the number of copies.
+    let copies = mesh.copies() as f64;
+    let reaction_unit: f64 = copies * sol.sigma.iter().zip(&areas).map(|(s, a)| s * a).sum::<f64>();
+    let load_unit = copies * ops.total_load();
+    let resultant = Resultant {
+        load: load_unit * ph.force,
+        reaction: reaction_unit * ph.force,
+        relative_error: (reaction_unit - load_unit).abs() / load_unit.abs(),
+    };
+
+    let gs = ops.g_times(&sol.sigma);
+    let min_pressure = mu * gs.iter().cloned().fold(f64::INFINITY, f64::min);
+    let gaps: Vec<f64> = sol.gap.iter().zip(&areas).map(|(g, a)| g / a).collect();
+    let min_gap = gaps.iter().cloned().fold(f64::INFINITY, f64::min);
+    let max_product = sol
+        .sigma
+        .iter()
+        .zip(&gaps)
+        .map(|(s, g)| (mu * s * g).abs())
+        .fold(0.0, f64::max);
+
+    Report {
+        field,
+        elements,
+        profiles,
+        w_max,
+        v_max,
+        v_center,
+        v_corner,
+        contact_fraction,
+        contact_radius,
+        contact_extent,
+        resultant,
+        complementarity: Complementarity {
+            min_pressure,
+            min_gap,
+            max_product,
+        },
+    }
+}
+
+/// Model index of a whole-plate grid index and the sign a rotation normal to the symmetry
+/// line takes there (−1 on the mirrored side).
+fn model_index(full: usize, model_n: usize, sym: bool) -> (usize, f64) {
+    if !sym {
+        return (full, 1.0);
+    }
+    if full >= model_n {
+        (full - model_n, 1.0)
+    } else {
+        (model_n - full, -1.0)
+    }
+}
+
+/// Distance from the centre along (ds, dt) to where σ first falls to `threshold`, as a fraction
+/// of the ray's length to the plate boundary; 0 if the centre is not in contact.
+fn ray_extent(field: &FullField, threshold: f64, ds: f64, dt: f64) -> f64 {
+    let n = 4 * field.nx.max(field.ny) + 1;
+    let value = |k: usize| {
+        let f = k as f64 / (n - 1) as f64;
+        field.interpolate(&field.sigma, f * ds, f * dt) - threshold
+    };
+    let mut prev = value(0);
+    if prev <= 0.0 {
+        return 0.0;
+    }
+    for k in 1..n {
+        let cur = value(k);
+        if cur <= 0.0 {
+            let f0 = (k - 1) as f64 / (n - 1) as f64;
+            let f1 = k as f64 / (n - 1) as f64;
+            return f0 + (f1 - f0) * prev / (prev - cur);
+        }
+        prev = cur;
+    }
+    1.0
+}
+
+/// V and σ along the paper's lines.
+pub fn profiles(field: &FullField) -> Vec<Profile> {
+    let n = 2 * field.nx.max(field.ny) + 1;
+    let line = |name: &'static str, f: &dyn Fn(f64) -> (f64, f64)| Profile {
+        line: name,
+        points: (0..n)
+            .map(|k| {
+                let c = -1.0 + 2.0 * k as f64 / (n - 1) as f64;
+                let (s, t) = f(c);
+                ProfilePoint {
+                    coord: c,
+                    s,
+                    t,
+                    v: field.interpolate(&field.v, s, t),
+                    sigma: field.interpolate(&field.sigma, s, t),
+                }
+            })
+            .collect(),
+    };
+    vec![
+        line("x-axis", &|c| (c, 0.0)),
+        line("y-axis", &|c| (0.0, c)),
+        line("edge-x", &|c| (c, 1.0)),
+        line("edge-y", &|c| (1.0, c)),
+        line("diagonal", &|c| (c, c)),
+    ]
+}
