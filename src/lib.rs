@@ -22,7 +22,9 @@
 //! [−L, L] × [−μL, μL].
 #![warn(missing_docs)]
 
+pub mod analysis;
 pub mod error;
+pub mod examples;
 pub mod foundation;
 pub mod mesh;
 pub mod operators;
@@ -31,6 +33,7 @@ pub mod quadrature;
 pub mod scene;
 pub mod solve;
 
+pub use analysis::{analyse, Analysis};
 pub use error::{Error, Result};
 pub use operators::Operators;
 pub use scene::Problem;

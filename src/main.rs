@@ -1,1 +1,305 @@
-fn main() {}
+//! `liftoff` command line: parse arguments, call the library, print.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand, ValueEnum};
+use liftoff::output;
+use liftoff::scene::{Contact, ConstraintPoints, MethodKind, SceneFile, SymmetryMode};
+use liftoff::{Error, Problem};
+
+/// Exit codes, one per kind of failure (docs/ERRORS.md).
+mod exit {
+    pub const BAD_INPUT: u8 = 2;
+    pub const INFEASIBLE: u8 = 3;
+    pub const SOLVER: u8 = 4;
+    pub const IO: u8 = 5;
+}
+
+#[derive(Parser)]
+#[command(name = "liftoff", version, about = "Rectangular plates on tensionless foundations: where they lift off, how they deflect, what the soil takes")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Solve a scene file and report deflections, pressures and the contact region.
+    Solve(SolveArgs),
+    /// Print a bundled example scene (without NAME: list them).
+    Example {
+        /// Name of the example.
+        name: Option<String>,
+    },
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum CliContact {
+    Bonded,
+    Unbonded,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum CliMethod {
+    Penalty,
+    Qp,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum CliConstraint {
+    Nodal,
+    Gauss,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum CliSymmetry {
+    Auto,
+    None,
+}
+
+#[derive(clap::Args)]
+struct SolveArgs {
+    /// Scene file (TOML), or `example:NAME` for a bundled scene.
+    scene: String,
+    /// Contact law (overrides [solver] contact).
+    #[arg(long, value_enum)]
+    contact: Option<CliContact>,
+    /// Method for unbonded contact (overrides [solver] method).
+    #[arg(long, value_enum)]
+    method: Option<CliMethod>,
+    /// Dimensionless penalty ε̄ (overrides [solver] penalty).
+    #[arg(long)]
+    penalty: Option<f64>,
+    /// Constraint points (overrides [solver] constraint).
+    #[arg(long, value_enum)]
+    constraint: Option<CliConstraint>,
+    /// Elements over the whole plate, NX,NY (overrides [mesh] elements).
+    #[arg(long, value_parser = parse_mesh)]
+    mesh: Option<[i64; 2]>,
+    /// Symmetry reduction (overrides [mesh] symmetry).
+    #[arg(long, value_enum)]
+    symmetry: Option<CliSymmetry>,
+    /// Directory for summary.json, CSV tables, plate.vtu and charts.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Print summary.json to stdout instead of the table.
+    #[arg(long)]
+    json: bool,
+}
+
+fn parse_mesh(s: &str) -> Result<[i64; 2], String> {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    if parts.len() != 2 {
+        return Err(format!("expected NX,NY (two element counts), got `{s}`"));
+    }
+    let n = |p: &str| p.parse::<i64>().map_err(|_| format!("`{p}` is not a whole number of elements"));
+    Ok([n(parts[0])?, n(parts[1])?])
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Solve(args) => solve(args),
+        Command::Example { name } => example(name.as_deref()),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(Failure { message, code }) => {
+            eprintln!("error: {message}");
+            ExitCode::from(code)
+        }
+    }
+}
+
+struct Failure {
+    message: String,
+    code: u8,
+}
+
+impl From<Error> for Failure {
+    fn from(e: Error) -> Self {
+        let code = match &e {
+            Error::Parse(_) | Error::Invalid { .. } | Error::TooLarge { .. } | Error::Unsupported(_) => exit::BAD_INPUT,
+            Error::Infeasible(_) => exit::INFEASIBLE,
+            Error::Numerical { .. } => exit::SOLVER,
+            Error::Io { .. } => exit::IO,
+        };
+        Failure { message: e.to_string(), code }
+    }
+}
+
+fn example(name: Option<&str>) -> Result<(), Failure> {
+    match name {
+        None => {
+            println!("Bundled scenes (print one with `liftoff example NAME`, solve it with `liftoff solve example:NAME`):");
+            for (n, d, _) in liftoff::examples::SCENES {
+                println!("  {n:<16} {d}");
+            }
+            Ok(())
+        }
+        Some(n) => match liftoff::examples::scene(n) {
+            Some(text) => {
+                print!("{text}");
+                Ok(())
+            }
+            None => Err(Failure {
+                message: format!("no bundled example `{n}`; run `liftoff example` for the list"),
+                code: exit::BAD_INPUT,
+            }),
+        },
+    }
+}
+
+fn read_scene(spec: &str) -> Result<(String, SceneFile), Failure> {
+    let text = if let Some(name) = spec.strip_prefix("example:") {
+        liftoff::examples::scene(name)
+            .ok_or_else(|| Failure {
+                message: format!("no bundled example `{name}`; run `liftoff example` for the list"),
+                code: exit::BAD_INPUT,
+            })?
+            .to_string()
+    } else {
+        std::fs::read_to_string(spec).map_err(|e| Failure {
+            message: format!("cannot read scene file {spec}: {e}"),
+            code: exit::IO,
+        })?
+    };
+    let file = SceneFile::parse(&text).map_err(|e| Failure {
+        message: format!("{spec}: {e}"),
+        code: exit::BAD_INPUT,
+    })?;
+    Ok((text, file))
+}
+
+fn solve(args: SolveArgs) -> Result<(), Failure> {
+    let (_, mut file) = read_scene(&args.scene)?;
+    if let Some(c) = args.contact {
+        file.solver.contact = match c {
+            CliContact::Bonded => Contact::Bonded,
+            CliContact::Unbonded => Contact::Unbonded,
+        };
+    }
+    if let Some(m) = args.method {
+        file.solver.method = match m {
+            CliMethod::Penalty => MethodKind::Penalty,
+            CliMethod::Qp => MethodKind::Qp,
+        };
+    }
+    if let Some(p) = args.penalty {
+        file.solver.penalty = p;
+    }
+    if let Some(c) = args.constraint {
+        file.solver.constraint = match c {
+            CliConstraint::Nodal => ConstraintPoints::Nodal,
+            CliConstraint::Gauss => ConstraintPoints::Gauss,
+        };
+    }
+    if let Some(m) = args.mesh {
+        file.mesh.elements = m;
+    }
+    if let Some(s) = args.symmetry {
+        file.mesh.symmetry = match s {
+            CliSymmetry::Auto => SymmetryMode::Auto,
+            CliSymmetry::None => SymmetryMode::None,
+        };
+    }
+    let problem = file.validate().map_err(|e| with_scene(&args.scene, e))?;
+    if let Some(dir) = &args.out {
+        output::prepare_dir(dir)?;
+    }
+    let analysis = liftoff::analyse(&problem)?;
+    let summary = &analysis.summary;
+    let mut written = Vec::new();
+    if let Some(dir) = &args.out {
+        written = output::write_all(dir, &analysis.report, summary)?;
+    }
+    if args.json {
+        println!("{}", summary.to_json()?);
+    } else {
+        print_table(&problem, summary);
+        if let Some(dir) = &args.out {
+            println!("  files      : {} in {}", written.len(), dir.display());
+        }
+        println!();
+        println!("{SIGN_CONVENTION}");
+    }
+    if !summary.converged {
+        return Err(Failure {
+            message: format!(
+                "the {} method did not converge ({}); the numbers above are not a solution",
+                summary.method, summary.status
+            ),
+            code: exit::SOLVER,
+        });
+    }
+    Ok(())
+}
+
+fn with_scene(path: &str, e: Error) -> Failure {
+    let mut f = Failure::from(e);
+    f.message = format!("{path}: {}", f.message);
+    f
+}
+
+const SIGN_CONVENTION: &str = "Sign convention: deflection w and loads are positive downward (into the soil), pressure is positive in compression, and a positive gap means the plate has lifted off the soil.";
+
+fn print_table(problem: &Problem, s: &output::Summary) {
+    let g = &s.dimensionless;
+    println!("liftoff — {}", s.title);
+    println!(
+        "  foundation : {} (Γ = {:.4e}, Δ = {:.4e}, μ = {}, ν = {})",
+        s.foundation, g.gamma, g.delta, g.mu, g.nu
+    );
+    println!(
+        "  model      : {} model, {} × {} of {} × {} elements, {} nodes, {} dofs",
+        s.symmetry, s.model_elements[0], s.model_elements[1], s.elements[0], s.elements[1], s.nodes, s.dofs
+    );
+    for n in &s.notes {
+        println!("  note       : {n}");
+    }
+    let method = if s.contact == "bonded" { "bonded, direct solve".to_string() } else { format!("unbonded, {} ({} constraints)", s.method, s.constraint) };
+    println!("  contact    : {method}");
+    println!("  status     : {} after {} step(s)", s.status, s.iterations);
+    println!(
+        "  time       : assemble {:.3} s, solve {:.3} s, total {:.3} s",
+        s.time_s.assemble, s.time_s.solve, s.time_s.total
+    );
+    match problem.physical {
+        Some(_) => {
+            println!("  w_max      : {:.3} mm", s.w_max * 1e3);
+            let r = &s.resultant;
+            println!(
+                "  resultant  : load {:.2} kN, reaction {:.2} kN (relative error {:.1e})",
+                r.load / 1e3,
+                r.reaction / 1e3,
+                r.relative_error
+            );
+        }
+        None => {
+            let r = &s.resultant;
+            println!(
+                "  resultant  : load {:.6} P, reaction {:.6} P (relative error {:.1e})",
+                r.load, r.reaction, r.relative_error
+            );
+        }
+    }
+    println!(
+        "  V          : max {:.5e}, centre {:.5e}, corner {:.5e}  (V = D w / (P L²))",
+        s.V_max, s.V_center, s.V_corner
+    );
+    println!(
+        "  contact    : {:.1} % of the plate, radius {:.3} L, extent x {:.3}, y {:.3}, diagonal {:.3}",
+        100.0 * s.contact_fraction,
+        s.contact_radius,
+        s.contact_extent.x,
+        s.contact_extent.y,
+        s.contact_extent.diagonal
+    );
+    let c = &s.complementarity;
+    println!(
+        "  residuals  : min σ {:.2e}, min gap {:.2e}, max |σ·gap| {:.2e}",
+        c.min_pressure, c.min_gap, c.max_product
+    );
+}
+

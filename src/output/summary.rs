@@ -1,0 +1,155 @@
+//! The JSON summary of a solve (`summary.json`, `liftoff solve --json`). Every key is
+//! documented in the README.
+
+use serde::Serialize;
+
+use crate::error::{Error, Result};
+use crate::post::{Complementarity, Extent, Report, Resultant};
+use crate::scene::{Physical, Problem};
+use crate::solve::{Iteration, Solution};
+use crate::Operators;
+
+/// Dimensionless groups and penalty.
+#[derive(Debug, Clone, Serialize)]
+pub struct DimensionlessGroups {
+    /// Γ_w or Γ_h.
+    pub gamma: f64,
+    /// Δ.
+    pub delta: f64,
+    /// μ.
+    pub mu: f64,
+    /// ν_p.
+    pub nu: f64,
+    /// ε̄ (used by the penalty method).
+    pub penalty: f64,
+}
+
+/// Wall-clock times, seconds.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct Times {
+    /// Assembling the operators.
+    pub assemble: f64,
+    /// The method.
+    pub solve: f64,
+    /// Everything including post-processing.
+    pub total: f64,
+}
+
+/// The summary of a solve.
+#[derive(Debug, Clone, Serialize)]
+#[allow(non_snake_case)]
+pub struct Summary {
+    /// Scene title.
+    pub title: String,
+    /// "penalty", "qp" or "direct" (bonded).
+    pub method: String,
+    /// "bonded" or "unbonded".
+    pub contact: String,
+    /// "full", "half-x", "half-y" or "quarter".
+    pub symmetry: String,
+    /// "winkler" or "half-space".
+    pub foundation: String,
+    /// Constraint points ("nodal" or "gauss").
+    pub constraint: String,
+    /// Elements [nx, ny] over the whole plate.
+    pub elements: [usize; 2],
+    /// Elements [nx, ny] of the solved model.
+    pub model_elements: [usize; 2],
+    /// Nodes of the solved model.
+    pub nodes: usize,
+    /// Equations (free dofs) of the solved model.
+    pub dofs: usize,
+    /// Dimensionless groups.
+    pub dimensionless: DimensionlessGroups,
+    /// Physical scales (absent for dimensionless scenes).
+    pub physical: Option<Physical>,
+    /// Whether the method converged.
+    pub converged: bool,
+    /// Status text.
+    pub status: String,
+    /// Linear solves (penalty) or interior-point iterations (QP).
+    pub iterations: usize,
+    /// Times.
+    pub time_s: Times,
+    /// Phase timings of the method.
+    pub method_time_s: std::collections::BTreeMap<String, f64>,
+    /// Largest deflection, physical.
+    pub w_max: f64,
+    /// Largest V.
+    pub V_max: f64,
+    /// V at the centre.
+    pub V_center: f64,
+    /// V at the corner (+L, +μL).
+    pub V_corner: f64,
+    /// Contact area / plate area.
+    pub contact_fraction: f64,
+    /// √(contact area / π) / L.
+    pub contact_radius: f64,
+    /// Contact extents.
+    pub contact_extent: Extent,
+    /// Equilibrium check.
+    pub resultant: Resultant,
+    /// Unilateral residuals.
+    pub complementarity: Complementarity,
+    /// Iteration history of the penalty method.
+    pub history: Vec<Iteration>,
+    /// Modelling notes.
+    pub notes: Vec<String>,
+}
+
+impl Summary {
+    /// Assemble the summary.
+    pub fn new(problem: &Problem, ops: &Operators, sol: &Solution, report: &Report, times: Times) -> Self {
+        let s = &problem.solver;
+        let bonded = s.contact == crate::scene::Contact::Bonded;
+        Summary {
+            title: problem.title.clone(),
+            method: if bonded { "direct".into() } else { s.method.name().into() },
+            contact: s.contact.name().into(),
+            symmetry: ops.mesh.symmetry_name().into(),
+            foundation: problem.groups.foundation.name().into(),
+            constraint: s.constraint.name().into(),
+            elements: problem.elements,
+            model_elements: [ops.mesh.nx, ops.mesh.ny],
+            nodes: ops.mesh.n_nodes(),
+            dofs: ops.n_eq(),
+            dimensionless: DimensionlessGroups {
+                gamma: problem.groups.gamma,
+                delta: problem.groups.delta,
+                mu: problem.groups.mu,
+                nu: problem.groups.nu,
+                penalty: s.penalty,
+            },
+            physical: problem.physical,
+            converged: sol.status.converged(),
+            status: sol.status.describe(),
+            iterations: sol.iterations,
+            time_s: times,
+            method_time_s: sol.timings.iter().cloned().collect(),
+            w_max: report.w_max,
+            V_max: report.v_max,
+            V_center: report.v_center,
+            V_corner: report.v_corner,
+            contact_fraction: report.contact_fraction,
+            contact_radius: report.contact_radius,
+            contact_extent: report.contact_extent,
+            resultant: report.resultant,
+            complementarity: report.complementarity,
+            history: sol.history.clone(),
+            notes: ops.notes.clone(),
+        }
+    }
+
+    /// Pretty JSON.
+    pub fn to_json(&self) -> Result<String> {
+        serde_json::to_string_pretty(self).map_err(|e| Error::numerical("summary", format!("cannot serialise: {e}")))
+    }
+
+    /// Short description for chart titles.
+    pub fn headline(&self) -> String {
+        format!(
+            "{} {}, Γ = {:.3e}, {} × {} elements",
+            self.contact, self.foundation, self.dimensionless.gamma, self.elements[0], self.elements[1]
+        )
+    }
+}
