@@ -1,0 +1,44 @@
+//! Helpers shared by the integration tests.
+#![allow(dead_code)]
+
+use liftoff::{analyse, Analysis, Problem};
+
+/// A dimensionless scene with one point load (s, t) and the given groups.
+pub fn point_scene(foundation: &str, gamma: f64, delta: f64, mu: f64, s: f64, t: f64, elements: [usize; 2], extra: &str) -> String {
+    format!(
+        r#"
+[dimensionless]
+foundation = "{foundation}"
+gamma = {gamma:e}
+delta = {delta:e}
+mu = {mu}
+nu = 0.3
+[[load]]
+kind = "point"
+x = {s}
+y = {t}
+force = 1.0
+[mesh]
+elements = [{}, {}]
+{extra}
+"#,
+        elements[0], elements[1]
+    )
+}
+
+/// Parse, validate and solve scene text, panicking with the scene's error (tests only).
+pub fn run(text: &str) -> Analysis {
+    let problem = Problem::from_toml(text).unwrap_or_else(|e| panic!("scene rejected: {e}\n{text}"));
+    analyse(&problem).unwrap_or_else(|e| panic!("solve failed: {e}\n{text}"))
+}
+
+/// Largest absolute difference of two equally long slices.
+pub fn max_abs_diff(a: &[f64], b: &[f64]) -> f64 {
+    assert_eq!(a.len(), b.len());
+    a.iter().zip(b).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max)
+}
+
+/// Largest absolute value.
+pub fn max_abs(a: &[f64]) -> f64 {
+    a.iter().map(|x| x.abs()).fold(0.0, f64::max)
+}
