@@ -692,3 +692,37 @@ mod tests {
         }
     }
 }
+
+#[cfg(test)]
+mod visual_tmp {
+    use super::*;
+    use crate::post::{profiles, FullField};
+
+    #[test]
+    fn visual_check() {
+        let Ok(dir) = std::env::var("LIFTOFF_PLOT_DIR") else { return };
+        let dir = Path::new(&dir);
+        let (nx, ny) = (40, 24);
+        let mu = 0.6;
+        let mut f = FullField { nx, ny, x: vec![], y: vec![], s: vec![], t: vec![], w: vec![], psi_x: vec![], psi_y: vec![], pressure: vec![], gap: vec![], v: vec![], sigma: vec![], contact: vec![] };
+        for j in 0..=ny {
+            for i in 0..=nx {
+                let s = -1.0 + 2.0 * i as f64 / nx as f64;
+                let t = -1.0 + 2.0 * j as f64 / ny as f64;
+                let r2 = s * s + 0.8 * t * t + 0.3 * s * s * t * t;
+                let sigma = 3.0 * (0.7 - r2).max(0.0) * (1.0 + 0.5 * (1.0 - r2));
+                let v = 0.02 * (0.6 - r2);
+                f.x.push(s); f.y.push(mu * t); f.s.push(s); f.t.push(t);
+                f.w.push(v); f.psi_x.push(0.0); f.psi_y.push(0.0);
+                f.pressure.push(sigma); f.gap.push(0.0); f.v.push(v);
+                f.sigma.push(sigma); f.contact.push(sigma > 1e-6 * 3.0);
+            }
+        }
+        write_contact_map(&dir.join("fine.svg"), &dir.join("fine.png"), &f, "Contact pressure σ, λ = 1.0, μ = 0.6").unwrap();
+        let pr = profiles(&f);
+        write_profiles_svg(&dir.join("profiles.svg"), &pr, "Profiles V and σ, λ = 1.0").unwrap();
+        let root = BitMapBackend::new(&dir.join("profiles.png"), PROFILE_SIZE).into_drawing_area();
+        draw_profiles(&root, &pr, "Profiles V and σ, λ = 1.0").unwrap();
+        root.present().unwrap();
+    }
+}
