@@ -10,6 +10,7 @@ use std::sync::OnceLock;
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 use plotters::style::FontStyle;
 
 use crate::error::{Error, Result};
@@ -108,6 +109,38 @@ fn padded_range(values: impl Iterator<Item = f64>, always: Option<f64>) -> (f64,
     (lo - 0.05 * span, hi + 0.05 * span)
 }
 
+/// Tick-label formatter for an axis spanning `lo`..`hi`: enough decimals for about ten ticks,
+/// trailing zeros dropped, no "-0", scientific notation for very small or large magnitudes.
+fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
+    let span = (hi - lo).abs();
+    let mag = lo.abs().max(hi.abs());
+    let step = if span > 0.0 && span.is_finite() { span / 10.0 } else { 1.0 };
+    let decimals = ((-step.log10()).ceil() as i32 + 1).clamp(0, 8) as usize;
+    move |v: &f64| {
+        let v = *v;
+        if !v.is_finite() {
+            return String::new();
+        }
+        if v.abs() <= 1e-9 * span.max(f64::MIN_POSITIVE) {
+            return "0".to_string();
+        }
+        if !(1e-3..1e5).contains(&mag) {
+            return format!("{v:.2e}");
+        }
+        let text = format!("{v:.decimals$}");
+        let text = if text.contains('.') {
+            text.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            text
+        };
+        if text == "-0" {
+            "0".to_string()
+        } else {
+            text
+        }
+    }
+}
+
 /// Legend text of a profile line.
 fn line_label(line: &str) -> String {
     match line {
@@ -177,6 +210,9 @@ fn draw_profiles<DB: DrawingBackend>(
     let (v_lo, v_hi) = padded_range(all(v_of).into_iter(), Some(0.0));
     let (s_lo, s_hi) = padded_range(all(s_of).into_iter(), Some(0.0));
     let x_desc = "s, t or diagonal fraction";
+    let x_fmt = tick_format(-1.0, 1.0);
+    let v_fmt = tick_format(v_lo, v_hi);
+    let s_fmt = tick_format(s_lo, s_hi);
 
     // Top: V, drawn downward (range from the largest V at the bottom to the smallest at the top).
     let mut chart = ChartBuilder::on(top)
@@ -189,6 +225,8 @@ fn draw_profiles<DB: DrawingBackend>(
         .configure_mesh()
         .x_desc(x_desc)
         .y_desc("V = D w / (P L²)")
+        .x_label_formatter(&x_fmt)
+        .y_label_formatter(&v_fmt)
         .label_style((FONT, 14))
         .axis_desc_style((FONT, 16))
         .light_line_style(RGBColor(235, 235, 235))
@@ -218,6 +256,8 @@ fn draw_profiles<DB: DrawingBackend>(
         .configure_mesh()
         .x_desc(x_desc)
         .y_desc("σ = μ L² r / P")
+        .x_label_formatter(&x_fmt)
+        .y_label_formatter(&s_fmt)
         .label_style((FONT, 14))
         .axis_desc_style((FONT, 16))
         .light_line_style(RGBColor(235, 235, 235))
@@ -429,6 +469,9 @@ fn draw_contact_map<DB: DrawingBackend>(
     let extra_w = ((avail_w - px * (x1 - x0)) / 2.0).max(0.0) as i32;
     let extra_h = ((avail_h - px * (y1 - y0)) / 2.0).max(0.0) as i32;
 
+    let x_fmt = tick_format(x0, x1);
+    let y_fmt = tick_format(y0, y1);
+    let bar_fmt = tick_format(0.0, scale);
     let mut chart = ChartBuilder::on(&map_area)
         .margin_left(margin + extra_w)
         .margin_right(margin + extra_w)
@@ -443,6 +486,8 @@ fn draw_contact_map<DB: DrawingBackend>(
         .disable_mesh()
         .x_desc("x")
         .y_desc("y")
+        .x_label_formatter(&x_fmt)
+        .y_label_formatter(&y_fmt)
         .label_style((FONT, 14))
         .axis_desc_style((FONT, 16))
         .draw()
@@ -498,7 +543,7 @@ fn draw_contact_map<DB: DrawingBackend>(
     bar.configure_mesh()
         .disable_mesh()
         .disable_x_axis()
-        .y_desc("σ")
+        .y_label_formatter(&bar_fmt)
         .label_style((FONT, 14))
         .axis_desc_style((FONT, 16))
         .draw()
@@ -518,6 +563,11 @@ fn draw_contact_map<DB: DrawingBackend>(
         BLACK.mix(0.7).stroke_width(1),
     )))
     .map_err(txt)?;
+    // Bar caption, centred above the bar.
+    let (bar_x, bar_y) = bar.plotting_area().get_pixel_range();
+    let style = TextStyle::from((FONT, 18).into_font()).pos(Pos::new(HPos::Center, VPos::Bottom));
+    root.draw_text("σ", &style, ((bar_x.start + bar_x.end) / 2, bar_y.start - 6))
+        .map_err(txt)?;
     Ok(())
 }
 
@@ -721,7 +771,8 @@ mod visual_tmp {
         write_contact_map(&dir.join("fine.svg"), &dir.join("fine.png"), &f, "Contact pressure σ, λ = 1.0, μ = 0.6").unwrap();
         let pr = profiles(&f);
         write_profiles_svg(&dir.join("profiles.svg"), &pr, "Profiles V and σ, λ = 1.0").unwrap();
-        let root = BitMapBackend::new(&dir.join("profiles.png"), PROFILE_SIZE).into_drawing_area();
+        let pp = dir.join("profiles.png");
+        let root = BitMapBackend::new(&pp, PROFILE_SIZE).into_drawing_area();
         draw_profiles(&root, &pr, "Profiles V and σ, λ = 1.0").unwrap();
         root.present().unwrap();
     }

@@ -6,8 +6,10 @@
 
 pub mod bonded;
 pub mod linalg;
+pub mod penalty;
+pub mod qp;
 
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::operators::Operators;
 use crate::scene::{Contact, MethodKind, SolverSettings};
 
@@ -95,12 +97,63 @@ pub struct Solution {
 
 /// Solve with the contact law and method of the settings.
 pub fn solve(ops: &Operators, settings: &SolverSettings) -> Result<Solution> {
-    match (settings.contact, settings.method) {
-        (Contact::Bonded, _) => bonded::solve(ops),
-        (Contact::Unbonded, MethodKind::Penalty | MethodKind::Qp) => Err(crate::error::Error::Unsupported(
-            "unbonded contact is not available yet in this version: run with --contact bonded (or contact = \"bonded\" in [solver])".into(),
-        )),
+    match settings.contact {
+        Contact::Bonded => bonded::solve(ops),
+        Contact::Unbonded => {
+            check_feasible(ops)?;
+            match settings.method {
+                MethodKind::Penalty => penalty::solve(
+                    ops,
+                    &penalty::PenaltySettings {
+                        epsilon: settings.penalty,
+                        max_iterations: settings.max_iterations,
+                    },
+                ),
+                MethodKind::Qp => qp::solve(ops, &qp::QpSettings::default()),
+            }
+        }
     }
+}
+
+/// A tensionless foundation can only balance a net downward load whose line of action passes
+/// through the plate: check the rigid-body components of the load before solving.
+pub fn check_feasible(ops: &Operators) -> Result<()> {
+    let rf: Vec<f64> = ops.rigid.iter().map(|r| bonded::dot(r, &ops.f)).collect();
+    let total = rf[0];
+    let scale: f64 = ops.f.iter().map(|v| v.abs()).sum();
+    if total <= 1e-12 * scale {
+        return Err(Error::Infeasible(format!(
+            "the net load is upward or zero ({:.3e} in units of P on the model): a foundation that cannot pull cannot hold the plate down; bonded contact (--contact bonded) can",
+            total
+        )));
+    }
+    // Resultant position, where the model keeps that rotation (x: mode 1 unless reduced about
+    // x = 0; y: the next mode unless reduced about y = 0).
+    let mut k = 1;
+    let m = &ops.mesh;
+    let lo_x = m.x0;
+    let hi_x = m.x0 + m.nx as f64 * m.hx;
+    let lo_y = m.y0;
+    let hi_y = m.y0 + m.ny as f64 * m.hy;
+    let tol = 1e-9;
+    if !m.sym_x {
+        let xbar = rf[k] / total;
+        k += 1;
+        if xbar < lo_x - tol || xbar > hi_x + tol {
+            return Err(Error::Infeasible(format!(
+                "the load resultant acts at x = {xbar:.4} L, outside the plate [{lo_x}, {hi_x}] L: the plate would tip over; no contact pressure can balance it"
+            )));
+        }
+    }
+    if !m.sym_y {
+        let ybar = rf[k] / total;
+        if ybar < lo_y - tol || ybar > hi_y + tol {
+            return Err(Error::Infeasible(format!(
+                "the load resultant acts at y = {ybar:.4} L, outside the plate [{lo_y:.4}, {hi_y:.4}] L: the plate would tip over; no contact pressure can balance it"
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// Nodal gap and residual bookkeeping shared by the methods: g = T σ − Bᵀ u.
