@@ -61,8 +61,9 @@ const RAMP: [(u8, u8, u8); 8] = [
 /// Register the embedded font with plotters once; later calls return the first outcome.
 fn ensure_font(path: &Path) -> Result<()> {
     static REGISTERED: OnceLock<bool> = OnceLock::new();
-    let ok = *REGISTERED
-        .get_or_init(|| plotters::style::register_font(FONT, FontStyle::Normal, FONT_BYTES).is_ok());
+    let ok = *REGISTERED.get_or_init(|| {
+        plotters::style::register_font(FONT, FontStyle::Normal, FONT_BYTES).is_ok()
+    });
     if ok {
         Ok(())
     } else {
@@ -114,7 +115,11 @@ fn padded_range(values: impl Iterator<Item = f64>, always: Option<f64>) -> (f64,
 fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
     let span = (hi - lo).abs();
     let mag = lo.abs().max(hi.abs());
-    let step = if span > 0.0 && span.is_finite() { span / 10.0 } else { 1.0 };
+    let step = if span > 0.0 && span.is_finite() {
+        span / 10.0
+    } else {
+        1.0
+    };
     let decimals = ((-step.log10()).ceil() as i32 + 1).clamp(0, 8) as usize;
     move |v: &f64| {
         let v = *v;
@@ -230,6 +235,7 @@ fn draw_profiles<DB: DrawingBackend>(
         .label_style((FONT, 14))
         .axis_desc_style((FONT, 16))
         .light_line_style(RGBColor(235, 235, 235))
+        .max_light_lines(4)
         .draw()
         .map_err(txt)?;
     chart
@@ -241,7 +247,10 @@ fn draw_profiles<DB: DrawingBackend>(
     for (k, profile) in profiles.iter().enumerate() {
         let colour = LINE_COLOURS[k % LINE_COLOURS.len()];
         chart
-            .draw_series(LineSeries::new(series(profile, v_of), colour.stroke_width(2)))
+            .draw_series(LineSeries::new(
+                series(profile, v_of),
+                colour.stroke_width(2),
+            ))
             .map_err(txt)?;
     }
 
@@ -261,6 +270,7 @@ fn draw_profiles<DB: DrawingBackend>(
         .label_style((FONT, 14))
         .axis_desc_style((FONT, 16))
         .light_line_style(RGBColor(235, 235, 235))
+        .max_light_lines(4)
         .draw()
         .map_err(txt)?;
     chart
@@ -272,7 +282,10 @@ fn draw_profiles<DB: DrawingBackend>(
     for (k, profile) in profiles.iter().enumerate() {
         let colour = LINE_COLOURS[k % LINE_COLOURS.len()];
         chart
-            .draw_series(LineSeries::new(series(profile, s_of), colour.stroke_width(2)))
+            .draw_series(LineSeries::new(
+                series(profile, s_of),
+                colour.stroke_width(2),
+            ))
             .map_err(txt)?
             .label(line_label(profile.line))
             .legend(move |(x, y)| PathElement::new([(x, y), (x + 24, y)], colour.stroke_width(2)));
@@ -333,7 +346,10 @@ fn check_field(path: &Path, field: &FullField) -> Result<()> {
         .zip(field.ny.checked_add(1))
         .and_then(|(a, b)| a.checked_mul(b));
     let ok = n.is_some_and(|n| {
-        field.x.len() == n && field.y.len() == n && field.sigma.len() == n && field.contact.len() == n
+        field.x.len() == n
+            && field.y.len() == n
+            && field.sigma.len() == n
+            && field.contact.len() == n
     });
     if ok {
         Ok(())
@@ -353,7 +369,11 @@ fn check_field(path: &Path, field: &FullField) -> Result<()> {
 
 /// Colour of the normalised value `f` ∈ [0, 1] on [`RAMP`].
 fn ramp(f: f64) -> RGBColor {
-    let f = if f.is_finite() { f.clamp(0.0, 1.0) } else { 0.0 };
+    let f = if f.is_finite() {
+        f.clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
     let pos = f * (RAMP.len() - 1) as f64;
     let k = (pos.floor() as usize).min(RAMP.len() - 2);
     let a = pos - k as f64;
@@ -366,7 +386,12 @@ fn ramp(f: f64) -> RGBColor {
 /// One cell of the map: its corner node indices (counter-clockwise from (i, j)).
 fn cell_nodes(field: &FullField, i: usize, j: usize) -> [usize; 4] {
     let n = field.nx + 1;
-    [i + j * n, i + 1 + j * n, i + 1 + (j + 1) * n, i + (j + 1) * n]
+    [
+        i + j * n,
+        i + 1 + j * n,
+        i + 1 + (j + 1) * n,
+        i + (j + 1) * n,
+    ]
 }
 
 /// Segments of the level set σ = `level` of the bilinear σ field, by marching squares.
@@ -448,7 +473,9 @@ fn draw_contact_map<DB: DrawingBackend>(
         let (lo, hi) = v
             .iter()
             .filter(|a| a.is_finite())
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &a| (l.min(a), h.max(a)));
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &a| {
+                (l.min(a), h.max(a))
+            });
         if lo.is_finite() && hi > lo {
             (lo, hi)
         } else if lo.is_finite() {
@@ -566,8 +593,12 @@ fn draw_contact_map<DB: DrawingBackend>(
     // Bar caption, centred above the bar.
     let (bar_x, bar_y) = bar.plotting_area().get_pixel_range();
     let style = TextStyle::from((FONT, 18).into_font()).pos(Pos::new(HPos::Center, VPos::Bottom));
-    root.draw_text("σ", &style, ((bar_x.start + bar_x.end) / 2, bar_y.start - 6))
-        .map_err(txt)?;
+    root.draw_text(
+        "σ",
+        &style,
+        ((bar_x.start + bar_x.end) / 2, bar_y.start - 6),
+    )
+    .map_err(txt)?;
     Ok(())
 }
 
@@ -678,7 +709,9 @@ mod tests {
         ];
         let path = dir.path().join("flat.svg");
         write_profiles_svg(&path, &flat, "flat").expect("flat profiles");
-        assert!(std::fs::read_to_string(&path).expect("read").contains("<svg"));
+        assert!(std::fs::read_to_string(&path)
+            .expect("read")
+            .contains("<svg"));
     }
 
     #[test]
@@ -740,40 +773,5 @@ mod tests {
                 assert!((-2.0..=2.0).contains(&x) && (-1.0..=1.0).contains(&y));
             }
         }
-    }
-}
-
-#[cfg(test)]
-mod visual_tmp {
-    use super::*;
-    use crate::post::{profiles, FullField};
-
-    #[test]
-    fn visual_check() {
-        let Ok(dir) = std::env::var("LIFTOFF_PLOT_DIR") else { return };
-        let dir = Path::new(&dir);
-        let (nx, ny) = (40, 24);
-        let mu = 0.6;
-        let mut f = FullField { nx, ny, x: vec![], y: vec![], s: vec![], t: vec![], w: vec![], psi_x: vec![], psi_y: vec![], pressure: vec![], gap: vec![], v: vec![], sigma: vec![], contact: vec![] };
-        for j in 0..=ny {
-            for i in 0..=nx {
-                let s = -1.0 + 2.0 * i as f64 / nx as f64;
-                let t = -1.0 + 2.0 * j as f64 / ny as f64;
-                let r2 = s * s + 0.8 * t * t + 0.3 * s * s * t * t;
-                let sigma = 3.0 * (0.7 - r2).max(0.0) * (1.0 + 0.5 * (1.0 - r2));
-                let v = 0.02 * (0.6 - r2);
-                f.x.push(s); f.y.push(mu * t); f.s.push(s); f.t.push(t);
-                f.w.push(v); f.psi_x.push(0.0); f.psi_y.push(0.0);
-                f.pressure.push(sigma); f.gap.push(0.0); f.v.push(v);
-                f.sigma.push(sigma); f.contact.push(sigma > 1e-6 * 3.0);
-            }
-        }
-        write_contact_map(&dir.join("fine.svg"), &dir.join("fine.png"), &f, "Contact pressure σ, λ = 1.0, μ = 0.6").unwrap();
-        let pr = profiles(&f);
-        write_profiles_svg(&dir.join("profiles.svg"), &pr, "Profiles V and σ, λ = 1.0").unwrap();
-        let pp = dir.join("profiles.png");
-        let root = BitMapBackend::new(&pp, PROFILE_SIZE).into_drawing_area();
-        draw_profiles(&root, &pr, "Profiles V and σ, λ = 1.0").unwrap();
-        root.present().unwrap();
     }
 }

@@ -105,7 +105,10 @@ fn build(path: &Path, field: &FullField, elements: &ElementField) -> Result<Vtk>
     let bad_nodal = nodal
         .iter()
         .map(|(name, v)| (*name, v.len()))
-        .chain([("sigma", field.sigma.len()), ("contact", field.contact.len())])
+        .chain([
+            ("sigma", field.sigma.len()),
+            ("contact", field.contact.len()),
+        ])
         .find(|(_, len)| *len != n_nodes);
     if let Some((name, len)) = bad_nodal {
         return Err(io_error(
