@@ -16,7 +16,9 @@ pub enum Error {
         message: String,
     },
     /// The problem would need more memory than allowed.
-    #[error("{what} needs about {need_gib:.2} GiB, more than the {limit_gib:.2} GiB allowed; {hint}")]
+    #[error(
+        "{what} needs about {need_gib:.2} GiB, more than the {limit_gib:.2} GiB allowed; {hint}"
+    )]
     TooLarge {
         /// What would be allocated.
         what: String,

@@ -26,5 +26,8 @@ pub const SCENES: &[(&str, &str, &str)] = &[
 
 /// The TOML text of a bundled scene.
 pub fn scene(name: &str) -> Option<&'static str> {
-    SCENES.iter().find(|(n, _, _)| *n == name).map(|(_, _, t)| *t)
+    SCENES
+        .iter()
+        .find(|(n, _, _)| *n == name)
+        .map(|(_, _, t)| *t)
 }

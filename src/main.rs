@@ -5,7 +5,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand, ValueEnum};
 use liftoff::output;
-use liftoff::scene::{Contact, ConstraintPoints, MethodKind, SceneFile, SymmetryMode};
+use liftoff::scene::{ConstraintPoints, Contact, MethodKind, SceneFile, SymmetryMode};
 use liftoff::{Error, Problem};
 
 /// Exit codes, one per kind of failure (docs/ERRORS.md).
@@ -17,7 +17,11 @@ mod exit {
 }
 
 #[derive(Parser)]
-#[command(name = "liftoff", version, about = "Rectangular plates on tensionless foundations: where they lift off, how they deflect, what the soil takes")]
+#[command(
+    name = "liftoff",
+    version,
+    about = "Rectangular plates on tensionless foundations: where they lift off, how they deflect, what the soil takes"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -93,11 +97,15 @@ fn parse_mesh(s: &str) -> Result<[i64; 2], String> {
     if parts.len() != 2 {
         return Err(format!("expected NX,NY (two element counts), got `{s}`"));
     }
-    let n = |p: &str| p.parse::<i64>().map_err(|_| format!("`{p}` is not a whole number of elements"));
+    let n = |p: &str| {
+        p.parse::<i64>()
+            .map_err(|_| format!("`{p}` is not a whole number of elements"))
+    };
     Ok([n(parts[0])?, n(parts[1])?])
 }
 
 fn main() -> ExitCode {
+    faer::set_global_parallelism(faer::Par::Seq);
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Solve(args) => solve(args),
@@ -120,12 +128,18 @@ struct Failure {
 impl From<Error> for Failure {
     fn from(e: Error) -> Self {
         let code = match &e {
-            Error::Parse(_) | Error::Invalid { .. } | Error::TooLarge { .. } | Error::Unsupported(_) => exit::BAD_INPUT,
+            Error::Parse(_)
+            | Error::Invalid { .. }
+            | Error::TooLarge { .. }
+            | Error::Unsupported(_) => exit::BAD_INPUT,
             Error::Infeasible(_) => exit::INFEASIBLE,
             Error::Numerical { .. } => exit::SOLVER,
             Error::Io { .. } => exit::IO,
         };
-        Failure { message: e.to_string(), code }
+        Failure {
+            message: e.to_string(),
+            code,
+        }
     }
 }
 
@@ -253,14 +267,37 @@ fn print_table(problem: &Problem, s: &output::Summary) {
     );
     println!(
         "  model      : {} model, {} × {} of {} × {} elements, {} nodes, {} dofs",
-        s.symmetry, s.model_elements[0], s.model_elements[1], s.elements[0], s.elements[1], s.nodes, s.dofs
+        s.symmetry,
+        s.model_elements[0],
+        s.model_elements[1],
+        s.elements[0],
+        s.elements[1],
+        s.nodes,
+        s.dofs
     );
     for n in &s.notes {
         println!("  note       : {n}");
     }
-    let method = if s.contact == "bonded" { "bonded, direct solve".to_string() } else { format!("unbonded, {} ({} constraints)", s.method, s.constraint) };
+    let method = if s.contact == "bonded" {
+        "bonded, direct solve".to_string()
+    } else {
+        format!("unbonded, {} ({} constraints)", s.method, s.constraint)
+    };
     println!("  contact    : {method}");
     println!("  status     : {} after {} step(s)", s.status, s.iterations);
+    if !s.history.is_empty() {
+        println!("  penalty iterations (constraint points in the penalised, lifted set):");
+        for it in &s.history {
+            println!(
+                "    step {:>3}: {:>6} penalised, {:>6} entered, {:>6} left, min σ {:.3e}",
+                it.step,
+                it.penalised,
+                it.entered,
+                it.left,
+                it.min_pressure * g.mu
+            );
+        }
+    }
     println!(
         "  time       : assemble {:.3} s, solve {:.3} s, total {:.3} s",
         s.time_s.assemble, s.time_s.solve, s.time_s.total
@@ -302,4 +339,3 @@ fn print_table(problem: &Problem, s: &output::Summary) {
         c.min_pressure, c.min_gap, c.max_product
     );
 }
-

@@ -242,9 +242,15 @@ mod tests {
         let m = Mesh::new(2.0, 2.0, [4, 4], false, false);
         let (e, xi, eta) = m.locate(-0.75, 0.25).unwrap();
         assert_eq!(m.element_ij(e), (0, 2));
-        assert!(xi.abs() < 1e-12 && eta.abs() < 1e-12, "centre of element (0, 2)");
+        assert!(
+            xi.abs() < 1e-12 && eta.abs() < 1e-12,
+            "centre of element (0, 2)"
+        );
         assert!(m.locate(1.0 + 1e-3, 0.0).is_none());
-        assert!(m.locate(1.0, 1.0).is_some(), "corner on the boundary is inside");
+        assert!(
+            m.locate(1.0, 1.0).is_some(),
+            "corner on the boundary is inside"
+        );
     }
 
     #[test]

@@ -102,7 +102,12 @@ pub fn estimate_bytes(mesh: &Mesh, foundation: FoundationKind, dense_schur: bool
 }
 
 /// Refuse a model that will not fit in `limit` bytes.
-pub fn check_memory(mesh: &Mesh, foundation: FoundationKind, dense_schur: bool, limit: f64) -> Result<()> {
+pub fn check_memory(
+    mesh: &Mesh,
+    foundation: FoundationKind,
+    dense_schur: bool,
+    limit: f64,
+) -> Result<()> {
     let need = estimate_bytes(mesh, foundation, dense_schur);
     if need > limit {
         let gib = 1024f64.powi(3);
@@ -136,7 +141,12 @@ impl Operators {
         let (mesh, notes) = plan_mesh(problem);
         let dense_schur = problem.solver.contact == crate::scene::Contact::Unbonded
             && problem.solver.method == crate::scene::MethodKind::Qp;
-        check_memory(&mesh, problem.groups.foundation, dense_schur, problem.solver.memory_limit)?;
+        check_memory(
+            &mesh,
+            problem.groups.foundation,
+            dense_schur,
+            problem.solver.memory_limit,
+        )?;
         let g = &problem.groups;
         let section = Section {
             bending: 1.0,
@@ -144,7 +154,15 @@ impl Operators {
             poisson: g.nu,
         };
         let c = g.mu * g.gamma;
-        Ok(Self::build(mesh, section, g.foundation, c, &problem.loads, problem.solver.constraint, notes))
+        Ok(Self::build(
+            mesh,
+            section,
+            g.foundation,
+            c,
+            &problem.loads,
+            problem.solver.constraint,
+            notes,
+        ))
     }
 
     /// Assemble from parts: a mesh, a section, the foundation and its constant
@@ -351,7 +369,12 @@ pub fn constraint_points(mesh: &Mesh, kind: ConstraintPoints) -> Constraints {
             let g = sprs::CsMat::eye(n);
             let weights = foundation::nodal_areas(mesh);
             let points = (0..n).map(|i| mesh.node_xy(i)).collect();
-            Constraints { kind, g, weights, points }
+            Constraints {
+                kind,
+                g,
+                weights,
+                points,
+            }
         }
         ConstraintPoints::Gauss => {
             let rule = GaussRule::new(2);
@@ -375,7 +398,12 @@ pub fn constraint_points(mesh: &Mesh, kind: ConstraintPoints) -> Constraints {
                     }
                 }
             }
-            Constraints { kind, g: tri.to_csc(), weights, points }
+            Constraints {
+                kind,
+                g: tri.to_csc(),
+                weights,
+                points,
+            }
         }
     }
 }

@@ -304,7 +304,13 @@ pub fn report(problem: &Problem, ops: &Operators, sol: &Solution) -> Report {
 
     // Equilibrium: reaction of the model times the number of copies.
     let copies = mesh.copies() as f64;
-    let reaction_unit: f64 = copies * sol.sigma.iter().zip(&areas).map(|(s, a)| s * a).sum::<f64>();
+    let reaction_unit: f64 = copies
+        * sol
+            .sigma
+            .iter()
+            .zip(&areas)
+            .map(|(s, a)| s * a)
+            .sum::<f64>();
     let load_unit = copies * ops.total_load();
     let resultant = Resultant {
         load: load_unit * ph.force,

@@ -85,7 +85,10 @@ mod tests {
         for n in 1..=16 {
             let rule = GaussRule::new(n);
             let total: f64 = rule.weights.iter().sum();
-            assert!((total - 2.0).abs() < 1e-13, "weights of the {n}-point rule sum to {total}");
+            assert!(
+                (total - 2.0).abs() < 1e-13,
+                "weights of the {n}-point rule sum to {total}"
+            );
             // ∫_{-1}^{1} x^k dx = 2/(k+1) for even k, 0 for odd k; exact up to k = 2n − 1.
             for k in 0..(2 * n) {
                 let q: f64 = rule
@@ -94,8 +97,15 @@ mod tests {
                     .zip(&rule.weights)
                     .map(|(x, w)| w * x.powi(k as i32))
                     .sum();
-                let exact = if k % 2 == 0 { 2.0 / (k as f64 + 1.0) } else { 0.0 };
-                assert!((q - exact).abs() < 1e-12, "{n}-point rule on x^{k}: {q} vs {exact}");
+                let exact = if k % 2 == 0 {
+                    2.0 / (k as f64 + 1.0)
+                } else {
+                    0.0
+                };
+                assert!(
+                    (q - exact).abs() < 1e-12,
+                    "{n}-point rule on x^{k}: {q} vs {exact}"
+                );
             }
         }
     }

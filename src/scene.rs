@@ -381,9 +381,17 @@ impl Load {
             }
             Load::Patch { x, y, pressure } => {
                 if about_x {
-                    Load::Patch { x: [-x[1], -x[0]], y, pressure }
+                    Load::Patch {
+                        x: [-x[1], -x[0]],
+                        y,
+                        pressure,
+                    }
                 } else {
-                    Load::Patch { x, y: [-y[1], -y[0]], pressure }
+                    Load::Patch {
+                        x,
+                        y: [-y[1], -y[0]],
+                        pressure,
+                    }
                 }
             }
         }
@@ -391,10 +399,26 @@ impl Load {
 
     fn close(&self, other: &Load, tol: f64) -> bool {
         match (*self, *other) {
-            (Load::Point { x, y, force }, Load::Point { x: x2, y: y2, force: f2 }) => {
-                (x - x2).abs() < tol && (y - y2).abs() < tol && (force - f2).abs() <= tol * force.abs().max(f2.abs())
+            (
+                Load::Point { x, y, force },
+                Load::Point {
+                    x: x2,
+                    y: y2,
+                    force: f2,
+                },
+            ) => {
+                (x - x2).abs() < tol
+                    && (y - y2).abs() < tol
+                    && (force - f2).abs() <= tol * force.abs().max(f2.abs())
             }
-            (Load::Patch { x, y, pressure }, Load::Patch { x: x2, y: y2, pressure: p2 }) => {
+            (
+                Load::Patch { x, y, pressure },
+                Load::Patch {
+                    x: x2,
+                    y: y2,
+                    pressure: p2,
+                },
+            ) => {
                 (x[0] - x2[0]).abs() < tol
                     && (x[1] - x2[1]).abs() < tol
                     && (y[0] - y2[0]).abs() < tol
@@ -412,7 +436,11 @@ pub fn loads_symmetric(loads: &[Load], about_x: bool) -> bool {
     let mut used = vec![false; loads.len()];
     for l in loads {
         let m = l.mirrored(about_x);
-        match loads.iter().enumerate().position(|(k, c)| !used[k] && c.close(&m, tol)) {
+        match loads
+            .iter()
+            .enumerate()
+            .position(|(k, c)| !used[k] && c.close(&m, tol))
+        {
             Some(k) => used[k] = true,
             None => return false,
         }
@@ -461,10 +489,16 @@ pub const MAX_ELEMENTS_PER_SIDE: i64 = 4000;
 
 fn finite_positive(field: &str, v: f64, unit: &str) -> Result<f64> {
     if !v.is_finite() {
-        return Err(Error::invalid(field, format!("must be a finite number, got {v}")));
+        return Err(Error::invalid(
+            field,
+            format!("must be a finite number, got {v}"),
+        ));
     }
     if v <= 0.0 {
-        return Err(Error::invalid(field, format!("must be positive ({unit}), got {v}")));
+        return Err(Error::invalid(
+            field,
+            format!("must be positive ({unit}), got {v}"),
+        ));
     }
     Ok(v)
 }
@@ -484,7 +518,11 @@ pub fn default_memory_limit() -> f64 {
     let total = std::fs::read_to_string("/proc/meminfo").ok().and_then(|s| {
         s.lines()
             .find(|l| l.starts_with("MemTotal:"))
-            .and_then(|l| l.split_whitespace().nth(1).and_then(|k| k.parse::<f64>().ok()))
+            .and_then(|l| {
+                l.split_whitespace()
+                    .nth(1)
+                    .and_then(|k| k.parse::<f64>().ok())
+            })
             .map(|kib| kib * 1024.0)
     });
     0.75 * total.unwrap_or(8.0 * 1024.0 * 1024.0 * 1024.0 / 0.75)
@@ -493,7 +531,10 @@ pub fn default_memory_limit() -> f64 {
 impl SceneFile {
     /// Validate and convert to the unit system.
     pub fn validate(&self) -> Result<Problem> {
-        let title = self.title.clone().unwrap_or_else(|| "liftoff scene".to_string());
+        let title = self
+            .title
+            .clone()
+            .unwrap_or_else(|| "liftoff scene".to_string());
         // Plate, foundation and scales.
         let (groups, physical, scale_xy): (Groups, Option<(f64, f64)>, [f64; 2]) =
             match (&self.plate, &self.foundation, &self.dimensionless) {
@@ -600,24 +641,37 @@ impl SceneFile {
         // Loads in unit-system geometry, magnitudes not yet normalised.
         let mut loads = Vec::with_capacity(self.load.len());
         if self.load.is_empty() {
-            return Err(Error::invalid("load", "no [[load]] entries: add at least one point, patch or uniform load"));
+            return Err(Error::invalid(
+                "load",
+                "no [[load]] entries: add at least one point, patch or uniform load",
+            ));
         }
         let (hx, hy) = (1.0, mu);
         let tol = 1e-9;
-        let coord_unit = if physical.is_some() { "m" } else { "s or t, in [−1, 1]" };
+        let coord_unit = if physical.is_some() {
+            "m"
+        } else {
+            "s or t, in [−1, 1]"
+        };
         for (k, l) in self.load.iter().enumerate() {
             let field = |name: &str| format!("load[{k}].{name}");
             let value = |name: &str, c: Option<Coord>, scale: f64, half: f64| -> Result<f64> {
                 match c {
                     Some(Coord::Value(v)) => {
                         if !v.is_finite() {
-                            return Err(Error::invalid(field(name), format!("must be finite, got {v}")));
+                            return Err(Error::invalid(
+                                field(name),
+                                format!("must be finite, got {v}"),
+                            ));
                         }
                         let u = v * scale;
                         if u.abs() > half * (1.0 + tol) {
                             return Err(Error::invalid(
                                 field(name),
-                                format!("{v} {coord_unit} lies outside the plate (|{name}| ≤ {:.6})", half / scale),
+                                format!(
+                                    "{v} {coord_unit} lies outside the plate (|{name}| ≤ {:.6})",
+                                    half / scale
+                                ),
                             ));
                         }
                         Ok(u.clamp(-half, half))
@@ -636,31 +690,49 @@ impl SceneFile {
                             return Err(Error::invalid(field(name), "range ends must be finite"));
                         }
                         if a >= b {
-                            return Err(Error::invalid(field(name), format!("range [{a}, {b}] must be increasing")));
+                            return Err(Error::invalid(
+                                field(name),
+                                format!("range [{a}, {b}] must be increasing"),
+                            ));
                         }
                         let (ua, ub) = (a * scale, b * scale);
                         if ua < -half * (1.0 + tol) || ub > half * (1.0 + tol) {
                             return Err(Error::invalid(
                                 field(name),
-                                format!("range [{a}, {b}] {coord_unit} leaves the plate (±{:.6})", half / scale),
+                                format!(
+                                    "range [{a}, {b}] {coord_unit} leaves the plate (±{:.6})",
+                                    half / scale
+                                ),
                             ));
                         }
                         Ok([ua.max(-half), ub.min(half)])
                     }
-                    Some(Coord::Value(_)) => Err(Error::invalid(field(name), "a patch load takes a range [lo, hi]")),
-                    None => Err(Error::invalid(field(name), "missing: the patch's extent [lo, hi]")),
+                    Some(Coord::Value(_)) => Err(Error::invalid(
+                        field(name),
+                        "a patch load takes a range [lo, hi]",
+                    )),
+                    None => Err(Error::invalid(
+                        field(name),
+                        "missing: the patch's extent [lo, hi]",
+                    )),
                 }
             };
             let magnitude = |name: &str, v: Option<f64>| -> Result<f64> {
                 let v = v.ok_or_else(|| Error::invalid(field(name), "missing"))?;
                 if !v.is_finite() {
-                    return Err(Error::invalid(field(name), format!("must be finite, got {v}")));
+                    return Err(Error::invalid(
+                        field(name),
+                        format!("must be finite, got {v}"),
+                    ));
                 }
                 Ok(v)
             };
             let forbid = |name: &str, present: bool, kind: &str| -> Result<()> {
                 if present {
-                    Err(Error::invalid(field(name), format!("does not apply to a {kind} load")))
+                    Err(Error::invalid(
+                        field(name),
+                        format!("does not apply to a {kind} load"),
+                    ))
                 } else {
                     Ok(())
                 }
@@ -691,7 +763,11 @@ impl SceneFile {
                     forbid("y", l.y.is_some(), "uniform")?;
                     let p = magnitude("pressure", l.pressure)?;
                     let p = if physical.is_some() { p } else { p / mu };
-                    Load::Patch { x: [-hx, hx], y: [-hy, hy], pressure: p }
+                    Load::Patch {
+                        x: [-hx, hx],
+                        y: [-hy, hy],
+                        pressure: p,
+                    }
                 }
             };
             loads.push(load);
@@ -742,7 +818,9 @@ impl SceneFile {
             if n > MAX_ELEMENTS_PER_SIDE {
                 return Err(Error::invalid(
                     format!("mesh.elements[{k}]"),
-                    format!("{n} elements is more than the {MAX_ELEMENTS_PER_SIDE} allowed per side"),
+                    format!(
+                        "{n} elements is more than the {MAX_ELEMENTS_PER_SIDE} allowed per side"
+                    ),
                 ));
             }
         }
@@ -770,7 +848,11 @@ impl SceneFile {
         Ok(Problem {
             title,
             groups,
-            physical: physical.map(|(l, d)| Physical { half_length: l, force: p_force, rigidity: d }),
+            physical: physical.map(|(l, d)| Physical {
+                half_length: l,
+                force: p_force,
+                rigidity: d,
+            }),
             loads,
             elements,
             symmetry: self.mesh.symmetry,
@@ -866,23 +948,54 @@ constraint = "nodal"
             "[foundation]\nmodel = \"half-space\"\nyoungs_modulus = {es}\npoissons_ratio = {nus}"
         )))
         .unwrap();
-        let pw = Problem::from_toml(&scene(&format!("[foundation]\nmodel = \"winkler\"\nmodulus = {k}"))).unwrap();
-        assert!((ph.groups.gamma - gh).abs() < 1e-12 * gh, "Γ_h {} vs eq. 4.1e {gh}", ph.groups.gamma);
-        assert!((pw.groups.gamma - gw).abs() < 1e-12 * gw, "Γ_w {} vs eq. 4.1e {gw}", pw.groups.gamma);
-        assert!((ph.groups.delta - delta).abs() < 1e-12 * delta, "Δ {} vs eq. 4.1d {delta}", ph.groups.delta);
+        let pw = Problem::from_toml(&scene(&format!(
+            "[foundation]\nmodel = \"winkler\"\nmodulus = {k}"
+        )))
+        .unwrap();
+        assert!(
+            (ph.groups.gamma - gh).abs() < 1e-12 * gh,
+            "Γ_h {} vs eq. 4.1e {gh}",
+            ph.groups.gamma
+        );
+        assert!(
+            (pw.groups.gamma - gw).abs() < 1e-12 * gw,
+            "Γ_w {} vs eq. 4.1e {gw}",
+            pw.groups.gamma
+        );
+        assert!(
+            (ph.groups.delta - delta).abs() < 1e-12 * delta,
+            "Δ {} vs eq. 4.1d {delta}",
+            ph.groups.delta
+        );
         // The paper's own Δ for H/L = 0.1, ν = 0.3, χ = 5/6, μ = 1 is 0.002857.
         assert!((ph.groups.delta - 0.002857).abs() < 1e-6);
     }
 
     #[test]
     fn symmetry_of_load_sets() {
-        let a = Load::Point { x: 0.5, y: 0.2, force: 1.0 };
-        let b = Load::Point { x: -0.5, y: 0.2, force: 1.0 };
+        let a = Load::Point {
+            x: 0.5,
+            y: 0.2,
+            force: 1.0,
+        };
+        let b = Load::Point {
+            x: -0.5,
+            y: 0.2,
+            force: 1.0,
+        };
         assert!(loads_symmetric(&[a, b], true));
         assert!(!loads_symmetric(&[a, b], false));
         assert!(!loads_symmetric(&[a], true));
-        let p = Load::Patch { x: [-1.0, 0.0], y: [-0.5, 0.5], pressure: 2.0 };
-        let q = Load::Patch { x: [0.0, 1.0], y: [-0.5, 0.5], pressure: 2.0 };
+        let p = Load::Patch {
+            x: [-1.0, 0.0],
+            y: [-0.5, 0.5],
+            pressure: 2.0,
+        };
+        let q = Load::Patch {
+            x: [0.0, 1.0],
+            y: [-0.5, 0.5],
+            pressure: 2.0,
+        };
         assert!(loads_symmetric(&[p, q], true) && loads_symmetric(&[p, q], false));
     }
 }

@@ -20,19 +20,40 @@ fn winkler_point_load_matches_westergaard() {
     let mut errors = Vec::new();
     for n in [40, 80, 160] {
         // n elements over 2L = 20ℓ: h = ℓ/2, ℓ/4, ℓ/8.
-        let a = run(&point_scene("winkler", gamma, delta, 1.0, 0.0, 0.0, [n, n], "[solver]\ncontact = \"bonded\""));
-        assert_eq!(a.summary.symmetry, "quarter", "centre load on an even mesh uses a quarter model");
+        let a = run(&point_scene(
+            "winkler",
+            gamma,
+            delta,
+            1.0,
+            (0.0, 0.0),
+            [n, n],
+            "[solver]\ncontact = \"bonded\"",
+        ));
+        assert_eq!(
+            a.summary.symmetry, "quarter",
+            "centre load on an even mesh uses a quarter model"
+        );
         let err = (a.summary.V_center - exact).abs() / exact;
         eprintln!("Westergaard n = {n}: V = {:.6e}, exact {exact:.6e}, error {err:.3e}, equilibrium {:.1e}", a.summary.V_center, a.summary.resultant.relative_error);
         errors.push(err);
         // Equilibrium holds to the round-off of K's row sums: ε · κ_s |u| per node with
         // κ_s = 1/(μΔ) ≈ 3.5e6 here (H = ℓ/100), i.e. ~1e-9 relative over 6561 nodes.
-        assert!(a.summary.resultant.relative_error < 1e-8, "equilibrium at n = {n}");
+        assert!(
+            a.summary.resultant.relative_error < 1e-8,
+            "equilibrium at n = {n}"
+        );
     }
     // Bilinear Mindlin elements converge at O(h²): the error must fall by at least 3× per halving
     // (theory 4×), and at h = ℓ/8 be below 1% (edge influence ~1e-3 plus discretisation).
-    assert!(errors[2] < 0.01, "Westergaard at h = ℓ/8: relative error {:.3e} (all: {errors:?})", errors[2]);
-    assert!(errors[0] / errors[1] > 3.0 && errors[1] / errors[2] > 3.0, "O(h²) convergence to Westergaard: {errors:?}");
+    assert!(
+        errors[2] < 0.01,
+        "Westergaard at h = ℓ/8: relative error {:.3e} (all: {errors:?})",
+        errors[2]
+    );
+    assert!(
+        errors[0] / errors[1] > 3.0 && errors[1] / errors[2] > 3.0,
+        "O(h²) convergence to Westergaard: {errors:?}"
+    );
 }
 
 /// Boussinesq: uniform pressure q on a B × L rectangle of a half-space settles its corner by
@@ -65,9 +86,20 @@ fn flexible_plate_on_half_space_settles_like_boussinesq() {
         eprintln!("Boussinesq μ = {mu}: centre error {e_c:.2e}, corner error {e_k:.2e}");
         // Nodal values of the Galerkin settlement: O(h²) in the smooth interior, the corner
         // carries the log singularity of the settlement gradient, hence the looser bound.
-        assert!(e_c < 0.005, "μ = {mu}: centre V {} vs Boussinesq {centre} ({e_c:.2e})", a.summary.V_center);
-        assert!(e_k < 0.02, "μ = {mu}: corner V {} vs Boussinesq {corner_w} ({e_k:.2e})", a.summary.V_corner);
-        assert!(a.summary.resultant.relative_error < 1e-10, "equilibrium, μ = {mu}");
+        assert!(
+            e_c < 0.005,
+            "μ = {mu}: centre V {} vs Boussinesq {centre} ({e_c:.2e})",
+            a.summary.V_center
+        );
+        assert!(
+            e_k < 0.02,
+            "μ = {mu}: corner V {} vs Boussinesq {corner_w} ({e_k:.2e})",
+            a.summary.V_corner
+        );
+        assert!(
+            a.summary.resultant.relative_error < 1e-10,
+            "equilibrium, μ = {mu}"
+        );
     }
 }
 
@@ -79,7 +111,9 @@ fn half_space_compliance_is_symmetric_positive_definite() {
     use liftoff::mesh::Mesh;
     for (sx, sy) in [(false, false), (true, true), (true, false)] {
         let mesh = Mesh::new(2.0, 1.0, [12, 8], sx, sy);
-        let Compliance::Dense(t) = halfspace::compliance(&mesh, 1.0) else { panic!("dense expected") };
+        let Compliance::Dense(t) = halfspace::compliance(&mesh, 1.0) else {
+            panic!("dense expected")
+        };
         let n = t.nrows();
         let mut asym: f64 = 0.0;
         for i in 0..n {
@@ -88,10 +122,15 @@ fn half_space_compliance_is_symmetric_positive_definite() {
             }
         }
         assert!(asym == 0.0, "T symmetric ({sx}, {sy})");
-        let eig = t.self_adjoint_eigenvalues(faer::Side::Lower).expect("eigenvalues");
+        let eig = t
+            .self_adjoint_eigenvalues(faer::Side::Lower)
+            .expect("eigenvalues");
         let min = eig.iter().cloned().fold(f64::INFINITY, f64::min);
         let max = eig.iter().cloned().fold(0.0, f64::max);
-        assert!(min > 1e-6 * max, "T positive definite ({sx}, {sy}): λ_min {min:e}, λ_max {max:e}");
+        assert!(
+            min > 1e-6 * max,
+            "T positive definite ({sx}, {sy}): λ_min {min:e}, λ_max {max:e}"
+        );
     }
 }
 
@@ -101,29 +140,56 @@ fn half_space_compliance_is_symmetric_positive_definite() {
 fn reduced_models_equal_the_full_model() {
     // (foundation, load positions (s, t), expected reduction); each load set is symmetric
     // about the axes the reduction uses and not about the others.
-    let cases: [(&str, &[(f64, f64)], &str); 4] = [
+    type Case<'a> = (&'a str, &'a [(f64, f64)], &'a str);
+    let cases: [Case; 4] = [
         ("half-space", &[(0.0, 0.0)], "quarter"),
-        ("winkler", &[(0.3, 0.4), (-0.3, 0.4), (0.3, -0.4), (-0.3, -0.4)], "quarter"),
+        (
+            "winkler",
+            &[(0.3, 0.4), (-0.3, 0.4), (0.3, -0.4), (-0.3, -0.4)],
+            "quarter",
+        ),
         ("winkler", &[(0.5, 0.4), (-0.5, 0.4)], "half-x"),
-        ("half-space", &[(0.5, 0.0), (0.5, -0.6), (0.5, 0.6)], "half-y"),
+        (
+            "half-space",
+            &[(0.5, 0.0), (0.5, -0.6), (0.5, 0.6)],
+            "half-y",
+        ),
     ];
     for (found, loads, expect) in cases {
         let (s0, t0) = loads[0];
-        let mut text = point_scene(found, 1e-3, 0.002857, 0.75, s0, t0, [12, 16], "[solver]\ncontact = \"bonded\"");
+        let mut text = point_scene(
+            found,
+            1e-3,
+            0.002857,
+            0.75,
+            (s0, t0),
+            [12, 16],
+            "[solver]\ncontact = \"bonded\"",
+        );
         for (s, t) in &loads[1..] {
-            text.push_str(&format!("[[load]]\nkind = \"point\"\nx = {s}\ny = {t}\nforce = 1.0\n"));
+            text.push_str(&format!(
+                "[[load]]\nkind = \"point\"\nx = {s}\ny = {t}\nforce = 1.0\n"
+            ));
         }
         let reduced = run(&text);
         let full = run(&text.replace("[mesh]", "[mesh]\nsymmetry = \"none\""));
         assert_eq!(reduced.summary.symmetry, expect, "{found} {loads:?}");
         assert_eq!(full.summary.symmetry, "full");
-        let dv = max_abs_diff(&reduced.report.field.v, &full.report.field.v) / max_abs(&full.report.field.v);
-        let ds = max_abs_diff(&reduced.report.field.sigma, &full.report.field.sigma) / max_abs(&full.report.field.sigma);
+        let dv = max_abs_diff(&reduced.report.field.v, &full.report.field.v)
+            / max_abs(&full.report.field.v);
+        let ds = max_abs_diff(&reduced.report.field.sigma, &full.report.field.sigma)
+            / max_abs(&full.report.field.sigma);
         // Same discrete problem: only factorisation round-off differs.
-        assert!(dv < 1e-9 && ds < 1e-9, "{found} {expect}: ΔV {dv:e}, Δσ {ds:e}");
+        assert!(
+            dv < 1e-9 && ds < 1e-9,
+            "{found} {expect}: ΔV {dv:e}, Δσ {ds:e}"
+        );
         let dm = max_abs_diff(&reduced.report.elements.mxy, &full.report.elements.mxy)
             / max_abs(&full.report.elements.mx).max(1e-300);
-        assert!(dm < 1e-8, "{found} {expect}: twisting moments mirror with their sign: {dm:e}");
+        assert!(
+            dm < 1e-8,
+            "{found} {expect}: twisting moments mirror with their sign: {dm:e}"
+        );
     }
 }
 
@@ -157,12 +223,19 @@ fn physical_and_dimensionless_scenes_agree() {
         );
         let da = run(&dimless);
         let dv = max_abs_diff(&pa.report.field.v, &da.report.field.v) / max_abs(&da.report.field.v);
-        let ds = max_abs_diff(&pa.report.field.sigma, &da.report.field.sigma) / max_abs(&da.report.field.sigma);
-        assert!(dv < 1e-10 && ds < 1e-10, "{found}: physical vs dimensionless ΔV {dv:e}, Δσ {ds:e}");
+        let ds = max_abs_diff(&pa.report.field.sigma, &da.report.field.sigma)
+            / max_abs(&da.report.field.sigma);
+        assert!(
+            dv < 1e-10 && ds < 1e-10,
+            "{found}: physical vs dimensionless ΔV {dv:e}, Δσ {ds:e}"
+        );
         let d = e * h.powi(3) / (12.0 * (1.0 - nu * nu));
         let p = (3e5 + 5e4 * 2.0) / 4.0;
         let w_expected = pa.summary.V_max * p * l * l / d;
-        assert!((pa.summary.w_max - w_expected).abs() < 1e-12 * w_expected, "{found}: w = V P L² / D");
+        assert!(
+            (pa.summary.w_max - w_expected).abs() < 1e-12 * w_expected,
+            "{found}: w = V P L² / D"
+        );
     }
 }
 
@@ -172,7 +245,15 @@ fn bundled_examples_are_in_equilibrium_when_bonded() {
     for (name, _, text) in liftoff::examples::SCENES {
         let text = text.replace("contact = \"unbonded\"", "contact = \"bonded\"");
         let a = run(&text);
-        assert!(a.summary.resultant.relative_error < 1e-10, "{name}: reaction {} vs load {}", a.summary.resultant.reaction, a.summary.resultant.load);
-        assert!(a.summary.complementarity.min_gap.abs() < 1e-10 * a.summary.V_max.abs(), "{name}: bonded gap vanishes");
+        assert!(
+            a.summary.resultant.relative_error < 1e-10,
+            "{name}: reaction {} vs load {}",
+            a.summary.resultant.reaction,
+            a.summary.resultant.load
+        );
+        assert!(
+            a.summary.complementarity.min_gap.abs() < 1e-10 * a.summary.V_max.abs(),
+            "{name}: bonded gap vanishes"
+        );
     }
 }

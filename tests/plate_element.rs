@@ -17,7 +17,8 @@
 use liftoff::mesh::{Dof, DofMap, Mesh};
 use liftoff::operators::load_vector;
 use liftoff::plate::{
-    assemble_stiffness, centre_resultants, element_stiffness, ElementMatrix, ElementVector, Section, NODE_ETA, NODE_XI,
+    assemble_stiffness, centre_resultants, element_stiffness, ElementMatrix, ElementVector,
+    Section, NODE_ETA, NODE_XI,
 };
 use liftoff::scene::Load;
 use liftoff::solve::linalg::{sparse_solve, SparseCholesky};
@@ -88,7 +89,9 @@ fn solve_prescribed(k: &sprs::CsMat<f64>, f: &[f64], prescribed: &[Option<f64>])
     }
     let kr = sprs::CsMat::new((n_free, n_free), indptr, indices, data);
     let chol = SparseCholesky::analyse(&kr).expect("symbolic analysis of K_ff");
-    let llt = chol.factor(&kr, "K_ff").expect("K_ff must be positive definite once supported");
+    let llt = chol
+        .factor(&kr, "K_ff")
+        .expect("K_ff must be positive definite once supported");
     sparse_solve(&llt, &mut rhs);
     let mut u = vec![0.0; n];
     for e in 0..n {
@@ -138,12 +141,23 @@ fn check_free_element(case: &str, section: &Section, hx: f64, hy: f64) {
     // checked to sit far above it (the gap is reported in the message).
     let threshold = 1e-10 * lmax;
     let mut order: Vec<usize> = (0..12).collect();
-    order.sort_by(|&i, &j| eig.eigenvalues[i].abs().total_cmp(&eig.eigenvalues[j].abs()));
-    let zeros: Vec<usize> = order.iter().copied().filter(|&i| eig.eigenvalues[i].abs() < threshold).collect();
+    order.sort_by(|&i, &j| {
+        eig.eigenvalues[i]
+            .abs()
+            .total_cmp(&eig.eigenvalues[j].abs())
+    });
+    let zeros: Vec<usize> = order
+        .iter()
+        .copied()
+        .filter(|&i| eig.eigenvalues[i].abs() < threshold)
+        .collect();
     let smallest_nonzero = eig.eigenvalues[order[3]].abs();
     eprintln!(
         "[free element {case}] λmax = {lmax:.3e}, |λ| sorted: {:?}",
-        order.iter().map(|&i| format!("{:.2e}", eig.eigenvalues[i])).collect::<Vec<_>>()
+        order
+            .iter()
+            .map(|&i| format!("{:.2e}", eig.eigenvalues[i]))
+            .collect::<Vec<_>>()
     );
     assert_eq!(
         zeros.len(),
@@ -215,11 +229,26 @@ fn check_free_element(case: &str, section: &Section, hx: f64, hy: f64) {
 fn free_element_has_exactly_three_rigid_modes() {
     let (hx, hy) = (0.7, 0.4);
     // Thin: H = 1e-3 × the element length (κs hx²/D ≈ 3.5e6).
-    check_free_element("thin 0.7×0.4, H/hx = 1e-3", &section_of_thickness(1.0, 0.7e-3), hx, hy);
+    check_free_element(
+        "thin 0.7×0.4, H/hx = 1e-3",
+        &section_of_thickness(1.0, 0.7e-3),
+        hx,
+        hy,
+    );
     // Thick: H = half the element length.
-    check_free_element("thick 0.7×0.4, H/hx = 0.5", &section_of_thickness(1.0, 0.35), hx, hy);
+    check_free_element(
+        "thick 0.7×0.4, H/hx = 0.5",
+        &section_of_thickness(1.0, 0.35),
+        hx,
+        hy,
+    );
     // Other aspect ratio, elongated along y.
-    check_free_element("thick 0.3×1.1, H/hx = 0.3", &section_of_thickness(2.5, 0.09), 0.3, 1.1);
+    check_free_element(
+        "thick 0.3×1.1, H/hx = 0.3",
+        &section_of_thickness(2.5, 0.09),
+        0.3,
+        1.1,
+    );
 }
 
 // ------------------------------------------------------------------------------------------
@@ -248,7 +277,9 @@ fn patch_error(mesh: &Mesh, section: &Section, exact: &Field, interior_load: [f6
         let ex = exact(x, y);
         let boundary = i == 0 || j == 0 || i == mesh.nx || j == mesh.ny;
         for (d, dof) in [Dof::W, Dof::PsiX, Dof::PsiY].into_iter().enumerate() {
-            let e = dofs.eq(node, dof).expect("no symmetry constraints in a whole-plate model");
+            let e = dofs
+                .eq(node, dof)
+                .expect("no symmetry constraints in a whole-plate model");
             expect[e] = ex[d];
             if boundary {
                 prescribed[e] = Some(ex[d]);
@@ -261,15 +292,28 @@ fn patch_error(mesh: &Mesh, section: &Section, exact: &Field, interior_load: [f6
     assert!(!interior.is_empty());
     let u = solve_prescribed(&k, &f, &prescribed);
     let scale = expect.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    interior.iter().map(|&e| (u[e] - expect[e]).abs()).fold(0.0, f64::max) / scale
+    interior
+        .iter()
+        .map(|&e| (u[e] - expect[e]).abs())
+        .fold(0.0, f64::max)
+        / scale
 }
 
 /// Patch meshes: 2 × 1.5 plates with 4 × 3 (square 0.5 elements) and 4 × 5 (0.5 × 0.3) elements.
 fn patch_meshes() -> Vec<(&'static str, Mesh)> {
     vec![
-        ("2×1.5 plate, 4×3 elements", Mesh::new(2.0, 1.5, [4, 3], false, false)),
-        ("2×1.5 plate, 4×5 elements (0.5×0.3)", Mesh::new(2.0, 1.5, [4, 5], false, false)),
-        ("2×1.5 plate, 5×3 elements (0.4×0.5)", Mesh::new(2.0, 1.5, [5, 3], false, false)),
+        (
+            "2×1.5 plate, 4×3 elements",
+            Mesh::new(2.0, 1.5, [4, 3], false, false),
+        ),
+        (
+            "2×1.5 plate, 4×5 elements (0.5×0.3)",
+            Mesh::new(2.0, 1.5, [4, 5], false, false),
+        ),
+        (
+            "2×1.5 plate, 5×3 elements (0.4×0.5)",
+            Mesh::new(2.0, 1.5, [5, 3], false, false),
+        ),
     ]
 }
 
@@ -296,11 +340,20 @@ fn constant_curvature_and_twist_patch_tests() {
     let k = 0.37; // curvature / twist amplitude, arbitrary
     let cases: Vec<(&str, Box<Field>)> = vec![
         // Pure bending about y: w = ½ κ x², ψ = ∇w ⇒ γ = 0, κxx = κ.
-        ("pure bending w = ½κx²", Box::new(move |x: f64, _y: f64| [0.5 * k * x * x, k * x, 0.0])),
+        (
+            "pure bending w = ½κx²",
+            Box::new(move |x: f64, _y: f64| [0.5 * k * x * x, k * x, 0.0]),
+        ),
         // Pure bending about x: w = ½ κ y².
-        ("pure bending w = ½κy²", Box::new(move |_x: f64, y: f64| [0.5 * k * y * y, 0.0, k * y])),
+        (
+            "pure bending w = ½κy²",
+            Box::new(move |_x: f64, y: f64| [0.5 * k * y * y, 0.0, k * y]),
+        ),
         // Twist: w = κ x y, ψx = κ y, ψy = κ x.
-        ("twist w = κxy", Box::new(move |x: f64, y: f64| [k * x * y, k * y, k * x])),
+        (
+            "twist w = κxy",
+            Box::new(move |x: f64, y: f64| [k * x * y, k * y, k * x]),
+        ),
         // General Kirchhoff-compatible quadratic with rigid parts, off-centre so that nothing
         // relies on the symmetry of the patch.
         (
@@ -341,7 +394,11 @@ fn constant_curvature_and_twist_patch_tests() {
 /// that hand-computed load and checks the interior reproduces the state.
 #[test]
 fn constant_shear_patch_test() {
-    let states: [(&str, f64, f64); 3] = [("γxz only", 0.013, 0.0), ("γyz only", 0.0, -0.021), ("both", 0.017, 0.009)];
+    let states: [(&str, f64, f64); 3] = [
+        ("γxz only", 0.013, 0.0),
+        ("γyz only", 0.0, -0.021),
+        ("both", 0.017, 0.009),
+    ];
     for (mname, mesh) in patch_meshes() {
         for (sname, section, tol) in patch_sections() {
             for &(cname, gx, gy) in &states {
@@ -349,7 +406,9 @@ fn constant_shear_patch_test() {
                 let area = mesh.hx * mesh.hy;
                 let load = [0.0, -section.shear * gx * area, -section.shear * gy * area];
                 let err = patch_error(&mesh, &section, &field, load);
-                eprintln!("[patch] constant shear {cname} on {mname}, {sname}: rel. error {err:.2e}");
+                eprintln!(
+                    "[patch] constant shear {cname} on {mname}, {sname}: rel. error {err:.2e}"
+                );
                 assert!(
                     err <= tol,
                     "MITC4 constant-shear patch test ({cname}) on {mname}, {sname}: interior relative error {err:.3e} > {tol:e}"
@@ -408,7 +467,13 @@ fn centre_deflection(n: usize, edge: Edge, loading: Loading, h: f64, quarter: bo
 }
 
 /// Solve the square-plate problem of [`centre_deflection`]; returns the model and the solution.
-fn solve_square(n: usize, edge: Edge, loading: Loading, h: f64, quarter: bool) -> (Mesh, DofMap, Section, Vec<f64>) {
+fn solve_square(
+    n: usize,
+    edge: Edge,
+    loading: Loading,
+    h: f64,
+    quarter: bool,
+) -> (Mesh, DofMap, Section, Vec<f64>) {
     let a = 1.0;
     let mesh = Mesh::new(a, a, [n, n], quarter, quarter);
     assert_eq!((mesh.sym_x, mesh.sym_y), (quarter, quarter));
@@ -416,8 +481,16 @@ fn solve_square(n: usize, edge: Edge, loading: Loading, h: f64, quarter: bool) -
     let dofs = DofMap::new(&mesh);
     let k = assemble_stiffness(&mesh, &dofs, &section);
     let load = match loading {
-        Loading::Uniform => Load::Patch { x: [-0.5 * a, 0.5 * a], y: [-0.5 * a, 0.5 * a], pressure: 1.0 },
-        Loading::Central => Load::Point { x: 0.0, y: 0.0, force: 1.0 },
+        Loading::Uniform => Load::Patch {
+            x: [-0.5 * a, 0.5 * a],
+            y: [-0.5 * a, 0.5 * a],
+            pressure: 1.0,
+        },
+        Loading::Central => Load::Point {
+            x: 0.0,
+            y: 0.0,
+            force: 1.0,
+        },
     };
     let f = load_vector(&mesh, &dofs, &[load]);
     let mut prescribed = vec![None; dofs.n_eq()];
@@ -463,7 +536,11 @@ fn navier_ss_uniform() -> f64 {
     let mut s = 0.0;
     for m in (1..400).step_by(2) {
         for n in (1..400).step_by(2) {
-            let sign = if ((m + n) / 2 - 1) % 2 == 0 { 1.0 } else { -1.0 };
+            let sign = if ((m + n) / 2 - 1) % 2 == 0 {
+                1.0
+            } else {
+                -1.0
+            };
             let (mf, nf) = (m as f64, n as f64);
             s += sign / (mf * nf * (mf * mf + nf * nf).powi(2));
         }
@@ -482,7 +559,11 @@ fn levy_ss_point() -> f64 {
         let mf = m as f64;
         let al = mf * pi / 2.0;
         let c = al.cosh();
-        let bracket = if al > 300.0 { 1.0 } else { al.tanh() - al / (c * c) };
+        let bracket = if al > 300.0 {
+            1.0
+        } else {
+            al.tanh() - al / (c * c)
+        };
         s += bracket / mf.powi(3);
     }
     s / (2.0 * pi.powi(3))
@@ -498,7 +579,11 @@ fn poisson_centre() -> f64 {
     let mut s = 0.0;
     for m in (1..2000).step_by(2) {
         for n in (1..2000).step_by(2) {
-            let sign = if ((m + n) / 2 - 1) % 2 == 0 { 1.0 } else { -1.0 };
+            let sign = if ((m + n) / 2 - 1) % 2 == 0 {
+                1.0
+            } else {
+                -1.0
+            };
             let (mf, nf) = (m as f64, n as f64);
             s += sign / (mf * nf * (mf * mf + nf * nf));
         }
@@ -512,12 +597,19 @@ fn series_references_match_the_printed_tables() {
     // (T&W-K Tables 8 and 23; the Prandtl torsion value 0.0737 = 0.1406/1.9… form of the square
     // membrane): agreement to the printed rounding (half a unit in the last digit).
     let w = navier_ss_uniform();
-    assert!((w - 0.00406).abs() <= 0.000005, "Navier SS uniform series {w}");
+    assert!(
+        (w - 0.00406).abs() <= 0.000005,
+        "Navier SS uniform series {w}"
+    );
     let w = levy_ss_point();
     assert!((w - 0.01160).abs() <= 0.000005, "Lévy SS point series {w}");
     let m = poisson_centre();
     assert!((m - 0.07367).abs() <= 0.000005, "Poisson centre series {m}");
-    eprintln!("[series] Navier SS uniform {:.9}, Lévy SS point {:.9}, Poisson centre {m:.9}", navier_ss_uniform(), levy_ss_point());
+    eprintln!(
+        "[series] Navier SS uniform {:.9}, Lévy SS point {:.9}, Poisson centre {m:.9}",
+        navier_ss_uniform(),
+        levy_ss_point()
+    );
 }
 
 /// One case of the Kirchhoff convergence study.
@@ -591,8 +683,14 @@ fn thin_square_plates_converge_to_kirchhoff_without_locking() {
     ];
     let ns = [8usize, 16, 32];
     for c in &cases {
-        let w: Vec<f64> = ns.iter().map(|&n| centre_deflection(n, c.edge, c.loading, H_THIN, true)).collect();
-        let e: Vec<f64> = w.iter().map(|wi| (wi - c.reference) / c.reference).collect();
+        let w: Vec<f64> = ns
+            .iter()
+            .map(|&n| centre_deflection(n, c.edge, c.loading, H_THIN, true))
+            .collect();
+        let e: Vec<f64> = w
+            .iter()
+            .map(|wi| (wi - c.reference) / c.reference)
+            .collect();
         let e_table = (w[2] - c.table) / c.table;
         let rate = (e[1].abs() / e[2].abs()).log2();
         // Reference-free rate from successive differences (Richardson), reported only.
@@ -609,12 +707,17 @@ fn thin_square_plates_converge_to_kirchhoff_without_locking() {
         assert!(
             e_table.abs() <= c.tol32,
             "MITC4 {} at n = 32: {:.6} vs the T&W-K table {:.5} ({:+.3}%, tol {}%)",
-            c.name, w[2], c.table, 100.0 * e_table, 100.0 * c.tol32
+            c.name,
+            w[2],
+            c.table,
+            100.0 * e_table,
+            100.0 * c.tol32
         );
         assert!(
             e[0].abs() > e[1].abs() && e[1].abs() > e[2].abs(),
             "MITC4 {}: errors do not decrease monotonically under refinement: {:?}",
-            c.name, e
+            c.name,
+            e
         );
         if let Some(min_rate) = c.min_rate {
             assert!(
@@ -626,11 +729,16 @@ fn thin_square_plates_converge_to_kirchhoff_without_locking() {
         // A locking element at a/H = 1e4 would be orders of magnitude too stiff already at
         // n = 8; the 8-element error bound of 10% (uniform) / 15% (point) is loose for MITC4
         // (O(h²) ≈ a few %) but far inside any locked response.
-        let tol8 = if c.loading == Loading::Uniform { 0.10 } else { 0.15 };
+        let tol8 = if c.loading == Loading::Uniform {
+            0.10
+        } else {
+            0.15
+        };
         assert!(
             e[0].abs() <= tol8,
             "MITC4 {} at n = 8, a/H = 1e4: error {:+.2}% suggests shear locking",
-            c.name, 100.0 * e[0]
+            c.name,
+            100.0 * e[0]
         );
 
         // Shear correction: a thicker plate (a/H = 100) is more flexible, by a small amount.
@@ -638,7 +746,10 @@ fn thin_square_plates_converge_to_kirchhoff_without_locking() {
         let w_thin = w[1];
         let w_thick = centre_deflection(n, c.edge, c.loading, H_THICKER, true);
         let rel = (w_thick - w_thin) / w_thin;
-        eprintln!("[shear] {:<28} n = {n}: (w(H=1e-2) − w(H=1e-4)) / w = {:+.4e}", c.name, rel);
+        eprintln!(
+            "[shear] {:<28} n = {n}: (w(H=1e-2) − w(H=1e-4)) / w = {:+.4e}",
+            c.name, rel
+        );
         assert!(
             w_thick > w_thin,
             "MITC4 {}: thicker plate (H/a = 1e-2) is not more flexible than H/a = 1e-4: {w_thick:.8} vs {w_thin:.8}",
@@ -671,7 +782,9 @@ fn shear_correction_matches_wang_relation_for_simply_supported_plate() {
     let w_thin = centre_deflection(n, Edge::Simple, Loading::Uniform, H_THIN, true);
     let got = w_thick - w_thin;
     let ratio = got / expected;
-    eprintln!("[wang] n = {n}: Δw = {got:.6e}, Wang M_c/κs difference = {expected:.6e}, ratio {ratio:.4}");
+    eprintln!(
+        "[wang] n = {n}: Δw = {got:.6e}, Wang M_c/κs difference = {expected:.6e}, ratio {ratio:.4}"
+    );
     assert!(
         (ratio - 1.0).abs() < 0.01,
         "MITC4 simply supported square, uniform q, n = {n}: shear deflection Δw = {got:.4e} vs Wang's M/κs = {expected:.4e} (ratio {ratio:.4})"
@@ -707,7 +820,11 @@ fn navier_ss_uniform_moment() -> f64 {
     let mut s = 0.0;
     for m in (1..2000).step_by(2) {
         for n in (1..2000).step_by(2) {
-            let sign = if ((m + n) / 2 - 1) % 2 == 0 { 1.0 } else { -1.0 };
+            let sign = if ((m + n) / 2 - 1) % 2 == 0 {
+                1.0
+            } else {
+                -1.0
+            };
             let (mf, nf) = (m as f64, n as f64);
             s += sign * (mf * mf + NU * nf * nf) / (mf * nf * (mf * mf + nf * nf).powi(2));
         }
@@ -728,9 +845,13 @@ fn navier_ss_uniform_moment() -> f64 {
 #[test]
 fn centre_resultants_of_simply_supported_plate_match_navier() {
     let reference = navier_ss_uniform_moment();
-    assert!((reference - 0.0479).abs() <= 0.00005, "Navier moment series {reference}");
+    assert!(
+        (reference - 0.0479).abs() <= 0.00005,
+        "Navier moment series {reference}"
+    );
     for n in [16usize, 32] {
-        let (mesh, dofs, section, u) = solve_square(n, Edge::Simple, Loading::Uniform, H_THICKER, true);
+        let (mesh, dofs, section, u) =
+            solve_square(n, Edge::Simple, Loading::Uniform, H_THICKER, true);
         let e = mesh
             .locate(0.25 * mesh.hx, 0.25 * mesh.hy)
             .map(|(e, _, _)| e)

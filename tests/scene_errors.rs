@@ -40,32 +40,67 @@ fn bad_values_name_their_field() {
         ("thickness = 0.25", "thickness = 5.0", "plate.thickness"),
         ("length = 6.0", "length = 0.0", "plate.length"),
         ("width = 4.0", "width = nan", "plate.width"),
-        ("youngs_modulus = 30e9", "youngs_modulus = inf", "plate.youngs_modulus"),
-        ("poissons_ratio = 0.2", "poissons_ratio = 0.5", "plate.poissons_ratio"),
-        ("poissons_ratio = 0.2", "poissons_ratio = -1.0", "plate.poissons_ratio"),
+        (
+            "youngs_modulus = 30e9",
+            "youngs_modulus = inf",
+            "plate.youngs_modulus",
+        ),
+        (
+            "poissons_ratio = 0.2",
+            "poissons_ratio = 0.5",
+            "plate.poissons_ratio",
+        ),
+        (
+            "poissons_ratio = 0.2",
+            "poissons_ratio = -1.0",
+            "plate.poissons_ratio",
+        ),
         ("modulus = 5e7", "modulus = -5e7", "foundation.modulus"),
-        ("modulus = 5e7", "youngs_modulus = 5e7", "foundation.youngs_modulus"),
+        (
+            "modulus = 5e7",
+            "youngs_modulus = 5e7",
+            "foundation.youngs_modulus",
+        ),
         ("x = 1.5", "x = 3.5", "load[0].x"),
         ("y = 1.0", "y = -2.01", "load[0].y"),
         ("x = 1.5", "x = [0.0, 1.0]", "load[0].x"),
         ("force = 2.0e5", "force = 0.0", "load"),
         ("force = 2.0e5", "pressure = 2.0e5", "load[0].pressure"),
         ("elements = [8, 8]", "elements = [0, 8]", "mesh.elements[0]"),
-        ("elements = [8, 8]", "elements = [8, 100000]", "mesh.elements[1]"),
-        ("[mesh]", "[solver]\npenalty = 2.0\n[mesh]", "solver.penalty"),
-        ("[mesh]", "[solver]\nmax_iterations = 0\n[mesh]", "solver.max_iterations"),
+        (
+            "elements = [8, 8]",
+            "elements = [8, 100000]",
+            "mesh.elements[1]",
+        ),
+        (
+            "[mesh]",
+            "[solver]\npenalty = 2.0\n[mesh]",
+            "solver.penalty",
+        ),
+        (
+            "[mesh]",
+            "[solver]\nmax_iterations = 0\n[mesh]",
+            "solver.max_iterations",
+        ),
     ];
     for (from, to, field) in cases {
         assert!(BASE.contains(from), "case setup: {from}");
         let msg = rejected(&BASE.replacen(from, to, 1));
-        assert!(msg.contains(field), "`{to}` should name `{field}`, got: {msg}");
+        assert!(
+            msg.contains(field),
+            "`{to}` should name `{field}`, got: {msg}"
+        );
     }
 }
 
 #[test]
 fn unknown_keys_and_wrong_types_are_parse_errors_naming_the_key() {
     let cases: &[(&str, &str, &str)] = &[
-        ("thickness = 0.25", "thickness = 0.25\nthicknes = 0.3", "thicknes"),
+        (
+            "thickness = 0.25",
+            "thickness = 0.25\nthicknes = 0.3",
+            "thicknes",
+        ),
         ("[mesh]", "[meshes]", "meshes"),
         ("model = \"winkler\"", "model = \"pasternak\"", "pasternak"),
         ("kind = \"point\"", "kind = \"line\"", "line"),
@@ -74,7 +109,10 @@ fn unknown_keys_and_wrong_types_are_parse_errors_naming_the_key() {
     for (from, to, key) in cases {
         let text = BASE.replacen(from, to, 1);
         match Problem::from_toml(&text) {
-            Err(Error::Parse(msg)) => assert!(msg.contains(key), "`{to}`: message should mention `{key}`: {msg}"),
+            Err(Error::Parse(msg)) => assert!(
+                msg.contains(key),
+                "`{to}`: message should mention `{key}`: {msg}"
+            ),
             other => panic!("`{to}` should be a parse error, got {other:?}"),
         }
     }
@@ -86,9 +124,17 @@ fn missing_sections_are_named() {
     assert!(rejected(&no_foundation).contains("foundation"));
     let both = format!("{BASE}\n[dimensionless]\nfoundation = \"winkler\"\ngamma = 1e-3\ndelta = 1e-3\nmu = 1.0\nnu = 0.3\n");
     assert!(rejected(&both).contains("dimensionless"));
-    let no_loads: String = BASE.split("[[load]]").next().unwrap_or_default().to_string() + "[mesh]\nelements = [8, 8]\n";
+    let no_loads: String = BASE
+        .split("[[load]]")
+        .next()
+        .unwrap_or_default()
+        .to_string()
+        + "[mesh]\nelements = [8, 8]\n";
     assert!(rejected(&no_loads).contains("load"));
-    let half_space_missing = BASE.replace("model = \"winkler\"\nmodulus = 5e7", "model = \"half-space\"\nyoungs_modulus = 5e7");
+    let half_space_missing = BASE.replace(
+        "model = \"winkler\"\nmodulus = 5e7",
+        "model = \"half-space\"\nyoungs_modulus = 5e7",
+    );
     assert!(rejected(&half_space_missing).contains("foundation.poissons_ratio"));
 }
 
@@ -101,15 +147,27 @@ fn odd_meshes_fall_back_to_the_full_plate_and_say_so() {
     let p = Problem::from_toml(&text).expect("valid");
     let (mesh, notes) = liftoff::operators::plan_mesh(&p);
     assert_eq!(mesh.symmetry_name(), "half-y");
-    assert!(notes.iter().any(|n| n.contains("mesh.elements[0]") && n.contains("odd")), "{notes:?}");
+    assert!(
+        notes
+            .iter()
+            .any(|n| n.contains("mesh.elements[0]") && n.contains("odd")),
+        "{notes:?}"
+    );
 }
 
 #[test]
 fn meshes_beyond_memory_are_refused_before_allocating() {
-    let text = BASE.replace("elements = [8, 8]", "elements = [3000, 3000]\n[solver]\nmemory_limit_gib = 1.0");
+    let text = BASE.replace(
+        "elements = [8, 8]",
+        "elements = [3000, 3000]\n[solver]\nmemory_limit_gib = 1.0",
+    );
     let p = Problem::from_toml(&text).expect("valid scene");
     match liftoff::Operators::assemble(&p) {
-        Err(Error::TooLarge { need_gib, limit_gib, .. }) => assert!(need_gib > limit_gib),
+        Err(Error::TooLarge {
+            need_gib,
+            limit_gib,
+            ..
+        }) => assert!(need_gib > limit_gib),
         other => panic!("expected TooLarge, got {:?}", other.map(|_| ())),
     }
 }

@@ -13,7 +13,14 @@ fn ops_of(text: &str) -> (Problem, Operators) {
 }
 
 fn solve_both(ops: &Operators, eps: f64) -> (liftoff::Solution, liftoff::Solution) {
-    let pen = penalty::solve(ops, &penalty::PenaltySettings { epsilon: eps, max_iterations: 50 }).expect("penalty");
+    let pen = penalty::solve(
+        ops,
+        &penalty::PenaltySettings {
+            epsilon: eps,
+            max_iterations: 50,
+        },
+    )
+    .expect("penalty");
     let q = qp::solve(ops, &qp::QpSettings::default()).expect("qp");
     assert!(pen.status.converged(), "penalty: {}", pen.status.describe());
     assert!(q.status.converged(), "qp: {}", q.status.describe());
@@ -34,33 +41,65 @@ fn penalty_agrees_with_qp_on_the_paper_cases() {
     let eps = 1e-5;
     for (found, mu, gammas, el) in cases {
         for gamma in gammas {
-            let text = point_scene(found, gamma, 0.002857, mu, 0.0, 0.0, el, "");
+            let text = point_scene(found, gamma, 0.002857, mu, (0.0, 0.0), el, "");
             let (_, ops) = ops_of(&text);
             let (pen, q) = solve_both(&ops, eps);
             let scale = max_abs(&q.sigma);
             let ds = max_abs_diff(&pen.sigma, &q.sigma) / scale;
-            let dv = max_abs_diff(&ops.node_w(&pen.u), &ops.node_w(&q.u)) / max_abs(&ops.node_w(&q.u));
+            let dv =
+                max_abs_diff(&ops.node_w(&pen.u), &ops.node_w(&q.u)) / max_abs(&ops.node_w(&q.u));
             // Penalty error is O(ε̄) (paper §3; DESIGN §3): check first-order decay between ε̄
             // and ε̄/10 (ratio 10 in theory; 3–20 allows for a boundary node that changes set
             // between the two ε̄, and the QP tolerance), and that the paper's ε̄ = 1e-5 is within 1e-2 in V.
-            let fine = penalty::solve(&ops, &penalty::PenaltySettings { epsilon: eps / 10.0, max_iterations: 50 }).expect("penalty");
+            let fine = penalty::solve(
+                &ops,
+                &penalty::PenaltySettings {
+                    epsilon: eps / 10.0,
+                    max_iterations: 50,
+                },
+            )
+            .expect("penalty");
             let ds_fine = max_abs_diff(&fine.sigma, &q.sigma) / scale;
             let ratio = ds / ds_fine;
             eprintln!("{found} μ={mu} Γ={gamma:.2e}: steps {}, Δσ {ds:.2e}, ΔV {dv:.2e}, Δσ(ε̄/10) {ds_fine:.2e}", pen.iterations);
-            assert!((3.0..20.0).contains(&ratio), "{found} μ={mu} Γ={gamma}: Δσ {ds:.2e} → {ds_fine:.2e} (ratio {ratio:.1})");
-            assert!(dv < 1e-2, "{found} μ={mu} Γ={gamma}: ΔV {dv:.2e} at ε̄ = {eps}");
-            assert!(pen.iterations <= 10, "{found} μ={mu} Γ={gamma}: {} penalty steps", pen.iterations);
+            assert!(
+                (3.0..20.0).contains(&ratio),
+                "{found} μ={mu} Γ={gamma}: Δσ {ds:.2e} → {ds_fine:.2e} (ratio {ratio:.1})"
+            );
+            assert!(
+                dv < 1e-2,
+                "{found} μ={mu} Γ={gamma}: ΔV {dv:.2e} at ε̄ = {eps}"
+            );
+            assert!(
+                pen.iterations <= 10,
+                "{found} μ={mu} Γ={gamma}: {} penalty steps",
+                pen.iterations
+            );
             // QP: σ ≥ 0, g ≥ 0 and σ·g = 0 to the interior-point tolerance.
             let gmin = q.gap.iter().cloned().fold(f64::INFINITY, f64::min);
             let smin = q.sigma.iter().cloned().fold(f64::INFINITY, f64::min);
             let gscale = max_abs(&q.gap).max(1e-300);
             assert!(smin > -1e-8 * scale, "{found} Γ={gamma}: QP min σ {smin:e}");
-            assert!(gmin > -1e-8 * gscale, "{found} Γ={gamma}: QP min gap {gmin:e}");
-            let prod = q.sigma.iter().zip(&q.gap).map(|(s, g)| (s * g).abs()).fold(0.0, f64::max);
-            assert!(prod < 1e-8 * scale * gscale, "{found} Γ={gamma}: QP complementarity {prod:e}");
+            assert!(
+                gmin > -1e-8 * gscale,
+                "{found} Γ={gamma}: QP min gap {gmin:e}"
+            );
+            let prod = q
+                .sigma
+                .iter()
+                .zip(&q.gap)
+                .map(|(s, g)| (s * g).abs())
+                .fold(0.0, f64::max);
+            assert!(
+                prod < 1e-8 * scale * gscale,
+                "{found} Γ={gamma}: QP complementarity {prod:e}"
+            );
             // Penalty: the gap is ≥ 0 everywhere (σ < 0 only where springs were added).
             let pg = pen.gap.iter().cloned().fold(f64::INFINITY, f64::min);
-            assert!(pg > -1e-9 * gscale, "{found} Γ={gamma}: penalty min gap {pg:e}");
+            assert!(
+                pg > -1e-9 * gscale,
+                "{found} Γ={gamma}: penalty min gap {pg:e}"
+            );
         }
     }
 }
@@ -71,13 +110,19 @@ fn contact_region_shrinks_with_gamma_and_is_method_independent() {
     for found in ["half-space", "winkler"] {
         let mut fractions = Vec::new();
         for gamma in [0.25e-2, 0.75e-3, 0.25e-3] {
-            let text = point_scene(found, gamma, 0.002857, 1.0, 0.0, 0.0, [16, 16], "");
+            let text = point_scene(found, gamma, 0.002857, 1.0, (0.0, 0.0), [16, 16], "");
             let pen = run(&text);
             let q = run(&text.replace("[mesh]", "[solver]\nmethod = \"qp\"\n[mesh]"));
-            assert_eq!(pen.report.field.contact, q.report.field.contact, "{found} Γ={gamma}: same contact nodes");
+            assert_eq!(
+                pen.report.field.contact, q.report.field.contact,
+                "{found} Γ={gamma}: same contact nodes"
+            );
             fractions.push(q.summary.contact_fraction);
         }
-        assert!(fractions[0] > fractions[1] && fractions[1] > fractions[2], "{found}: contact shrinks with Γ: {fractions:?}");
+        assert!(
+            fractions[0] > fractions[1] && fractions[1] > fractions[2],
+            "{found}: contact shrinks with Γ: {fractions:?}"
+        );
     }
 }
 
@@ -90,15 +135,31 @@ fn bonded_equals_unbonded_under_uniform_load() {
             "[dimensionless]\nfoundation = \"{found}\"\ngamma = 1e-2\ndelta = 0.002857\nmu = 0.7\nnu = 0.3\n[[load]]\nkind = \"uniform\"\npressure = 1.0\n[mesh]\nelements = [12, 12]\n"
         );
         let b = run(&text.replace("[mesh]", "[solver]\ncontact = \"bonded\"\n[mesh]"));
-        let min_bonded = b.report.field.sigma.iter().cloned().fold(f64::INFINITY, f64::min);
-        assert!(min_bonded > 0.0, "{found}: bonded pressure is compressive ({min_bonded})");
+        let min_bonded = b
+            .report
+            .field
+            .sigma
+            .iter()
+            .cloned()
+            .fold(f64::INFINITY, f64::min);
+        assert!(
+            min_bonded > 0.0,
+            "{found}: bonded pressure is compressive ({min_bonded})"
+        );
         for method in ["penalty", "qp"] {
-            let u = run(&text.replace("[mesh]", &format!("[solver]\nmethod = \"{method}\"\n[mesh]")));
-            let ds = max_abs_diff(&u.report.field.sigma, &b.report.field.sigma) / max_abs(&b.report.field.sigma);
+            let u = run(&text.replace(
+                "[mesh]",
+                &format!("[solver]\nmethod = \"{method}\"\n[mesh]"),
+            ));
+            let ds = max_abs_diff(&u.report.field.sigma, &b.report.field.sigma)
+                / max_abs(&b.report.field.sigma);
             // Penalty: nothing is penalised, so the first (bonded) step is the answer: round-off.
             // QP: interior-point tolerance 1e-11 on a well-scaled problem.
             assert!(ds < 1e-7, "{found} {method}: unbonded = bonded, Δσ {ds:e}");
-            assert_eq!(u.summary.contact_fraction, 1.0, "{found} {method}: full contact");
+            assert_eq!(
+                u.summary.contact_fraction, 1.0,
+                "{found} {method}: full contact"
+            );
         }
     }
 }
@@ -111,11 +172,25 @@ fn bonded_equals_unbonded_under_uniform_load() {
 fn stiff_plates_follow_rigid_body_statics() {
     // Central load: rigid punch shape (flat) and full contact, both foundations.
     for found in ["winkler", "half-space"] {
-        let text = point_scene(found, 1e3, 0.002857, 1.0, 0.0, 0.0, [16, 16], "[solver]\nmethod = \"qp\"");
+        let text = point_scene(
+            found,
+            1e3,
+            0.002857,
+            1.0,
+            (0.0, 0.0),
+            [16, 16],
+            "[solver]\nmethod = \"qp\"",
+        );
         let a = run(&text);
-        assert_eq!(a.summary.contact_fraction, 1.0, "{found}: stiff plate stays in full contact");
+        assert_eq!(
+            a.summary.contact_fraction, 1.0,
+            "{found}: stiff plate stays in full contact"
+        );
         let spread = (a.summary.V_center - a.summary.V_corner).abs() / a.summary.V_center;
-        assert!(spread < 1e-2, "{found}: stiff plate settles rigidly (centre/corner spread {spread:e})");
+        assert!(
+            spread < 1e-2,
+            "{found}: stiff plate settles rigidly (centre/corner spread {spread:e})"
+        );
     }
     // Eccentric line of loads on Winkler: resultant at s = e; rigid plate contact from the far
     // edge s = −1 is lifted beyond s_c = 1 − 3(1 − e) … i.e. contact on [1 − 3(1 − e), 1].
@@ -131,7 +206,13 @@ fn stiff_plates_follow_rigid_body_statics() {
     // nodes well inside the contact zone to σ = 0 and compare with statics.
     let f = &a.report.field;
     let at = |s_target: f64| {
-        let i = (0..=f.nx).min_by(|&i, &j| (f.s[i] - s_target).abs().total_cmp(&(f.s[j] - s_target).abs())).unwrap_or(0);
+        let i = (0..=f.nx)
+            .min_by(|&i, &j| {
+                (f.s[i] - s_target)
+                    .abs()
+                    .total_cmp(&(f.s[j] - s_target).abs())
+            })
+            .unwrap_or(0);
         (f.s[i], f.sigma[i])
     };
     let (s0, p0) = at(0.3);
@@ -139,8 +220,13 @@ fn stiff_plates_follow_rigid_body_statics() {
     let sc = s0 - p0 * (s1 - s0) / (p1 - p0);
     // Residual plate flexibility (Γ = 1e3) and one element of pressure smoothing at the kink
     // bound the discrepancy well below 1%.
-    assert!((sc - boundary).abs() < 0.01, "lift-off boundary {sc:.4} vs statics {boundary:.4}");
-    let lifted = (0..=f.nx).filter(|&i| f.s[i] < boundary - 0.05).all(|i| !f.contact[i]);
+    assert!(
+        (sc - boundary).abs() < 0.01,
+        "lift-off boundary {sc:.4} vs statics {boundary:.4}"
+    );
+    let lifted = (0..=f.nx)
+        .filter(|&i| f.s[i] < boundary - 0.05)
+        .all(|i| !f.contact[i]);
     assert!(lifted, "the far edge lifts off");
 }
 
@@ -148,7 +234,8 @@ fn stiff_plates_follow_rigid_body_statics() {
 #[test]
 fn infeasible_loads_are_refused_by_both_methods() {
     for method in [MethodKind::Penalty, MethodKind::Qp] {
-        let up = point_scene("winkler", 1e-3, 0.002857, 1.0, 0.2, 0.1, [8, 8], "").replace("force = 1.0", "force = -1.0");
+        let up = point_scene("winkler", 1e-3, 0.002857, 1.0, (0.2, 0.1), [8, 8], "")
+            .replace("force = 1.0", "force = -1.0");
         let mut p = Problem::from_toml(&up).expect("scene");
         p.solver.method = method;
         match liftoff::analyse(&p) {
@@ -160,12 +247,15 @@ fn infeasible_loads_are_refused_by_both_methods() {
         // puts it at s = 2.7.
         let tip = format!(
             "{}[[load]]\nkind = \"point\"\nx = -0.9\ny = 0.0\nforce = -1.0\n",
-            point_scene("half-space", 1e-3, 0.002857, 1.0, 0.9, 0.0, [8, 8], "").replace("force = 1.0", "force = 2.0")
+            point_scene("half-space", 1e-3, 0.002857, 1.0, (0.9, 0.0), [8, 8], "")
+                .replace("force = 1.0", "force = 2.0")
         );
         let mut p = Problem::from_toml(&tip).expect("scene");
         p.solver.method = method;
         match liftoff::analyse(&p) {
-            Err(Error::Infeasible(msg)) => assert!(msg.contains("outside the plate"), "{method}: {msg}"),
+            Err(Error::Infeasible(msg)) => {
+                assert!(msg.contains("outside the plate"), "{method}: {msg}")
+            }
             Err(e) => panic!("{method}: expected Infeasible, got {e}"),
             Ok(_) => panic!("{method}: tipping load accepted"),
         }
@@ -176,7 +266,15 @@ fn infeasible_loads_are_refused_by_both_methods() {
 #[test]
 fn gauss_constraints_agree_between_methods() {
     for found in ["winkler", "half-space"] {
-        let text = point_scene(found, 0.75e-3, 0.002857, 1.0, 0.0, 0.0, [12, 12], "[solver]\nconstraint = \"gauss\"");
+        let text = point_scene(
+            found,
+            0.75e-3,
+            0.002857,
+            1.0,
+            (0.0, 0.0),
+            [12, 12],
+            "[solver]\nconstraint = \"gauss\"",
+        );
         let (p, ops) = ops_of(&text);
         assert_eq!(p.solver.constraint, ConstraintPoints::Gauss);
         let (pen, q) = solve_both(&ops, 1e-6);
@@ -184,7 +282,10 @@ fn gauss_constraints_agree_between_methods() {
         assert!(ds < 1e-4, "{found} gauss: Δσ {ds:e}");
         let gq = ops.g_times(&q.sigma);
         let gmin = gq.iter().cloned().fold(f64::INFINITY, f64::min);
-        assert!(gmin > -1e-8 * max_abs(&q.sigma), "{found}: QP σ ≥ 0 at Gauss points ({gmin:e})");
+        assert!(
+            gmin > -1e-8 * max_abs(&q.sigma),
+            "{found}: QP σ ≥ 0 at Gauss points ({gmin:e})"
+        );
     }
 }
 
@@ -198,14 +299,28 @@ fn paper_contact_radius_and_iteration_count() {
     let text = liftoff::examples::scene("paper-halfspace").expect("bundled scene");
     let a = run(text);
     let h = 1.0 / 8.0;
-    assert!((a.summary.contact_radius - 0.44).abs() < h, "contact radius {} vs the paper's 0.44", a.summary.contact_radius);
-    assert!((4..=6).contains(&a.summary.iterations), "{} penalty steps vs the paper's 4–6", a.summary.iterations);
+    assert!(
+        (a.summary.contact_radius - 0.44).abs() < h,
+        "contact radius {} vs the paper's 0.44",
+        a.summary.contact_radius
+    );
+    assert!(
+        (4..=6).contains(&a.summary.iterations),
+        "{} penalty steps vs the paper's 4–6",
+        a.summary.iterations
+    );
     let mut radii = vec![a.summary.contact_radius];
     for n in [32, 64] {
         let t = text.replace("elements = [16, 16]", &format!("elements = [{n}, {n}]"));
         radii.push(run(&t).summary.contact_radius);
     }
     eprintln!("contact radius at 16, 32, 64 elements: {radii:?}");
-    assert!(radii.iter().all(|&r| r < 0.50), "below Svec's Kirchhoff value: {radii:?}");
-    assert!((radii[2] - radii[1]).abs() < (radii[1] - radii[0]).abs() + 1e-3, "converging: {radii:?}");
+    assert!(
+        radii.iter().all(|&r| r < 0.50),
+        "below Svec's Kirchhoff value: {radii:?}"
+    );
+    assert!(
+        (radii[2] - radii[1]).abs() < (radii[1] - radii[0]).abs() + 1e-3,
+        "converging: {radii:?}"
+    );
 }

@@ -172,7 +172,10 @@ impl PairTable {
                 blocks.push(pair_block(di, dj, hx, hy));
             }
         }
-        Self { ny: full[1], blocks }
+        Self {
+            ny: full[1],
+            blocks,
+        }
     }
 
     /// Block entry for a signed offset, reflecting local nodes for negative offsets.
@@ -296,7 +299,12 @@ mod tests {
         }
         let p = element_potentials(x, y, 0.0, 1.0, 0.0, 0.5);
         for b in 0..4 {
-            assert!((p[b] - q[b]).abs() < 1e-12 * q[b].abs(), "N_{b}: {} vs {}", p[b], q[b]);
+            assert!(
+                (p[b] - q[b]).abs() < 1e-12 * q[b].abs(),
+                "N_{b}: {} vs {}",
+                p[b],
+                q[b]
+            );
         }
     }
 

@@ -88,7 +88,12 @@ pub fn nodal_areas(mesh: &Mesh) -> Vec<f64> {
 /// Consistent bilinear mass matrix of one hx × hy rectangle: ∫ N_a N_b dA.
 pub fn element_mass(hx: f64, hy: f64) -> [[f64; 4]; 4] {
     let c = hx * hy / 36.0;
-    let pattern = [[4.0, 2.0, 1.0, 2.0], [2.0, 4.0, 2.0, 1.0], [1.0, 2.0, 4.0, 2.0], [2.0, 1.0, 2.0, 4.0]];
+    let pattern = [
+        [4.0, 2.0, 1.0, 2.0],
+        [2.0, 4.0, 2.0, 1.0],
+        [1.0, 2.0, 4.0, 2.0],
+        [2.0, 1.0, 2.0, 4.0],
+    ];
     let mut m = [[0.0; 4]; 4];
     for a in 0..4 {
         for b in 0..4 {
@@ -113,7 +118,9 @@ pub fn coupling(mesh: &Mesh, dofs: &DofMap, lumped: bool) -> sprs::CsMat<f64> {
         for e in 0..mesh.n_elements() {
             let nodes = mesh.element_nodes(e);
             for (a, &na) in nodes.iter().enumerate() {
-                let Some(r) = dofs.eq(na, Dof::W) else { continue };
+                let Some(r) = dofs.eq(na, Dof::W) else {
+                    continue;
+                };
                 for (b, &nb) in nodes.iter().enumerate() {
                     tri.add_triplet(r, nb, me[a][b]);
                 }
@@ -131,7 +138,10 @@ mod tests {
     fn nodal_areas_sum_to_model_area() {
         let m = Mesh::new(2.0, 1.0, [6, 4], true, false);
         let total: f64 = nodal_areas(&m).iter().sum();
-        assert!((total - 1.0).abs() < 1e-14, "half of a 2 × 1 plate has area 1, got {total}");
+        assert!(
+            (total - 1.0).abs() < 1e-14,
+            "half of a 2 × 1 plate has area 1, got {total}"
+        );
     }
 
     #[test]
@@ -145,7 +155,10 @@ mod tests {
         let rl = &bl * &sprs::CsVec::new(ones.len(), (0..ones.len()).collect(), ones);
         for (i, v) in rc.iter() {
             let l = rl.get(i).copied().unwrap_or(0.0);
-            assert!((v - l).abs() < 1e-14, "row {i}: consistent {v} vs lumped {l}");
+            assert!(
+                (v - l).abs() < 1e-14,
+                "row {i}: consistent {v} vs lumped {l}"
+            );
         }
     }
 }

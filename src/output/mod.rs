@@ -91,15 +91,12 @@ pub fn write_all(dir: &Path, report: &Report, summary: &Summary) -> Result<Vec<P
     let p = st.path("profiles.csv");
     tables::write_profiles(&p, &report.profiles)?;
     let p = st.path("plate.vtu");
-    // PENDING-VTK vtk::write_vtu(&p, &report.field, &report.elements)?;
-    let _ = &p;
+    vtk::write_vtu(&p, &report.field, &report.elements)?;
     let title = format!("{} — {}", summary.title, summary.headline());
     let p = st.path("profiles.svg");
-    // PENDING-PLOT plot::write_profiles_svg(&p, &report.profiles, &title)?;
-    let _ = (&p, &title);
+    plot::write_profiles_svg(&p, &report.profiles, &title)?;
     let svg = st.path("contact.svg");
     let png = st.path("contact.png");
-    // PENDING-PLOT plot::write_contact_map(&svg, &png, &report.field, &title)?;
-    let _ = (&svg, &png);
+    plot::write_contact_map(&svg, &png, &report.field, &title)?;
     st.commit()
 }

@@ -99,12 +99,22 @@ pub struct Summary {
 
 impl Summary {
     /// Assemble the summary.
-    pub fn new(problem: &Problem, ops: &Operators, sol: &Solution, report: &Report, times: Times) -> Self {
+    pub fn new(
+        problem: &Problem,
+        ops: &Operators,
+        sol: &Solution,
+        report: &Report,
+        times: Times,
+    ) -> Self {
         let s = &problem.solver;
         let bonded = s.contact == crate::scene::Contact::Bonded;
         Summary {
             title: problem.title.clone(),
-            method: if bonded { "direct".into() } else { s.method.name().into() },
+            method: if bonded {
+                "direct".into()
+            } else {
+                s.method.name().into()
+            },
             contact: s.contact.name().into(),
             symmetry: ops.mesh.symmetry_name().into(),
             foundation: problem.groups.foundation.name().into(),
@@ -142,14 +152,19 @@ impl Summary {
 
     /// Pretty JSON.
     pub fn to_json(&self) -> Result<String> {
-        serde_json::to_string_pretty(self).map_err(|e| Error::numerical("summary", format!("cannot serialise: {e}")))
+        serde_json::to_string_pretty(self)
+            .map_err(|e| Error::numerical("summary", format!("cannot serialise: {e}")))
     }
 
     /// Short description for chart titles.
     pub fn headline(&self) -> String {
         format!(
             "{} {}, Γ = {:.3e}, {} × {} elements",
-            self.contact, self.foundation, self.dimensionless.gamma, self.elements[0], self.elements[1]
+            self.contact,
+            self.foundation,
+            self.dimensionless.gamma,
+            self.elements[0],
+            self.elements[1]
         )
     }
 }

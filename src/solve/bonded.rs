@@ -30,7 +30,12 @@ pub fn diagonal_positions(m: &sprs::CsMat<f64>) -> Result<Vec<usize>> {
         .map(|j| {
             (ptr[j]..ptr[j + 1])
                 .find(|&p| m.indices()[p] == j)
-                .ok_or_else(|| Error::numerical("assembly", format!("stiffness has no diagonal entry in column {j}")))
+                .ok_or_else(|| {
+                    Error::numerical(
+                        "assembly",
+                        format!("stiffness has no diagonal entry in column {j}"),
+                    )
+                })
         })
         .collect()
 }
@@ -44,7 +49,10 @@ pub fn lumped_coupling(ops: &Operators) -> Result<Vec<(usize, f64)>> {
             let mut it = col.iter();
             match (it.next(), it.next()) {
                 (Some((i, &v)), None) => Ok((i, v)),
-                _ => Err(Error::numerical("coupling", format!("pressure node {j} is not lumped"))),
+                _ => Err(Error::numerical(
+                    "coupling",
+                    format!("pressure node {j} is not lumped"),
+                )),
             }
         })
         .collect()
@@ -72,7 +80,11 @@ fn solve_springs(ops: &Operators, t: &[f64]) -> Result<Solution> {
     let t_fac = t0.elapsed().as_secs_f64() - t_an;
     let mut u = ops.f.clone();
     sparse_solve(&llt, &mut u);
-    let sigma: Vec<f64> = coupling.iter().zip(t).map(|(&(eq, b), &tj)| b * u[eq] / tj).collect();
+    let sigma: Vec<f64> = coupling
+        .iter()
+        .zip(t)
+        .map(|(&(eq, b), &tj)| b * u[eq] / tj)
+        .collect();
     let gap = discrete_gap(ops, &u, &sigma);
     finite(&u, "bonded Winkler solve")?;
     Ok(Solution {
@@ -121,7 +133,15 @@ impl SchurSystem {
         let h = ops.bt_times(&kinv.apply(&ops.f));
         let c: Vec<Vec<f64>> = ops.rigid.iter().map(|r| ops.bt_times(r)).collect();
         let rf = ops.rigid.iter().map(|r| dot(r, &ops.f)).collect();
-        Ok(Self { kinv, s, h, c, rf, time_plate, time_schur })
+        Ok(Self {
+            kinv,
+            s,
+            h,
+            c,
+            rf,
+            time_plate,
+            time_schur,
+        })
     }
 
     /// Displacements from pressures and rigid amplitudes: u = K⁻(f − Bσ) + Rα.
@@ -153,7 +173,9 @@ pub fn saddle_solve(
     llt.solve_in_place(y.as_mut());
     // (Cᵀ Y) α = Rᵀf − Cᵀ z
     let ctyy = Mat::<f64>::from_fn(m, m, |a, b| (0..n).map(|i| c[a][i] * y[(i, b)]).sum());
-    let mut rhs = Mat::<f64>::from_fn(m, 1, |a, _| rf[a] - (0..n).map(|i| c[a][i] * z[(i, 0)]).sum::<f64>());
+    let mut rhs = Mat::<f64>::from_fn(m, 1, |a, _| {
+        rf[a] - (0..n).map(|i| c[a][i] * z[(i, 0)]).sum::<f64>()
+    });
     let small = dense_cholesky(&ctyy, "rigid-body equilibrium (Cᵀ S⁻¹ C)")?;
     small.solve_in_place(rhs.as_mut());
     let alpha: Vec<f64> = (0..m).map(|a| rhs[(a, 0)]).collect();
@@ -199,7 +221,10 @@ pub fn dot(a: &[f64], b: &[f64]) -> f64 {
 /// Error if any entry is not finite.
 pub fn finite(v: &[f64], stage: &str) -> Result<()> {
     match v.iter().position(|x| !x.is_finite()) {
-        Some(i) => Err(Error::numerical(stage, format!("non-finite value at unknown {i}: the system is singular or overflowed"))),
+        Some(i) => Err(Error::numerical(
+            stage,
+            format!("non-finite value at unknown {i}: the system is singular or overflowed"),
+        )),
         None => Ok(()),
     }
 }

@@ -22,9 +22,9 @@ use faer::linalg::solvers::Solve;
 use faer::sparse::linalg::solvers::{Lu, SymbolicLu};
 use faer::Mat;
 
+use super::bonded::finite;
 use super::bonded::{diagonal_positions, lumped_coupling, saddle_solve, SchurSystem};
 use super::linalg::{dense_cholesky, faer_view, sparse_solve, SparseCholesky};
-use super::bonded::finite;
 use super::{discrete_gap, Iteration, Solution, Status};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
@@ -69,7 +69,14 @@ impl Backend {
                 let base = k.data().to_vec();
                 let coupling = lumped_coupling(ops)?;
                 let chol = SparseCholesky::analyse(&k)?;
-                Ok(Backend::Springs { k, diag, base, coupling, t: t.clone(), chol })
+                Ok(Backend::Springs {
+                    k,
+                    diag,
+                    base,
+                    coupling,
+                    t: t.clone(),
+                    chol,
+                })
             }
             (Compliance::Diagonal(t), ConstraintPoints::Gauss) => {
                 let n = ops.n_eq();
@@ -106,18 +113,35 @@ impl Backend {
                         }
                     }
                 }
-                let symbolic = SymbolicLu::try_new(faer_view(&m).symbolic())
-                    .map_err(|e| Error::numerical("penalty saddle system analysis", format!("{e:?}")))?;
-                Ok(Backend::Saddle { m, sigma_pos, t: t.clone(), symbolic })
+                let symbolic = SymbolicLu::try_new(faer_view(&m).symbolic()).map_err(|e| {
+                    Error::numerical("penalty saddle system analysis", format!("{e:?}"))
+                })?;
+                Ok(Backend::Saddle {
+                    m,
+                    sigma_pos,
+                    t: t.clone(),
+                    symbolic,
+                })
             }
             (Compliance::Dense(_), _) => Ok(Backend::Schur(Box::new(SchurSystem::new(ops)?))),
         }
     }
 
     /// Solve with extra compliance `extra` (sparse triplets (i, j, value) over σ indices).
-    fn solve(&mut self, ops: &Operators, extra: &[(usize, usize, f64)]) -> Result<(Vec<f64>, Vec<f64>, Vec<f64>)> {
+    fn solve(
+        &mut self,
+        ops: &Operators,
+        extra: &[(usize, usize, f64)],
+    ) -> Result<(Vec<f64>, Vec<f64>, Vec<f64>)> {
         match self {
-            Backend::Springs { k, diag, base, coupling, t, chol } => {
+            Backend::Springs {
+                k,
+                diag,
+                base,
+                coupling,
+                t,
+                chol,
+            } => {
                 let mut comp = t.clone();
                 for &(i, j, v) in extra {
                     if i == j {
@@ -131,10 +155,19 @@ impl Backend {
                 let llt = chol.factor(k, "penalised Winkler system")?;
                 let mut u = ops.f.clone();
                 sparse_solve(&llt, &mut u);
-                let sigma = coupling.iter().zip(&comp).map(|(&(eq, b), &c)| b * u[eq] / c).collect();
+                let sigma = coupling
+                    .iter()
+                    .zip(&comp)
+                    .map(|(&(eq, b), &c)| b * u[eq] / c)
+                    .collect();
                 Ok((u, sigma, Vec::new()))
             }
-            Backend::Saddle { m, sigma_pos, t, symbolic } => {
+            Backend::Saddle {
+                m,
+                sigma_pos,
+                t,
+                symbolic,
+            } => {
                 let n = ops.n_eq();
                 for (j, &tj) in t.iter().enumerate() {
                     if let Some(&p) = sigma_pos.get(&(j, j)) {
@@ -147,13 +180,15 @@ impl Backend {
                     }
                 }
                 for &(i, j, v) in extra {
-                    let p = sigma_pos
-                        .get(&(i, j))
-                        .ok_or_else(|| Error::numerical("penalty", "penalty entry outside the element pattern"))?;
+                    let p = sigma_pos.get(&(i, j)).ok_or_else(|| {
+                        Error::numerical("penalty", "penalty entry outside the element pattern")
+                    })?;
                     m.data_mut()[*p] -= v;
                 }
-                let lu = Lu::try_new_with_symbolic(symbolic.clone(), faer_view(m))
-                    .map_err(|e| Error::numerical("penalised saddle system (LU)", format!("{e:?}")))?;
+                let lu =
+                    Lu::try_new_with_symbolic(symbolic.clone(), faer_view(m)).map_err(|e| {
+                        Error::numerical("penalised saddle system (LU)", format!("{e:?}"))
+                    })?;
                 let total = m.rows();
                 let mut rhs = Mat::<f64>::zeros(total, 1);
                 for (i, &fi) in ops.f.iter().enumerate() {
@@ -202,7 +237,7 @@ fn penalty_entries(ops: &Operators, penalised: &[bool], epsilon: f64) -> Vec<(us
         }
     }
     let mut out: Vec<(usize, usize, f64)> = acc.into_iter().map(|((a, b), v)| (a, b, v)).collect();
-    out.sort_by(|x, y| (x.0, x.1).cmp(&(y.0, y.1)));
+    out.sort_by_key(|x| (x.0, x.1));
     out
 }
 
@@ -215,7 +250,9 @@ pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
     let mut penalised = vec![false; n_c];
     let mut seen: Vec<Vec<bool>> = vec![penalised.clone()];
     let mut history = Vec::new();
-    let mut status = Status::IterationLimit { limit: settings.max_iterations };
+    let mut status = Status::IterationLimit {
+        limit: settings.max_iterations,
+    };
     let mut last = None;
     let mut t_solves = 0.0;
     for step in 1..=settings.max_iterations {
@@ -227,8 +264,16 @@ pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
         finite(&sigma, "penalty iteration")?;
         let gs = ops.g_times(&sigma);
         let next: Vec<bool> = gs.iter().map(|&v| v < 0.0).collect();
-        let entered = next.iter().zip(&penalised).filter(|(n, p)| **n && !**p).count();
-        let left = next.iter().zip(&penalised).filter(|(n, p)| !**n && **p).count();
+        let entered = next
+            .iter()
+            .zip(&penalised)
+            .filter(|(n, p)| **n && !**p)
+            .count();
+        let left = next
+            .iter()
+            .zip(&penalised)
+            .filter(|(n, p)| !**n && **p)
+            .count();
         let count = next.iter().filter(|&&b| b).count();
         history.push(Iteration {
             step,
@@ -248,13 +293,16 @@ pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
             break;
         }
         if let Some(pos) = seen.iter().position(|s| *s == next) {
-            status = Status::Cycling { period: seen.len() - pos };
+            status = Status::Cycling {
+                period: seen.len() - pos,
+            };
             break;
         }
         seen.push(next.clone());
         penalised = next;
     }
-    let (u, sigma, alpha) = last.ok_or_else(|| Error::numerical("penalty iteration", "no iteration was run"))?;
+    let (u, sigma, alpha) =
+        last.ok_or_else(|| Error::numerical("penalty iteration", "no iteration was run"))?;
     let gap = discrete_gap(ops, &u, &sigma);
     Ok(Solution {
         method: "penalty",

@@ -17,10 +17,12 @@
 use std::time::Instant;
 
 use clarabel::algebra::CscMatrix;
-use clarabel::solver::{DefaultSettingsBuilder, DefaultSolver, IPSolver, SolverStatus, SupportedConeT};
+use clarabel::solver::{
+    DefaultSettingsBuilder, DefaultSolver, IPSolver, SolverStatus, SupportedConeT,
+};
 
-use super::bonded::SchurSystem;
 use super::bonded::finite;
+use super::bonded::SchurSystem;
 use super::{discrete_gap, Solution, Status};
 use crate::error::{Error, Result};
 use crate::operators::Operators;
@@ -105,7 +107,10 @@ pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
     let a = CscMatrix::new(n_r + n_c, n, colptr, rowval, nzval);
     let mut b = sys.rf.clone();
     b.extend(std::iter::repeat_n(0.0, n_c));
-    let cones = [SupportedConeT::ZeroConeT(n_r), SupportedConeT::NonnegativeConeT(n_c)];
+    let cones = [
+        SupportedConeT::ZeroConeT(n_r),
+        SupportedConeT::NonnegativeConeT(n_c),
+    ];
 
     let cl_settings = DefaultSettingsBuilder::default()
         .verbose(false)

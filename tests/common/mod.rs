@@ -4,7 +4,15 @@
 use liftoff::{analyse, Analysis, Problem};
 
 /// A dimensionless scene with one point load (s, t) and the given groups.
-pub fn point_scene(foundation: &str, gamma: f64, delta: f64, mu: f64, s: f64, t: f64, elements: [usize; 2], extra: &str) -> String {
+pub fn point_scene(
+    foundation: &str,
+    gamma: f64,
+    delta: f64,
+    mu: f64,
+    (s, t): (f64, f64),
+    elements: [usize; 2],
+    extra: &str,
+) -> String {
     format!(
         r#"
 [dimensionless]
@@ -28,14 +36,18 @@ elements = [{}, {}]
 
 /// Parse, validate and solve scene text, panicking with the scene's error (tests only).
 pub fn run(text: &str) -> Analysis {
-    let problem = Problem::from_toml(text).unwrap_or_else(|e| panic!("scene rejected: {e}\n{text}"));
+    let problem =
+        Problem::from_toml(text).unwrap_or_else(|e| panic!("scene rejected: {e}\n{text}"));
     analyse(&problem).unwrap_or_else(|e| panic!("solve failed: {e}\n{text}"))
 }
 
 /// Largest absolute difference of two equally long slices.
 pub fn max_abs_diff(a: &[f64], b: &[f64]) -> f64 {
     assert_eq!(a.len(), b.len());
-    a.iter().zip(b).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max)
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max)
 }
 
 /// Largest absolute value.
