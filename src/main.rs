@@ -262,7 +262,7 @@ fn print_table(problem: &Problem, s: &output::Summary) {
     let g = &s.dimensionless;
     println!("liftoff — {}", s.title);
     println!(
-        "  foundation : {} (Γ = {:.4e}, Δ = {:.4e}, μ = {}, ν = {})",
+        "  foundation : {} (Γ = {:.4e}, Δ = {:.4e}, μ = {:.4}, ν = {})",
         s.foundation, g.gamma, g.delta, g.mu, g.nu
     );
     println!(
@@ -304,7 +304,15 @@ fn print_table(problem: &Problem, s: &output::Summary) {
     );
     match problem.physical {
         Some(_) => {
-            println!("  w_max      : {:.3} mm", s.w_max * 1e3);
+            println!("  w_max      : {:.3} mm (downward)", s.w_max * 1e3);
+            println!("  pressure   : max {:.1} kPa", s.pressure_max / 1e3);
+            println!(
+                "  moments    : mx {:.1} … {:.1} kN·m/m, my {:.1} … {:.1} kN·m/m (positive: tension on the soil side)",
+                s.moments.mx[0] / 1e3,
+                s.moments.mx[1] / 1e3,
+                s.moments.my[0] / 1e3,
+                s.moments.my[1] / 1e3
+            );
             let r = &s.resultant;
             println!(
                 "  resultant  : load {:.2} kN, reaction {:.2} kN (relative error {:.1e})",

@@ -128,6 +128,20 @@ pub struct Extent {
     pub diagonal: f64,
 }
 
+/// Extreme bending moments per unit length at element centres (physical units; positive =
+/// tension on the soil side).
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct Moments {
+    /// [min, max] of mx.
+    pub mx: [f64; 2],
+    /// [min, max] of my.
+    pub my: [f64; 2],
+}
+
+fn range(v: &[f64]) -> [f64; 2] {
+    v.iter().fold([f64::INFINITY, f64::NEG_INFINITY], |[lo, hi], &x| [lo.min(x), hi.max(x)])
+}
+
 /// Load resultant and reaction.
 #[derive(Debug, Clone, Copy, Serialize)]
 pub struct Resultant {
@@ -173,6 +187,10 @@ pub struct Report {
     pub contact_radius: f64,
     /// Contact extents.
     pub contact_extent: Extent,
+    /// Largest contact pressure (physical).
+    pub pressure_max: f64,
+    /// Extreme bending moments per unit length (physical): [min, max] of mx and of my.
+    pub moments: Moments,
     /// Equilibrium.
     pub resultant: Resultant,
     /// Unilateral residuals.
@@ -329,7 +347,14 @@ pub fn report(problem: &Problem, ops: &Operators, sol: &Solution) -> Report {
         .map(|(s, g)| (mu * s * g).abs())
         .fold(0.0, f64::max);
 
+    let pressure_max = field.pressure.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+    let moments = Moments {
+        mx: range(&elements.mx),
+        my: range(&elements.my),
+    };
     Report {
+        pressure_max,
+        moments,
         field,
         elements,
         profiles,

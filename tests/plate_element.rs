@@ -432,6 +432,99 @@ fn constant_shear_patch_test() {
     }
 }
 
+/// The same patch tests on a graded (non-uniform) rectangular grid, assembled densely here from
+/// `element_stiffness` with a different hx, hy in every element. On the crate's uniform grids the
+/// symmetric interior stencil can cancel the residual of a quadratic field even for a
+/// non-conforming or locking shear interpolation, so only a graded grid makes the patch test
+/// bite on the element itself. A distributed couple m (per unit area) loads node a of each
+/// element with m hx hy / 4 (= m ∫ N_a dA).
+fn graded_patch_error(xs: &[f64], ys: &[f64], section: &Section, exact: &Field, couple: [f64; 2]) -> f64 {
+    let (nxn, nyn) = (xs.len(), ys.len());
+    let n = 3 * nxn * nyn;
+    let node = |i: usize, j: usize| i + j * nxn;
+    let mut k = nalgebra::DMatrix::<f64>::zeros(n, n);
+    let mut f = nalgebra::DVector::<f64>::zeros(n);
+    for j in 0..nyn - 1 {
+        for i in 0..nxn - 1 {
+            let (hx, hy) = (xs[i + 1] - xs[i], ys[j + 1] - ys[j]);
+            let ke = element_stiffness(section, hx, hy);
+            let nodes = [node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)];
+            for a in 0..4 {
+                f[3 * nodes[a] + 1] += couple[0] * hx * hy / 4.0;
+                f[3 * nodes[a] + 2] += couple[1] * hx * hy / 4.0;
+                for b in 0..4 {
+                    for p in 0..3 {
+                        for q in 0..3 {
+                            k[(3 * nodes[a] + p, 3 * nodes[b] + q)] += ke[(3 * a + p, 3 * b + q)];
+                        }
+                    }
+                }
+            }
+        }
+    }
+    let mut expect = nalgebra::DVector::<f64>::zeros(n);
+    let mut free = Vec::new();
+    let mut fixed = Vec::new();
+    for j in 0..nyn {
+        for i in 0..nxn {
+            let ex = exact(xs[i], ys[j]);
+            let boundary = i == 0 || j == 0 || i == nxn - 1 || j == nyn - 1;
+            for d in 0..3 {
+                let e = 3 * node(i, j) + d;
+                expect[e] = ex[d];
+                if boundary { fixed.push(e) } else { free.push(e) }
+            }
+        }
+    }
+    let kff = k.select_rows(&free).select_columns(&free);
+    let kfc = k.select_rows(&free).select_columns(&fixed);
+    let uc = expect.select_rows(&fixed);
+    let rhs = f.select_rows(&free) - kfc * uc;
+    let uf = kff.cholesky().expect("K_ff of the graded patch is positive definite").solve(&rhs);
+    let scale = expect.amax();
+    free.iter().zip(uf.iter()).map(|(&e, &v)| (v - expect[e]).abs()).fold(0.0, f64::max) / scale
+}
+
+#[test]
+fn patch_tests_on_a_graded_grid() {
+    // 5 × 4 elements on a 2 × 1.5 plate with sizes from 0.2 to 0.65 (aspect ratios 0.3–3).
+    let xs = [-1.0, -0.55, -0.35, 0.1, 0.45, 1.0];
+    let ys = [-0.75, -0.55, -0.1, 0.2, 0.75];
+    let (k1, k2, k3) = (0.8, -0.55, 0.3);
+    let bending = move |x: f64, y: f64| {
+        let (xs, ys) = (x - 0.31, y + 0.17);
+        [
+            0.2 - 0.4 * x + 0.15 * y + 0.5 * k1 * xs * xs + 0.5 * k2 * ys * ys + k3 * xs * ys,
+            -0.4 + k1 * xs + k3 * ys,
+            0.15 + k2 * ys + k3 * xs,
+        ]
+    };
+    let (gx, gy) = (0.017, -0.009);
+    let shear = move |x: f64, y: f64| [0.05 + gx * x + gy * y, 0.0, 0.0];
+    let both = move |x: f64, y: f64| {
+        let b = bending(x, y);
+        let s = shear(x, y);
+        [b[0] + s[0], b[1], b[2]]
+    };
+    for (sname, section, tol) in patch_sections() {
+        let m = [-section.shear * gx, -section.shear * gy];
+        for (cname, field, couple) in [
+            ("constant curvature + twist", &bending as &Field, [0.0, 0.0]),
+            ("pure bending w = ½κx²", &(|x: f64, _y: f64| [0.5 * 0.37 * x * x, 0.37 * x, 0.0]) as &Field, [0.0, 0.0]),
+            ("twist w = κxy", &(|x: f64, y: f64| [0.37 * x * y, 0.37 * y, 0.37 * x]) as &Field, [0.0, 0.0]),
+            ("constant shear (with its couple load)", &shear as &Field, m),
+            ("constant shear + curvature", &both as &Field, m),
+        ] {
+            let err = graded_patch_error(&xs, &ys, &section, field, couple);
+            eprintln!("[patch graded] {cname}, {sname}: rel. error {err:.2e}");
+            assert!(
+                err <= tol,
+                "MITC4 patch test '{cname}' on a graded 5×4 grid, {sname}: interior relative error {err:.3e} > {tol:e}"
+            );
+        }
+    }
+}
+
 // ------------------------------------------------------------------------------------------
 // 3. Thin square plates: convergence to the Kirchhoff solutions, no shear locking.
 // ------------------------------------------------------------------------------------------

@@ -81,6 +81,10 @@ pub struct Summary {
     pub V_center: f64,
     /// V at the corner (+L, +μL).
     pub V_corner: f64,
+    /// Largest contact pressure, physical.
+    pub pressure_max: f64,
+    /// Extreme bending moments per unit length, physical.
+    pub moments: crate::post::Moments,
     /// Contact area / plate area.
     pub contact_fraction: f64,
     /// √(contact area / π) / L.
@@ -140,6 +144,8 @@ impl Summary {
             V_max: report.v_max,
             V_center: report.v_center,
             V_corner: report.v_corner,
+            pressure_max: report.pressure_max,
+            moments: report.moments,
             contact_fraction: report.contact_fraction,
             contact_radius: report.contact_radius,
             contact_extent: report.contact_extent,
