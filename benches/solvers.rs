@@ -8,7 +8,11 @@ use liftoff::solve::{self, qp};
 use liftoff::Operators;
 
 fn paper(foundation: &str, n: usize, contact: Contact, method: MethodKind) -> Problem {
-    let name = if foundation == "winkler" { "paper-winkler" } else { "paper-halfspace" };
+    let name = if foundation == "winkler" {
+        "paper-winkler"
+    } else {
+        "paper-halfspace"
+    };
     let text = liftoff::examples::scene(name).unwrap_or_default();
     let text = text
         .replace("elements = [16, 16]", &format!("elements = [{n}, {n}]"))
@@ -54,7 +58,10 @@ fn half_space(c: &mut Criterion) {
             b.iter(|| solve::solve(ops, &p.solver).expect("solve"))
         });
         for kkt in ["faer", "qdldl"] {
-            let s = qp::QpSettings { kkt: kkt.into(), ..Default::default() };
+            let s = qp::QpSettings {
+                kkt: kkt.into(),
+                ..Default::default()
+            };
             g.bench_with_input(BenchmarkId::new(format!("qp-{kkt}"), n), &ops, |b, ops| {
                 b.iter(|| qp::solve(ops, &s).expect("solve"))
             });

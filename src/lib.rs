@@ -26,6 +26,7 @@
 #![allow(clippy::needless_range_loop)]
 
 pub mod analysis;
+pub mod compare;
 pub mod error;
 pub mod examples;
 pub mod foundation;

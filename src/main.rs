@@ -31,6 +31,8 @@ struct Cli {
 enum Command {
     /// Solve a scene file and report deflections, pressures and the contact region.
     Solve(SolveArgs),
+    /// Run the penalty method and the QP on one assembled model and compare them.
+    Compare(CompareArgs),
     /// Print a bundled example scene (without NAME: list them).
     Example {
         /// Name of the example.
@@ -92,6 +94,24 @@ struct SolveArgs {
     json: bool,
 }
 
+#[derive(clap::Args)]
+struct CompareArgs {
+    /// Scene file (TOML), or `example:NAME` for a bundled scene.
+    scene: String,
+    /// Dimensionless penalty ε̄ (overrides [solver] penalty).
+    #[arg(long)]
+    penalty: Option<f64>,
+    /// Constraint points (overrides [solver] constraint).
+    #[arg(long, value_enum)]
+    constraint: Option<CliConstraint>,
+    /// Elements over the whole plate, NX,NY (overrides [mesh] elements).
+    #[arg(long, value_parser = parse_mesh)]
+    mesh: Option<[i64; 2]>,
+    /// Directory for compare.json (default: the current directory).
+    #[arg(long, default_value = ".")]
+    out: PathBuf,
+}
+
 fn parse_mesh(s: &str) -> Result<[i64; 2], String> {
     let parts: Vec<&str> = s.split(',').map(str::trim).collect();
     if parts.len() != 2 {
@@ -109,6 +129,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Solve(args) => solve(args),
+        Command::Compare(args) => compare(args),
         Command::Example { name } => example(name.as_deref()),
     };
     match result {
@@ -244,6 +265,116 @@ fn solve(args: SolveArgs) -> Result<(), Failure> {
                 "the {} method did not converge ({}); the numbers above are not a solution",
                 summary.method, summary.status
             ),
+            code: exit::SOLVER,
+        });
+    }
+    Ok(())
+}
+
+fn compare(args: CompareArgs) -> Result<(), Failure> {
+    let (_, mut file) = read_scene(&args.scene)?;
+    if let Some(p) = args.penalty {
+        file.solver.penalty = p;
+    }
+    if let Some(c) = args.constraint {
+        file.solver.constraint = match c {
+            CliConstraint::Nodal => ConstraintPoints::Nodal,
+            CliConstraint::Gauss => ConstraintPoints::Gauss,
+        };
+    }
+    if let Some(m) = args.mesh {
+        file.mesh.elements = m;
+    }
+    let problem = file.validate().map_err(|e| with_scene(&args.scene, e))?;
+    output::prepare_dir(&args.out)?;
+    let c = liftoff::compare::compare(&problem)?;
+    let json = serde_json::to_string_pretty(&c).map_err(|e| Failure {
+        message: format!("cannot serialise compare.json: {e}"),
+        code: exit::IO,
+    })?;
+    let mut st = output::Staged::new(&args.out)?;
+    st.write_text("compare.json", &json)?;
+    st.commit()?;
+    let (p, q) = (&c.penalty, &c.qp);
+    println!("liftoff compare — {}", p.title);
+    println!(
+        "  model: {} {} × {} elements ({} pressure nodes), {} foundation, ε̄ = {:e}, {} constraints, assembled once in {:.3} s",
+        p.symmetry, p.model_elements[0], p.model_elements[1], p.nodes, p.foundation, p.dimensionless.penalty, p.constraint, c.assemble_s
+    );
+    println!("  {:<22} {:>16} {:>16}", "", "penalty", "qp");
+    let row = |name: &str, a: String, b: String| println!("  {name:<22} {a:>16} {b:>16}");
+    row(
+        "status",
+        if p.converged {
+            "converged".into()
+        } else {
+            "NOT converged".into()
+        },
+        if q.converged {
+            "converged".into()
+        } else {
+            "NOT converged".into()
+        },
+    );
+    row(
+        "iterations",
+        p.iterations.to_string(),
+        q.iterations.to_string(),
+    );
+    row(
+        "solve time (s)",
+        format!("{:.4}", p.time_s.solve),
+        format!("{:.4}", q.time_s.solve),
+    );
+    row(
+        "V_max",
+        format!("{:.6e}", p.V_max),
+        format!("{:.6e}", q.V_max),
+    );
+    row(
+        "contact fraction",
+        format!("{:.4}", p.contact_fraction),
+        format!("{:.4}", q.contact_fraction),
+    );
+    row(
+        "contact radius",
+        format!("{:.4}", p.contact_radius),
+        format!("{:.4}", q.contact_radius),
+    );
+    row(
+        "extent x",
+        format!("{:.4}", p.contact_extent.x),
+        format!("{:.4}", q.contact_extent.x),
+    );
+    row(
+        "extent y",
+        format!("{:.4}", p.contact_extent.y),
+        format!("{:.4}", q.contact_extent.y),
+    );
+    row(
+        "extent diagonal",
+        format!("{:.4}", p.contact_extent.diagonal),
+        format!("{:.4}", q.contact_extent.diagonal),
+    );
+    row(
+        "min σ",
+        format!("{:.2e}", p.complementarity.min_pressure),
+        format!("{:.2e}", q.complementarity.min_pressure),
+    );
+    row(
+        "max |σ·gap|",
+        format!("{:.2e}", p.complementarity.max_product),
+        format!("{:.2e}", q.complementarity.max_product),
+    );
+    let d = &c.differences;
+    println!(
+        "  max |Δσ| = {:.3e} ({:.2e} of max σ), max |ΔV| = {:.3e} ({:.2e} of max V), contact differs at {} node(s)",
+        d.max_abs_sigma, d.rel_sigma, d.max_abs_v, d.rel_v, d.contact_nodes_differing
+    );
+    println!("  written: {}", args.out.join("compare.json").display());
+    if !p.converged || !q.converged {
+        return Err(Failure {
+            message: "a method did not converge; see the status row".into(),
             code: exit::SOLVER,
         });
     }

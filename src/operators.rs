@@ -92,12 +92,15 @@ pub fn estimate_bytes(mesh: &Mesh, foundation: FoundationKind, dense_schur: bool
     // Sparse K, its triplets and a nested-dissection Cholesky factor (≈ 31 n log₂ n entries for a
     // 2-D grid with 3 dofs per node), 16 bytes per stored entry.
     let sparse = n_eq * 81.0 * 32.0 + 31.0 * n_eq * n.max(2.0).log2() * 16.0;
-    let dense = if foundation == FoundationKind::HalfSpace || dense_schur {
-        // T, the Schur complement and its factor, plus a 256-column block of K⁻B.
-        3.0 * n * n * 8.0 + n_eq * 256.0 * 8.0
-    } else {
-        0.0
-    };
+    // Dense operators: T, the Schur complement S, its penalised copy and factor (4 n² doubles)
+    // plus a 256-column block of K⁻B; the QP adds clarabel's KKT system (≈ 47 n² bytes).
+    let mut dense = 0.0;
+    if foundation == FoundationKind::HalfSpace || dense_schur {
+        dense += 4.0 * n * n * 8.0 + n_eq * 256.0 * 8.0;
+    }
+    if dense_schur {
+        dense += crate::solve::qp::clarabel_bytes(mesh.n_nodes());
+    }
     sparse + dense
 }
 

@@ -199,13 +199,19 @@ pub fn assemble_stiffness(mesh: &Mesh, dofs: &DofMap, section: &Section) -> sprs
             let rows = &indices[indptr[col]..indptr[col + 1]];
             for (a, ea) in eqs.iter().enumerate() {
                 let Some(row) = *ea else { continue };
-                if let Ok(k) = rows.binary_search(&row) {
+                // Element couplings are within a node's 3 × 3 neighbourhood, so always found.
+                let found = rows.binary_search(&row);
+                debug_assert!(
+                    found.is_ok(),
+                    "element coupling outside the structured pattern"
+                );
+                if let Ok(k) = found {
                     data[indptr[col] + k] += ke[(a, b)];
                 }
             }
         }
     }
-    sprs::CsMat::new((n, n), indptr, indices, data)
+    sprs::CsMat::new_csc((n, n), indptr, indices, data)
 }
 
 /// Stress resultants at an element centre, per unit length, from the element's 12 dofs.

@@ -14,8 +14,9 @@ use crate::plate::{centre_resultants, ElementVector};
 use crate::scene::{Physical, Problem};
 use crate::solve::Solution;
 
-/// A pressure counts as contact above this fraction of the peak pressure (QP interior points
-/// leave ~1e-9 on lifted nodes; penalty leaves small negative values there).
+/// A node is in contact where its pressure exceeds this fraction of the peak pressure: contact
+/// is where the soil carries load. QP solutions leave ~1e-11 of the peak on lifted nodes and
+/// penalty solutions leave small tensions there, so the threshold separates both cleanly.
 pub const CONTACT_THRESHOLD: f64 = 1e-6;
 
 /// Nodal fields over the whole plate on the (nx + 1) × (ny + 1) grid, node index i + j (nx + 1).
@@ -139,7 +140,10 @@ pub struct Moments {
 }
 
 fn range(v: &[f64]) -> [f64; 2] {
-    v.iter().fold([f64::INFINITY, f64::NEG_INFINITY], |[lo, hi], &x| [lo.min(x), hi.max(x)])
+    v.iter()
+        .fold([f64::INFINITY, f64::NEG_INFINITY], |[lo, hi], &x| {
+            [lo.min(x), hi.max(x)]
+        })
 }
 
 /// Load resultant and reaction.
@@ -347,7 +351,11 @@ pub fn report(problem: &Problem, ops: &Operators, sol: &Solution) -> Report {
         .map(|(s, g)| (mu * s * g).abs())
         .fold(0.0, f64::max);
 
-    let pressure_max = field.pressure.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+    let pressure_max = field
+        .pressure
+        .iter()
+        .cloned()
+        .fold(f64::NEG_INFINITY, f64::max);
     let moments = Moments {
         mx: range(&elements.mx),
         my: range(&elements.my),

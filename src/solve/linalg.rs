@@ -97,7 +97,7 @@ impl PlateInverse {
             }
             indptr.push(indices.len());
         }
-        let kr = sprs::CsMat::new((n_red, n_red), indptr, indices, data);
+        let kr = sprs::CsMat::new_csc((n_red, n_red), indptr, indices, data);
         let chol = SparseCholesky::analyse(&kr)?;
         let llt = chol.factor(&kr, "plate stiffness (generalised inverse)")?;
         Ok(Self { llt, map, n_red })

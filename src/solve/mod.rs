@@ -29,6 +29,14 @@ pub enum Status {
         /// The cap.
         limit: usize,
     },
+    /// The penalised set settled, but the lifted points still carry more tension than the
+    /// penalty can excuse: ε̄ is too large for this plate/foundation stiffness ratio.
+    PenaltyTooWeak {
+        /// |most negative pressure| / largest pressure at the constraint points.
+        tension_ratio: f64,
+        /// A smaller ε̄ to try.
+        suggested_penalty: f64,
+    },
     /// The external solver stopped without a solution.
     SolverFailure {
         /// The solver's own status.
@@ -52,6 +60,9 @@ impl Status {
             Status::IterationLimit { limit } => {
                 format!("not converged: the penalised set was still changing after {limit} iterations")
             }
+            Status::PenaltyTooWeak { tension_ratio, suggested_penalty } => format!(
+                "not converged: lifted points still carry a tension of {tension_ratio:.1e} × the peak pressure, so ε̄ is too large for this stiffness ratio; rerun with --penalty {suggested_penalty:.0e} or --method qp"
+            ),
             Status::SolverFailure { detail } => format!("not converged: {detail}"),
         }
     }
@@ -97,6 +108,34 @@ pub struct Solution {
 
 /// Solve with the contact law and method of the settings.
 pub fn solve(ops: &Operators, settings: &SolverSettings) -> Result<Solution> {
+    let sol = solve_unchecked(ops, settings)?;
+    check_equilibrium(ops, &sol)?;
+    Ok(sol)
+}
+
+/// Largest relative equilibrium error accepted: |∫σ − ∫q| / |∫q|. Well-posed problems reach
+/// 1e-12; thin plates on soft soil lose a few digits to K's row-sum round-off (≈ 1e-9 for
+/// H = ℓ/100); beyond 1e-6 the linear algebra has broken down.
+pub const EQUILIBRIUM_TOLERANCE: f64 = 1e-6;
+
+/// Refuse a solution whose reaction does not balance the load.
+pub fn check_equilibrium(ops: &Operators, sol: &Solution) -> Result<()> {
+    let areas = crate::foundation::nodal_areas(&ops.mesh);
+    let reaction: f64 = sol.sigma.iter().zip(&areas).map(|(s, a)| s * a).sum();
+    let load = ops.total_load();
+    let rel = (reaction - load).abs() / load.abs().max(f64::MIN_POSITIVE);
+    if rel.is_nan() || rel > EQUILIBRIUM_TOLERANCE {
+        return Err(Error::numerical(
+            format!("{} solve", sol.method),
+            format!(
+                "the reaction misses the load by {rel:.1e} (relative): the system is too badly conditioned for this plate-to-foundation stiffness ratio; try --method qp, a coarser mesh, or check the units of the moduli"
+            ),
+        ));
+    }
+    Ok(())
+}
+
+fn solve_unchecked(ops: &Operators, settings: &SolverSettings) -> Result<Solution> {
     match settings.contact {
         Contact::Bonded => bonded::solve(ops),
         Contact::Unbonded => {

@@ -1,0 +1,99 @@
+//! Both unbonded methods on one assembled `Operators`, side by side (`liftoff compare`).
+
+use std::time::Instant;
+
+use serde::Serialize;
+
+use crate::error::Result;
+use crate::output::summary::{Summary, Times};
+use crate::post;
+use crate::scene::{Contact, MethodKind, Problem};
+use crate::solve;
+use crate::Operators;
+
+/// Differences between the penalty and QP solutions.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct Differences {
+    /// max |σ_pen − σ_qp| over the nodes, dimensionless σ.
+    pub max_abs_sigma: f64,
+    /// max |V_pen − V_qp| over the nodes.
+    pub max_abs_v: f64,
+    /// max |Δσ| / max |σ_qp|.
+    pub rel_sigma: f64,
+    /// max |ΔV| / max |V_qp|.
+    pub rel_v: f64,
+    /// Nodes whose contact state differs.
+    pub contact_nodes_differing: usize,
+}
+
+/// Result of `liftoff compare` (compare.json).
+#[derive(Debug, Clone, Serialize)]
+pub struct Comparison {
+    /// Seconds spent assembling the shared operators.
+    pub assemble_s: f64,
+    /// Penalty summary.
+    pub penalty: Summary,
+    /// QP summary.
+    pub qp: Summary,
+    /// Differences.
+    pub differences: Differences,
+}
+
+/// Run both methods on the same operators.
+pub fn compare(problem: &Problem) -> Result<Comparison> {
+    let mut problem = problem.clone();
+    problem.solver.contact = Contact::Unbonded;
+    let t0 = Instant::now();
+    let ops = Operators::assemble(&Problem {
+        solver: crate::scene::SolverSettings {
+            method: MethodKind::Qp,
+            ..problem.solver
+        },
+        ..problem.clone()
+    })?;
+    let assemble_s = t0.elapsed().as_secs_f64();
+    let run = |method: MethodKind| -> Result<(Summary, post::Report)> {
+        let mut p = problem.clone();
+        p.solver.method = method;
+        let t = Instant::now();
+        let sol = solve::solve(&ops, &p.solver)?;
+        let t_solve = t.elapsed().as_secs_f64();
+        let report = post::report(&p, &ops, &sol);
+        let times = Times {
+            assemble: assemble_s,
+            solve: t_solve,
+            total: assemble_s + t.elapsed().as_secs_f64(),
+        };
+        Ok((Summary::new(&p, &ops, &sol, &report, times), report))
+    };
+    let (pen, pen_r) = run(MethodKind::Penalty)?;
+    let (qp, qp_r) = run(MethodKind::Qp)?;
+    let diff = |a: &[f64], b: &[f64]| {
+        a.iter()
+            .zip(b)
+            .map(|(x, y)| (x - y).abs())
+            .fold(0.0, f64::max)
+    };
+    let amax = |a: &[f64]| a.iter().map(|x| x.abs()).fold(0.0, f64::max);
+    let ds = diff(&pen_r.field.sigma, &qp_r.field.sigma);
+    let dv = diff(&pen_r.field.v, &qp_r.field.v);
+    let differing = pen_r
+        .field
+        .contact
+        .iter()
+        .zip(&qp_r.field.contact)
+        .filter(|(a, b)| a != b)
+        .count();
+    Ok(Comparison {
+        assemble_s,
+        differences: Differences {
+            max_abs_sigma: ds,
+            max_abs_v: dv,
+            rel_sigma: ds / amax(&qp_r.field.sigma).max(f64::MIN_POSITIVE),
+            rel_v: dv / amax(&qp_r.field.v).max(f64::MIN_POSITIVE),
+            contact_nodes_differing: differing,
+        },
+        penalty: pen,
+        qp,
+    })
+}
