@@ -217,6 +217,70 @@ impl DofMap {
     }
 }
 
+/// Nested-dissection order of the grid's nodes: split the node rectangle across its longer
+/// side by a grid line, order both halves recursively, the separating line last. For a 2-D grid
+/// this is the optimal fill-reducing order (George 1973): O(n log n) fill, O(n^1.5) work.
+pub fn nested_dissection(mesh: &Mesh) -> Vec<usize> {
+    fn recurse(mesh: &Mesh, i0: usize, i1: usize, j0: usize, j1: usize, out: &mut Vec<usize>) {
+        if i0 > i1 || j0 > j1 {
+            return;
+        }
+        let (w, h) = (i1 - i0 + 1, j1 - j0 + 1);
+        if w * h <= 16 {
+            for j in j0..=j1 {
+                for i in i0..=i1 {
+                    out.push(mesh.node(i, j));
+                }
+            }
+            return;
+        }
+        if w >= h {
+            let m = i0 + w / 2;
+            if m > i0 {
+                recurse(mesh, i0, m - 1, j0, j1, out);
+            }
+            recurse(mesh, m + 1, i1, j0, j1, out);
+            for j in j0..=j1 {
+                out.push(mesh.node(m, j));
+            }
+        } else {
+            let m = j0 + h / 2;
+            if m > j0 {
+                recurse(mesh, i0, i1, j0, m - 1, out);
+            }
+            recurse(mesh, i0, i1, m + 1, j1, out);
+            for i in i0..=i1 {
+                out.push(mesh.node(i, m));
+            }
+        }
+    }
+    let mut out = Vec::with_capacity(mesh.n_nodes());
+    recurse(mesh, 0, mesh.nx, 0, mesh.ny, &mut out);
+    out
+}
+
+/// Equations in nested-dissection order (`order[new] = old`), skipping those for which
+/// `keep` is false and renumbering the rest consecutively.
+pub fn equation_order(mesh: &Mesh, dofs: &DofMap, keep: impl Fn(usize) -> bool) -> Vec<usize> {
+    let mut renumber = vec![None; dofs.n_eq()];
+    let mut next = 0;
+    for (e, r) in renumber.iter_mut().enumerate() {
+        if keep(e) {
+            *r = Some(next);
+            next += 1;
+        }
+    }
+    let mut order = Vec::with_capacity(next);
+    for node in nested_dissection(mesh) {
+        for d in [Dof::W, Dof::PsiX, Dof::PsiY] {
+            if let Some(r) = dofs.eq(node, d).and_then(|e| renumber[e]) {
+                order.push(r);
+            }
+        }
+    }
+    order
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -251,6 +315,20 @@ mod tests {
             m.locate(1.0, 1.0).is_some(),
             "corner on the boundary is inside"
         );
+    }
+
+    #[test]
+    fn nested_dissection_is_a_permutation() {
+        for (nx, ny) in [(1, 1), (7, 3), (40, 25)] {
+            let m = Mesh::new(2.0, 1.0, [nx, ny], false, false);
+            let mut order = nested_dissection(&m);
+            assert_eq!(order.len(), m.n_nodes(), "{nx} × {ny}");
+            order.sort_unstable();
+            assert!(
+                order.iter().enumerate().all(|(i, &n)| i == n),
+                "{nx} × {ny}: every node once"
+            );
+        }
     }
 
     #[test]

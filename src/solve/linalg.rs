@@ -1,8 +1,12 @@
 //! Thin wrappers over faer: sparse Cholesky with a reusable symbolic analysis, the generalised
 //! inverse of the free plate's stiffness, and dense Cholesky.
 
-use faer::linalg::solvers::Solve;
-use faer::sparse::linalg::solvers::{Llt as SparseLlt, SymbolicLlt};
+use std::sync::Arc;
+
+use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::sparse::linalg::cholesky::{
+    factorize_symbolic_cholesky, LltRef, SymbolicCholesky, SymmetricOrdering,
+};
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
 use faer::{Mat, MatMut, Side};
 
@@ -24,42 +28,118 @@ pub fn faer_view(m: &sprs::CsMat<f64>) -> SparseColMatRef<'_, usize, f64> {
 /// Sparse LLᵀ whose symbolic analysis (ordering, elimination tree, supernodes) is done once and
 /// reused for every matrix of the same pattern.
 pub struct SparseCholesky {
-    symbolic: SymbolicLlt<usize>,
+    symbolic: Arc<SymbolicCholesky<usize>>,
+}
+
+/// A numeric sparse Cholesky factor.
+pub struct SparseFactor {
+    symbolic: Arc<SymbolicCholesky<usize>>,
+    values: Vec<f64>,
 }
 
 impl SparseCholesky {
-    /// Analyse the pattern of `m` (lower triangle read).
+    /// Analyse the pattern of `m` (lower triangle read) with faer's approximate minimum degree
+    /// ordering.
     pub fn analyse(m: &sprs::CsMat<f64>) -> Result<Self> {
-        let symbolic = SymbolicLlt::try_new(faer_view(m).symbolic(), Side::Lower)
-            .map_err(|e| Error::numerical("sparse Cholesky analysis", format!("{e:?}")))?;
-        Ok(Self { symbolic })
+        Self::analyse_ordered(m, None)
+    }
+
+    /// Analyse with a fill-reducing ordering given as `order[new] = old` (e.g. the grid's nested
+    /// dissection), or AMD when `None`.
+    pub fn analyse_ordered(m: &sprs::CsMat<f64>, order: Option<&[usize]>) -> Result<Self> {
+        let err = |e: faer::sparse::FaerError| {
+            Error::numerical("sparse Cholesky analysis", format!("{e:?}"))
+        };
+        let symbolic = match order {
+            Some(fwd) => {
+                let mut inv = vec![0usize; fwd.len()];
+                for (new, &old) in fwd.iter().enumerate() {
+                    inv[old] = new;
+                }
+                let perm = faer::perm::PermRef::new_checked(fwd, &inv, fwd.len());
+                factorize_symbolic_cholesky(
+                    faer_view(m).symbolic(),
+                    Side::Lower,
+                    SymmetricOrdering::Custom(perm),
+                    Default::default(),
+                )
+                .map_err(err)?
+            }
+            None => factorize_symbolic_cholesky(
+                faer_view(m).symbolic(),
+                Side::Lower,
+                SymmetricOrdering::Amd,
+                Default::default(),
+            )
+            .map_err(err)?,
+        };
+        Ok(Self {
+            symbolic: Arc::new(symbolic),
+        })
     }
 
     /// Numeric factorisation of a matrix with the analysed pattern.
-    pub fn factor(&self, m: &sprs::CsMat<f64>, stage: &str) -> Result<SparseLlt<usize, f64>> {
-        SparseLlt::try_new_with_symbolic(self.symbolic.clone(), faer_view(m), Side::Lower).map_err(|e| {
-            Error::numerical(
-                stage,
-                format!(
-                    "the matrix is not positive definite ({e:?}); the plate may be unsupported (check the foundation stiffness and the loads)"
-                ),
+    pub fn factor(&self, m: &sprs::CsMat<f64>, stage: &str) -> Result<SparseFactor> {
+        let par = faer::get_global_parallelism();
+        let mut values = vec![0.0; self.symbolic.len_val()];
+        let req = self
+            .symbolic
+            .factorize_numeric_llt_scratch::<f64>(par, Default::default());
+        let mut mem = MemBuffer::try_new(req)
+            .map_err(|_| Error::numerical(stage, "out of memory for the factorisation"))?;
+        self.symbolic
+            .factorize_numeric_llt(
+                &mut values,
+                faer_view(m),
+                Side::Lower,
+                Default::default(),
+                par,
+                MemStack::new(&mut mem),
+                Default::default(),
             )
+            .map_err(|e| {
+                Error::numerical(
+                    stage,
+                    format!(
+                        "the matrix is not positive definite ({e:?}); the plate may be unsupported (check the foundation stiffness and the loads)"
+                    ),
+                )
+            })?;
+        Ok(SparseFactor {
+            symbolic: self.symbolic.clone(),
+            values,
         })
     }
 }
 
+impl SparseFactor {
+    /// Solve A X = B in place for the columns of B.
+    pub fn solve_in_place(&self, rhs: MatMut<'_, f64>) {
+        let par = faer::get_global_parallelism();
+        let mut mem = MemBuffer::new(
+            self.symbolic
+                .solve_in_place_scratch::<f64>(rhs.ncols(), par),
+        );
+        LltRef::<'_, usize, f64>::new(&self.symbolic, &self.values).solve_in_place_with_conj(
+            faer::Conj::No,
+            rhs,
+            par,
+            MemStack::new(&mut mem),
+        );
+    }
+}
+
 /// Solve in place with a sparse factor, one right-hand side.
-pub fn sparse_solve(llt: &SparseLlt<usize, f64>, rhs: &mut [f64]) {
+pub fn sparse_solve(llt: &SparseFactor, rhs: &mut [f64]) {
     let n = rhs.len();
-    let mat = MatMut::from_column_major_slice_mut(rhs, n, 1);
-    llt.solve_in_place(mat);
+    llt.solve_in_place(MatMut::from_column_major_slice_mut(rhs, n, 1));
 }
 
 /// Generalised inverse K⁻ of the free (singular) plate stiffness: the equations in
 /// `Operators::fixed` are set to zero and the rest of K, which is then positive definite, is
 /// factored. K K⁻ K = K, and K⁻ r solves K u = r whenever r is orthogonal to the rigid modes.
 pub struct PlateInverse {
-    llt: SparseLlt<usize, f64>,
+    llt: SparseFactor,
     /// Reduced index of each equation (None for fixed ones).
     map: Vec<Option<usize>>,
     n_red: usize,
@@ -98,7 +178,8 @@ impl PlateInverse {
             indptr.push(indices.len());
         }
         let kr = sprs::CsMat::new_csc((n_red, n_red), indptr, indices, data);
-        let chol = SparseCholesky::analyse(&kr)?;
+        let order = crate::mesh::equation_order(&ops.mesh, &ops.dofs, |e| !fixed[e]);
+        let chol = SparseCholesky::analyse_ordered(&kr, Some(&order))?;
         let llt = chol.factor(&kr, "plate stiffness (generalised inverse)")?;
         Ok(Self { llt, map, n_red })
     }
@@ -145,9 +226,17 @@ impl PlateInverse {
     }
 }
 
-/// Dense Cholesky with a stage name in the error.
+/// Dense Cholesky with a stage name in the error. Large dense factorisations use every core
+/// (BLAS-3 work scales), whatever the global setting; sparse ones stay on the caller's setting
+/// (sequential is faster for the plate's K on two cores).
 pub fn dense_cholesky(a: &Mat<f64>, stage: &str) -> Result<faer::linalg::solvers::Llt<f64>> {
-    a.llt(Side::Lower).map_err(|e| {
+    let previous = faer::get_global_parallelism();
+    if a.nrows() >= 512 {
+        faer::set_global_parallelism(faer::Par::rayon(0));
+    }
+    let result = a.llt(Side::Lower);
+    faer::set_global_parallelism(previous);
+    result.map_err(|e| {
         Error::numerical(
             stage,
             format!("matrix is not positive definite ({e:?}): the problem is too badly conditioned at this mesh and stiffness ratio"),

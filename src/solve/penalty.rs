@@ -24,7 +24,7 @@ use faer::Mat;
 
 use super::bonded::finite;
 use super::bonded::{diagonal_positions, lumped_coupling, saddle_solve, SchurSystem};
-use super::linalg::{dense_cholesky, faer_view, sparse_solve, SparseCholesky};
+use super::linalg::{dense_cholesky, faer_view, sparse_solve, SparseCholesky, SparseFactor};
 use super::{discrete_gap, Iteration, Solution, Status};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
@@ -55,6 +55,8 @@ enum Backend {
         coupling: Vec<(usize, f64)>,
         t: Vec<f64>,
         chol: SparseCholesky,
+        /// The last numeric factor and the spring stiffness per pressure node it was made with.
+        factored: Option<(SparseFactor, Vec<f64>)>,
     },
     Saddle {
         m: sprs::CsMat<f64>,
@@ -74,7 +76,8 @@ impl Backend {
                 let diag = diagonal_positions(&k)?;
                 let base = k.data().to_vec();
                 let coupling = lumped_coupling(ops)?;
-                let chol = SparseCholesky::analyse(&k)?;
+                let order = crate::mesh::equation_order(&ops.mesh, &ops.dofs, |_| true);
+                let chol = SparseCholesky::analyse_ordered(&k, Some(&order))?;
                 Ok(Backend::Springs {
                     k,
                     diag,
@@ -82,6 +85,7 @@ impl Backend {
                     coupling,
                     t: t.clone(),
                     chol,
+                    factored: None,
                 })
             }
             (Compliance::Diagonal(t), ConstraintPoints::Gauss) => {
@@ -147,6 +151,7 @@ impl Backend {
                 coupling,
                 t,
                 chol,
+                factored,
             } => {
                 let mut comp = t.clone();
                 for &(i, j, v) in extra {
@@ -154,13 +159,34 @@ impl Backend {
                         comp[i] += v;
                     }
                 }
-                k.data_mut().copy_from_slice(base);
-                for (j, &(eq, b)) in coupling.iter().enumerate() {
-                    k.data_mut()[diag[eq]] += b * b / comp[j];
-                }
-                let llt = chol.factor(k, "penalised Winkler system")?;
-                let mut u = ops.f.clone();
-                sparse_solve(&llt, &mut u);
+                let springs: Vec<f64> = coupling
+                    .iter()
+                    .zip(&comp)
+                    .map(|(&(_, b), &c)| b * b / c)
+                    .collect();
+                let u = match factored {
+                    Some((factor, old)) if changed(old, &springs).len() <= WOODBURY_MAX_RANK => {
+                        let idx = changed(old, &springs);
+                        woodbury_solve(
+                            factor,
+                            &ops.f,
+                            &idx.iter()
+                                .map(|&j| (coupling[j].0, springs[j] - old[j]))
+                                .collect::<Vec<_>>(),
+                        )?
+                    }
+                    _ => {
+                        k.data_mut().copy_from_slice(base);
+                        for (j, &(eq, _)) in coupling.iter().enumerate() {
+                            k.data_mut()[diag[eq]] += springs[j];
+                        }
+                        let llt = chol.factor(k, "penalised Winkler system")?;
+                        let mut u = ops.f.clone();
+                        sparse_solve(&llt, &mut u);
+                        *factored = Some((llt, springs.clone()));
+                        u
+                    }
+                };
                 let sigma = coupling
                     .iter()
                     .zip(&comp)
@@ -219,31 +245,85 @@ impl Backend {
     }
 }
 
-/// Penalty compliance Σ(P)/ε̄ of a penalised set as σ-index triplets.
-fn penalty_entries(ops: &Operators, penalised: &[bool], epsilon: f64) -> Vec<(usize, usize, f64)> {
+/// Up to this many changed springs since the last factorisation, a step is solved with the old
+/// factor and a Woodbury correction (k + 1 solves with the factor and a dense k × k system)
+/// instead of a new numeric factorisation.
+pub const WOODBURY_MAX_RANK: usize = 64;
+
+/// Indices whose spring stiffness changed.
+fn changed(old: &[f64], new: &[f64]) -> Vec<usize> {
+    old.iter()
+        .zip(new)
+        .enumerate()
+        .filter(|(_, (a, b))| a != b)
+        .map(|(j, _)| j)
+        .collect()
+}
+
+/// Solve (A + Σ_j δ_j e_{i_j} e_{i_j}ᵀ) u = f from a factor of A (Sherman–Morrison–Woodbury):
+/// u = y − Z (diag(1/δ) + Uᵀ Z)⁻¹ Uᵀ y with y = A⁻¹ f, Z = A⁻¹ U.
+fn woodbury_solve(factor: &SparseFactor, f: &[f64], updates: &[(usize, f64)]) -> Result<Vec<f64>> {
+    let n = f.len();
+    let k = updates.len();
+    let mut y = f.to_vec();
+    sparse_solve(factor, &mut y);
+    if k == 0 {
+        return Ok(y);
+    }
+    let mut z = Mat::<f64>::zeros(n, k);
+    for (c, &(i, _)) in updates.iter().enumerate() {
+        z[(i, c)] = 1.0;
+    }
+    factor.solve_in_place(z.as_mut());
+    let m = Mat::<f64>::from_fn(k, k, |a, b| {
+        z[(updates[a].0, b)] + if a == b { 1.0 / updates[a].1 } else { 0.0 }
+    });
+    let mut rhs = Mat::<f64>::from_fn(k, 1, |a, _| y[updates[a].0]);
+    let lu = m.partial_piv_lu();
+    lu.solve_in_place(rhs.as_mut());
+    for (i, yi) in y.iter_mut().enumerate() {
+        let corr: f64 = (0..k).map(|c| z[(i, c)] * rhs[(c, 0)]).sum();
+        *yi -= corr;
+    }
+    if y.iter().any(|v| !v.is_finite()) {
+        return Err(Error::numerical(
+            "penalty (low-rank update)",
+            "non-finite values",
+        ));
+    }
+    Ok(y)
+}
+
+/// Rows of G as (σ index, value) lists.
+fn constraint_rows(ops: &Operators) -> Vec<Vec<(usize, f64)>> {
     let g = &ops.constraints.g;
-    let scale = ops.foundation_constant / epsilon;
-    // Rows of G as lists, from the CSC columns.
     let mut rows: Vec<Vec<(usize, f64)>> = vec![Vec::new(); g.rows()];
     for (j, col) in g.outer_iterator().enumerate() {
         for (i, &v) in col.iter() {
             rows[i].push((j, v));
         }
     }
-    let mut acc: HashMap<(usize, usize), f64> = HashMap::new();
-    for (k, &p) in penalised.iter().enumerate() {
-        if !p {
-            continue;
-        }
+    rows
+}
+
+/// Penalty compliance Σ(P)/ε̄ = (c/ε̄) Gᵀ diag(w_k [k ∈ P]) G of a penalised set as σ-index
+/// triplets (duplicates are summed by the consumers).
+fn penalty_entries(
+    ops: &Operators,
+    rows: &[Vec<(usize, f64)>],
+    penalised: &[bool],
+    epsilon: f64,
+) -> Vec<(usize, usize, f64)> {
+    let scale = ops.foundation_constant / epsilon;
+    let mut out = Vec::new();
+    for (k, _) in penalised.iter().enumerate().filter(|(_, &p)| p) {
         let w = ops.constraints.weights[k] * scale;
         for &(a, va) in &rows[k] {
             for &(b, vb) in &rows[k] {
-                *acc.entry((a, b)).or_insert(0.0) += w * va * vb;
+                out.push((a, b, w * va * vb));
             }
         }
     }
-    let mut out: Vec<(usize, usize, f64)> = acc.into_iter().map(|((a, b), v)| (a, b, v)).collect();
-    out.sort_by_key(|x| (x.0, x.1));
     out
 }
 
@@ -252,6 +332,7 @@ pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
     let t0 = Instant::now();
     let mut backend = Backend::new(ops)?;
     let t_setup = t0.elapsed().as_secs_f64();
+    let rows = constraint_rows(ops);
     let n_c = ops.constraints.g.rows();
     let mut penalised = vec![false; n_c];
     let mut seen: Vec<Vec<bool>> = vec![penalised.clone()];
@@ -262,7 +343,7 @@ pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
     let mut last = None;
     let mut t_solves = 0.0;
     for step in 1..=settings.max_iterations {
-        let extra = penalty_entries(ops, &penalised, settings.epsilon);
+        let extra = penalty_entries(ops, &rows, &penalised, settings.epsilon);
         let ts = Instant::now();
         let (u, sigma, alpha) = backend.solve(ops, &extra)?;
         t_solves += ts.elapsed().as_secs_f64();
