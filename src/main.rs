@@ -416,6 +416,15 @@ fn print_table(problem: &Problem, s: &output::Summary) {
     };
     println!("  contact    : {method}");
     println!("  status     : {} after {} step(s)", s.status, s.iterations);
+    if !s.solver_info.is_empty() {
+        let get = |k: &str| s.solver_info.get(k).copied().unwrap_or(f64::NAN);
+        println!(
+            "  clarabel   : primal residual {:.1e}, dual residual {:.1e}, duality gap {:.1e}",
+            get("primal_residual"),
+            get("dual_residual"),
+            get("duality_gap")
+        );
+    }
     if !s.history.is_empty() {
         println!("  penalty iterations (constraint points in the penalised, lifted set):");
         for it in &s.history {

@@ -73,6 +73,8 @@ pub struct Summary {
     pub time_s: Times,
     /// Phase timings of the method.
     pub method_time_s: std::collections::BTreeMap<String, f64>,
+    /// Solver diagnostics (QP: clarabel's primal and dual residuals, objective, duality gap).
+    pub solver_info: std::collections::BTreeMap<String, f64>,
     /// Largest deflection, physical.
     pub w_max: f64,
     /// Largest V.
@@ -140,6 +142,7 @@ impl Summary {
             iterations: sol.iterations,
             time_s: times,
             method_time_s: sol.timings.iter().cloned().collect(),
+            solver_info: sol.diagnostics.iter().cloned().collect(),
             w_max: report.w_max,
             V_max: report.v_max,
             V_center: report.v_center,

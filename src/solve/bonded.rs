@@ -102,6 +102,7 @@ fn solve_springs(ops: &Operators, t: &[f64]) -> Result<Solution> {
             ("factor".into(), t_fac),
             ("total".into(), t0.elapsed().as_secs_f64()),
         ],
+        diagnostics: Vec::new(),
     })
 }
 
@@ -211,6 +212,7 @@ fn solve_schur(ops: &Operators) -> Result<Solution> {
             ("factor".into(), t_fac),
             ("total".into(), t0.elapsed().as_secs_f64()),
         ],
+        diagnostics: Vec::new(),
     })
 }
 

@@ -104,6 +104,8 @@ pub struct Solution {
     pub history: Vec<Iteration>,
     /// Named timings of the method's phases, seconds.
     pub timings: Vec<(String, f64)>,
+    /// Named diagnostics of the method (clarabel's residuals and objective for the QP).
+    pub diagnostics: Vec<(String, f64)>,
 }
 
 /// Solve with the contact law and method of the settings.

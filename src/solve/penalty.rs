@@ -421,5 +421,6 @@ pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
             ("solves".into(), t_solves),
             ("total".into(), t0.elapsed().as_secs_f64()),
         ],
+        diagnostics: Vec::new(),
     })
 }

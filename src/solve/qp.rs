@@ -161,5 +161,11 @@ pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
             ("clarabel".into(), t_qp),
             ("total".into(), t0.elapsed().as_secs_f64()),
         ],
+        diagnostics: vec![
+            ("primal_residual".into(), sol.r_prim),
+            ("dual_residual".into(), sol.r_dual),
+            ("objective".into(), sol.obj_val),
+            ("duality_gap".into(), (sol.obj_val - sol.obj_val_dual).abs()),
+        ],
     })
 }
