@@ -36,6 +36,7 @@ pub mod plate;
 pub mod quadrature;
 pub mod scene;
 pub mod solve;
+pub mod study;
 
 pub use analysis::{analyse, Analysis};
 pub use error::{Error, Result};
@@ -43,4 +44,5 @@ pub use operators::Operators;
 pub use scene::Problem;
 pub use solve::{Solution, Status};
 pub mod output;
+pub mod paper;
 pub mod post;

@@ -33,6 +33,12 @@ enum Command {
     Solve(SolveArgs),
     /// Run the penalty method and the QP on one assembled model and compare them.
     Compare(CompareArgs),
+    /// Solve with the QP once and the penalty method at many ε̄: the penalty limit.
+    EpsSweep(EpsSweepArgs),
+    /// Speed against accuracy of both methods over meshes (and ε̄ for the penalty).
+    Tradeoff(TradeoffArgs),
+    /// Sweep the regimes where the methods break (Γ, ε̄, load position, μ, mesh).
+    Stability(StabilityArgs),
     /// Print a bundled example scene (without NAME: list them).
     Example {
         /// Name of the example.
@@ -112,6 +118,51 @@ struct CompareArgs {
     out: PathBuf,
 }
 
+#[derive(clap::Args)]
+struct EpsSweepArgs {
+    /// Scene file (TOML), or `example:NAME`.
+    scene: String,
+    /// Largest ε̄.
+    #[arg(long, default_value_t = 1e-1)]
+    from: f64,
+    /// Smallest ε̄.
+    #[arg(long, default_value_t = 1e-12)]
+    to: f64,
+    /// Number of ε̄ values (log-spaced).
+    #[arg(long, default_value_t = 12)]
+    points: usize,
+    /// Constraint variants: nodal, gauss or both.
+    #[arg(long, default_value = "nodal")]
+    constraints: String,
+    /// Directory for eps_sweep.csv and eps_sweep.svg.
+    #[arg(long, default_value = ".")]
+    out: PathBuf,
+}
+
+#[derive(clap::Args)]
+struct TradeoffArgs {
+    /// Scene file (TOML), or `example:NAME`.
+    scene: String,
+    /// Elements per side of the whole plate (along x; y follows μ).
+    #[arg(long, value_delimiter = ',', default_value = "8,16,32,64")]
+    meshes: Vec<usize>,
+    /// Penalty values ε̄ for the penalty method.
+    #[arg(long, value_delimiter = ',', default_value = "1e-2,1e-4,1e-6,1e-8")]
+    penalties: Vec<f64>,
+    /// Directory for tradeoff.csv and tradeoff.svg.
+    #[arg(long, default_value = ".")]
+    out: PathBuf,
+}
+
+#[derive(clap::Args)]
+struct StabilityArgs {
+    /// Base scenes (default: the paper's square plate on both foundations).
+    scenes: Vec<String>,
+    /// Directory for stability.csv and the maps.
+    #[arg(long, default_value = ".")]
+    out: PathBuf,
+}
+
 fn parse_mesh(s: &str) -> Result<[i64; 2], String> {
     let parts: Vec<&str> = s.split(',').map(str::trim).collect();
     if parts.len() != 2 {
@@ -130,6 +181,9 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Solve(args) => solve(args),
         Command::Compare(args) => compare(args),
+        Command::EpsSweep(args) => eps_sweep(args),
+        Command::Tradeoff(args) => tradeoff(args),
+        Command::Stability(args) => stability(args),
         Command::Example { name } => example(name.as_deref()),
     };
     match result {
@@ -378,6 +432,211 @@ fn compare(args: CompareArgs) -> Result<(), Failure> {
             code: exit::SOLVER,
         });
     }
+    Ok(())
+}
+
+fn progress_bar(len: u64) -> indicatif::ProgressBar {
+    let pb = indicatif::ProgressBar::new(len);
+    if let Ok(style) =
+        indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} {elapsed_precise} {msg}")
+    {
+        pb.set_style(style);
+    }
+    pb
+}
+
+fn load_problem(spec: &str) -> Result<Problem, Failure> {
+    let (_, file) = read_scene(spec)?;
+    file.validate().map_err(|e| with_scene(spec, e))
+}
+
+fn eps_sweep(args: EpsSweepArgs) -> Result<(), Failure> {
+    let bad = |m: String| Failure {
+        message: m,
+        code: exit::BAD_INPUT,
+    };
+    if !(args.from.is_finite()
+        && args.to.is_finite()
+        && args.from > 0.0
+        && args.to > 0.0
+        && args.from < 1.0)
+    {
+        return Err(bad(format!(
+            "--from and --to must be positive ε̄ values below 1, got {} and {}",
+            args.from, args.to
+        )));
+    }
+    if args.points < 2 || args.points > 200 {
+        return Err(bad(format!(
+            "--points must lie in 2..=200, got {}",
+            args.points
+        )));
+    }
+    let constraints = match args.constraints.as_str() {
+        "nodal" => vec![ConstraintPoints::Nodal],
+        "gauss" => vec![ConstraintPoints::Gauss],
+        "both" => vec![ConstraintPoints::Nodal, ConstraintPoints::Gauss],
+        other => {
+            return Err(bad(format!(
+                "--constraints takes nodal, gauss or both, got `{other}`"
+            )))
+        }
+    };
+    let problem = load_problem(&args.scene)?;
+    output::prepare_dir(&args.out)?;
+    let eps = liftoff::study::log_space(args.from, args.to, args.points);
+    let pb = progress_bar((constraints.len() * (eps.len() + 1)) as u64);
+    let window = [1e-9, 1e-5];
+    let sweep = liftoff::study::eps_sweep(&problem, &eps, &constraints, window, &mut |m: &str| {
+        pb.set_message(m.to_string());
+        pb.inc(1);
+    })?;
+    pb.finish_and_clear();
+    output::studies::write_sweep(
+        &args.out,
+        &sweep,
+        &format!("{} — penalty against QP", problem.title),
+    )?;
+    println!("liftoff eps-sweep — {}", problem.title);
+    println!(
+        "  {:<6} {:>9} {:>5} {:>17} {:>11} {:>11} {:>11} {:>9}",
+        "points", "ε̄", "steps", "status", "L2 err σ", "L2 err V", "min σ", "time (s)"
+    );
+    for r in &sweep.rows {
+        println!(
+            "  {:<6} {:>9.1e} {:>5} {:>17} {:>11.3e} {:>11.3e} {:>11.2e} {:>9.4}",
+            r.constraint,
+            r.eps,
+            r.iterations,
+            r.status,
+            r.rel_l2_sigma,
+            r.rel_l2_v,
+            r.min_pressure,
+            r.time_s
+        );
+    }
+    for (k, s) in &sweep.slopes {
+        match s {
+            Some(s) => println!(
+                "  {k}: fitted slope {s:.3} over ε̄ ∈ [{:.0e}, {:.0e}] (first order: 1)",
+                window[0], window[1]
+            ),
+            None => println!(
+                "  {k}: too few converged points in [{:.0e}, {:.0e}] to fit a slope",
+                window[0], window[1]
+            ),
+        }
+    }
+    println!(
+        "  written: eps_sweep.csv, eps_sweep.svg in {}",
+        args.out.display()
+    );
+    Ok(())
+}
+
+fn tradeoff(args: TradeoffArgs) -> Result<(), Failure> {
+    let bad = |m: String| Failure {
+        message: m,
+        code: exit::BAD_INPUT,
+    };
+    if args.meshes.is_empty() || args.meshes.iter().any(|&n| n < 2 || n > 2048) {
+        return Err(bad(
+            "--meshes takes element counts between 2 and 2048".into()
+        ));
+    }
+    if args.penalties.iter().any(|&e| !(e > 0.0 && e < 1.0)) {
+        return Err(bad("--penalties takes ε̄ values in (0, 1)".into()));
+    }
+    let problem = load_problem(&args.scene)?;
+    output::prepare_dir(&args.out)?;
+    let pb = progress_bar((1 + args.meshes.len() * (1 + args.penalties.len())) as u64);
+    let t = liftoff::study::tradeoff(&problem, &args.meshes, &args.penalties, &mut |m: &str| {
+        pb.set_message(m.to_string());
+        pb.inc(1);
+    })?;
+    pb.finish_and_clear();
+    output::studies::write_tradeoff(
+        &args.out,
+        &t,
+        &format!("{} — speed against accuracy", problem.title),
+    )?;
+    println!("liftoff tradeoff — {}", problem.title);
+    println!("  reference: {}", t.reference);
+    println!(
+        "  {:<8} {:>5} {:>9} {:>10} {:>11} {:>17} {:>7}",
+        "method", "mesh", "ε̄", "time (s)", "error V", "status", "Pareto"
+    );
+    for p in &t.points {
+        println!(
+            "  {:<8} {:>5} {:>9.0e} {:>10.4} {:>11.3e} {:>17} {:>7}",
+            p.method,
+            p.mesh,
+            p.eps,
+            p.time_s,
+            p.error,
+            p.status,
+            if p.pareto { "*" } else { "" }
+        );
+    }
+    println!(
+        "  written: tradeoff.csv, tradeoff.svg in {}",
+        args.out.display()
+    );
+    Ok(())
+}
+
+fn stability(args: StabilityArgs) -> Result<(), Failure> {
+    let scenes = if args.scenes.is_empty() {
+        vec![
+            "example:paper-winkler".to_string(),
+            "example:paper-halfspace".to_string(),
+        ]
+    } else {
+        args.scenes.clone()
+    };
+    let mut bases = Vec::new();
+    for s in &scenes {
+        bases.push(load_problem(s)?);
+    }
+    output::prepare_dir(&args.out)?;
+    let mut plan = Vec::new();
+    for base in &bases {
+        for (sweep, values) in liftoff::study::stability_sweeps(base.groups.foundation) {
+            for &v in &values {
+                for method in [MethodKind::Penalty, MethodKind::Qp] {
+                    if sweep == "penalty" && method == MethodKind::Qp {
+                        continue;
+                    }
+                    plan.push((base, sweep, v, method));
+                }
+            }
+        }
+    }
+    let pb = progress_bar(plan.len() as u64);
+    let mut rows = Vec::new();
+    for (base, sweep, v, method) in plan {
+        pb.set_message(format!(
+            "{} {sweep} = {v:.2e} ({})",
+            base.groups.foundation.name(),
+            method.name()
+        ));
+        rows.push(liftoff::study::stability_run(base, sweep, v, method));
+        pb.inc(1);
+    }
+    pb.finish_and_clear();
+    output::studies::write_stability(&args.out, &rows, "liftoff stability")?;
+    println!("liftoff stability — {} runs", rows.len());
+    let mut failures = 0;
+    for r in &rows {
+        if r.outcome != "converged" {
+            failures += 1;
+            println!(
+                "  {:<10} {:<8} {:<7} {:>9.2e}: {} — {}",
+                r.foundation, r.sweep, r.method, r.value, r.outcome, r.detail
+            );
+        }
+    }
+    println!("  {} of {} runs did not converge (listed above); written: stability.csv, stability-penalty.svg, stability-qp.svg in {}", failures, rows.len(), args.out.display());
     Ok(())
 }
 

@@ -1,0 +1,521 @@
+//! Studies of the methods: the penalty limit ε̄ → 0 against the QP (`eps-sweep`), speed against
+//! accuracy over meshes (`tradeoff`), and the regimes where each method breaks (`stability`).
+//!
+//! Every study assembles its operators once per model and hands the same value to both methods,
+//! so differences between methods are differences of method, never of discretisation.
+
+use std::time::Instant;
+
+use serde::Serialize;
+
+use crate::error::{Error, Result};
+use crate::operators::Operators;
+use crate::post;
+use crate::scene::{ConstraintPoints, Contact, MethodKind, Problem};
+use crate::solve::{penalty, qp, Solution, Status};
+
+/// Dimensionless nodal fields of a solution: (V at model nodes, σ at model nodes).
+fn fields(ops: &Operators, problem: &Problem, sol: &Solution) -> (Vec<f64>, Vec<f64>) {
+    let mu = problem.groups.mu;
+    (
+        ops.node_w(&sol.u),
+        sol.sigma.iter().map(|s| mu * s).collect(),
+    )
+}
+
+fn max_abs_diff(a: &[f64], b: &[f64]) -> f64 {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max)
+}
+
+fn rel_l2(a: &[f64], reference: &[f64]) -> f64 {
+    let num: f64 = a.iter().zip(reference).map(|(x, y)| (x - y).powi(2)).sum();
+    let den: f64 = reference.iter().map(|y| y * y).sum();
+    (num / den.max(f64::MIN_POSITIVE)).sqrt()
+}
+
+/// Short machine-readable kind of an outcome.
+pub fn status_kind(status: &Status) -> &'static str {
+    match status {
+        Status::Converged => "converged",
+        Status::Cycling { .. } => "cycling",
+        Status::IterationLimit { .. } => "iteration-limit",
+        Status::PenaltyTooWeak { .. } => "penalty-too-weak",
+        Status::SolverFailure { .. } => "solver-failure",
+    }
+}
+
+/// Short kind of an error.
+pub fn error_kind(e: &Error) -> &'static str {
+    match e {
+        Error::TooLarge { .. } => "too-large",
+        Error::Infeasible(_) => "infeasible",
+        Error::Numerical { .. } => "numerical",
+        Error::Parse(_) | Error::Invalid { .. } | Error::Unsupported(_) => "invalid",
+        Error::Io { .. } => "io",
+    }
+}
+
+/// One row of `eps_sweep.csv`.
+#[derive(Debug, Clone, Serialize)]
+pub struct SweepRow {
+    /// Constraint points.
+    pub constraint: &'static str,
+    /// ε̄.
+    pub eps: f64,
+    /// Penalty steps.
+    pub iterations: usize,
+    /// Converged (set repeated and penalty strong enough).
+    pub converged: bool,
+    /// Outcome kind.
+    pub status: String,
+    /// max |σ_pen − σ_qp| (dimensionless σ).
+    pub max_abs_sigma_err: f64,
+    /// max |V_pen − V_qp|.
+    pub max_abs_v_err: f64,
+    /// ‖σ_pen − σ_qp‖₂ / ‖σ_qp‖₂.
+    pub rel_l2_sigma: f64,
+    /// ‖V_pen − V_qp‖₂ / ‖V_qp‖₂.
+    pub rel_l2_v: f64,
+    /// Minimum σ at the constraint points.
+    pub min_pressure: f64,
+    /// Wall time of the penalty solve, s.
+    pub time_s: f64,
+}
+
+/// Result of an ε̄ sweep.
+#[derive(Debug, Clone, Serialize)]
+pub struct Sweep {
+    /// Rows, per constraint kind, ε̄ decreasing.
+    pub rows: Vec<SweepRow>,
+    /// Fitted log–log slope of rel_l2_sigma against ε̄ per constraint kind, over the fit window.
+    pub slopes: Vec<(&'static str, Option<f64>)>,
+    /// The ε̄ window [lo, hi] of the fit.
+    pub fit_window: [f64; 2],
+    /// QP time per constraint kind, s.
+    pub qp_time_s: Vec<(&'static str, f64)>,
+}
+
+/// Logarithmically spaced values from `from` to `to` (inclusive), `points` ≥ 2 of them.
+pub fn log_space(from: f64, to: f64, points: usize) -> Vec<f64> {
+    let n = points.max(2);
+    let (a, b) = (from.log10(), to.log10());
+    (0..n)
+        .map(|k| 10f64.powf(a + (b - a) * k as f64 / (n - 1) as f64))
+        .collect()
+}
+
+/// Solve the scene with the QP once and with the penalty method at each ε̄, for each constraint
+/// kind, on one assembly per kind. The slope is fitted over ε̄ ∈ `fit_window` where the penalty
+/// converged and the error is above 1e-13 (round-off).
+pub fn eps_sweep(
+    problem: &Problem,
+    epsilons: &[f64],
+    constraints: &[ConstraintPoints],
+    fit_window: [f64; 2],
+    progress: &mut dyn FnMut(&str),
+) -> Result<Sweep> {
+    let mut rows = Vec::new();
+    let mut slopes = Vec::new();
+    let mut qp_time_s = Vec::new();
+    for &kind in constraints {
+        let mut p = problem.clone();
+        p.solver.contact = Contact::Unbonded;
+        p.solver.method = MethodKind::Qp;
+        p.solver.constraint = kind;
+        let ops = Operators::assemble(&p)?;
+        crate::solve::check_feasible(&ops)?;
+        progress(&format!("{}: QP reference", kind.name()));
+        let t = Instant::now();
+        let q = qp::solve(&ops, &qp::QpSettings::default())?;
+        qp_time_s.push((kind.name(), t.elapsed().as_secs_f64()));
+        if !q.status.converged() {
+            return Err(Error::numerical("QP reference", q.status.describe()));
+        }
+        let (vq, sq) = fields(&ops, &p, &q);
+        let mut fit = Vec::new();
+        for &eps in epsilons {
+            progress(&format!("{}: penalty ε̄ = {eps:.1e}", kind.name()));
+            let t = Instant::now();
+            let r = penalty::solve(
+                &ops,
+                &penalty::PenaltySettings {
+                    epsilon: eps,
+                    max_iterations: p.solver.max_iterations,
+                },
+            );
+            let time_s = t.elapsed().as_secs_f64();
+            let row = match r {
+                Ok(sol) => {
+                    let (v, s) = fields(&ops, &p, &sol);
+                    let gs = ops.g_times(&sol.sigma);
+                    let row = SweepRow {
+                        constraint: kind.name(),
+                        eps,
+                        iterations: sol.iterations,
+                        converged: sol.status.converged(),
+                        status: status_kind(&sol.status).into(),
+                        max_abs_sigma_err: max_abs_diff(&s, &sq),
+                        max_abs_v_err: max_abs_diff(&v, &vq),
+                        rel_l2_sigma: rel_l2(&s, &sq),
+                        rel_l2_v: rel_l2(&v, &vq),
+                        min_pressure: p.groups.mu
+                            * gs.iter().cloned().fold(f64::INFINITY, f64::min),
+                        time_s,
+                    };
+                    if row.converged
+                        && eps >= fit_window[0]
+                        && eps <= fit_window[1]
+                        && row.rel_l2_sigma > 1e-13
+                    {
+                        fit.push((eps, row.rel_l2_sigma));
+                    }
+                    row
+                }
+                Err(e) => SweepRow {
+                    constraint: kind.name(),
+                    eps,
+                    iterations: 0,
+                    converged: false,
+                    status: error_kind(&e).into(),
+                    max_abs_sigma_err: f64::NAN,
+                    max_abs_v_err: f64::NAN,
+                    rel_l2_sigma: f64::NAN,
+                    rel_l2_v: f64::NAN,
+                    min_pressure: f64::NAN,
+                    time_s,
+                },
+            };
+            rows.push(row);
+        }
+        slopes.push((
+            kind.name(),
+            crate::output::charts::loglog_fit(&fit).map(|(s, _)| s),
+        ));
+    }
+    Ok(Sweep {
+        rows,
+        slopes,
+        fit_window,
+        qp_time_s,
+    })
+}
+
+/// One point of the speed–accuracy chart.
+#[derive(Debug, Clone, Serialize)]
+pub struct TradeoffPoint {
+    /// "penalty" or "qp".
+    pub method: &'static str,
+    /// Elements per side of the whole plate.
+    pub mesh: usize,
+    /// ε̄ (penalty) or NaN (QP).
+    pub eps: f64,
+    /// Assembly + solve wall time, s.
+    pub time_s: f64,
+    /// ‖V − V_ref‖ / ‖V_ref‖ (root mean square over a 21 × 21 grid of (s, t) points; a
+    /// maximum would be dominated by the logarithmic shear singularity of a Mindlin plate
+    /// under a point load, which no mesh converges).
+    pub error: f64,
+    /// Converged.
+    pub converged: bool,
+    /// Outcome kind.
+    pub status: String,
+    /// On the Pareto front (no other point both faster and more accurate).
+    pub pareto: bool,
+}
+
+/// Result of a tradeoff study.
+#[derive(Debug, Clone, Serialize)]
+pub struct Tradeoff {
+    /// Points.
+    pub points: Vec<TradeoffPoint>,
+    /// What the errors are measured against.
+    pub reference: String,
+}
+
+/// V on a 21 × 21 grid of (s, t) over the whole plate, for comparing meshes.
+fn sample_v(problem: &Problem, ops: &Operators, sol: &Solution) -> Vec<f64> {
+    let rep = post::report(problem, ops, sol);
+    let mut out = Vec::with_capacity(441);
+    for j in 0..21 {
+        for i in 0..21 {
+            let s = -1.0 + 0.1 * i as f64;
+            let t = -1.0 + 0.1 * j as f64;
+            out.push(rep.field.interpolate(&rep.field.v, s, t));
+        }
+    }
+    out
+}
+
+/// Each method at each mesh (and each ε̄ for the penalty): wall time against the error in V
+/// relative to a reference: the QP on a mesh twice the finest, or — if that does not fit in
+/// memory — the QP on the finest mesh (the `reference` field says which).
+pub fn tradeoff(
+    problem: &Problem,
+    meshes: &[usize],
+    penalties: &[f64],
+    progress: &mut dyn FnMut(&str),
+) -> Result<Tradeoff> {
+    let finest = meshes
+        .iter()
+        .copied()
+        .max()
+        .ok_or_else(|| Error::invalid("--meshes", "give at least one mesh"))?;
+    let with_mesh = |n: usize, method: MethodKind| {
+        let mut p = problem.clone();
+        p.solver.contact = Contact::Unbonded;
+        p.solver.method = method;
+        let mu = p.groups.mu;
+        let ny = ((n as f64 * mu).round() as usize).max(1);
+        let ny = if ny % 2 == 1 && n % 2 == 0 {
+            ny + 1
+        } else {
+            ny
+        };
+        p.elements = [n, ny];
+        p
+    };
+    let run_qp = |n: usize| -> Result<(Problem, Operators, Solution, f64)> {
+        let p = with_mesh(n, MethodKind::Qp);
+        let t = Instant::now();
+        let ops = Operators::assemble(&p)?;
+        let sol = crate::solve::solve(&ops, &p.solver)?;
+        Ok((p, ops, sol, t.elapsed().as_secs_f64()))
+    };
+    progress(&format!(
+        "reference: QP at {} elements per side",
+        2 * finest
+    ));
+    let (reference, v_ref) = match run_qp(2 * finest) {
+        Ok((p, ops, sol, _)) => (
+            format!(
+                "QP on {} elements per side (twice the finest mesh)",
+                2 * finest
+            ),
+            sample_v(&p, &ops, &sol),
+        ),
+        Err(Error::TooLarge { .. }) => {
+            progress(&format!(
+                "reference at {} does not fit; using the QP at {finest}",
+                2 * finest
+            ));
+            let (p, ops, sol, _) = run_qp(finest)?;
+            (format!("QP on {finest} elements per side (the finest mesh; twice it does not fit in memory)"), sample_v(&p, &ops, &sol))
+        }
+        Err(e) => return Err(e),
+    };
+    let mut points = Vec::new();
+    for &n in meshes {
+        progress(&format!("QP at {n}"));
+        match run_qp(n) {
+            Ok((p, ops, sol, time_s)) => {
+                let v = sample_v(&p, &ops, &sol);
+                points.push(TradeoffPoint {
+                    method: "qp",
+                    mesh: n,
+                    eps: f64::NAN,
+                    time_s,
+                    error: rel_l2(&v, &v_ref),
+                    converged: sol.status.converged(),
+                    status: status_kind(&sol.status).into(),
+                    pareto: false,
+                });
+            }
+            Err(e) => points.push(TradeoffPoint {
+                method: "qp",
+                mesh: n,
+                eps: f64::NAN,
+                time_s: f64::NAN,
+                error: f64::NAN,
+                converged: false,
+                status: error_kind(&e).into(),
+                pareto: false,
+            }),
+        }
+        for &eps in penalties {
+            progress(&format!("penalty at {n}, ε̄ = {eps:.0e}"));
+            let mut p = with_mesh(n, MethodKind::Penalty);
+            p.solver.penalty = eps;
+            let t = Instant::now();
+            let outcome = Operators::assemble(&p).and_then(|ops| {
+                let sol = penalty::solve(
+                    &ops,
+                    &penalty::PenaltySettings {
+                        epsilon: eps,
+                        max_iterations: p.solver.max_iterations,
+                    },
+                )?;
+                Ok((ops, sol))
+            });
+            let time_s = t.elapsed().as_secs_f64();
+            points.push(match outcome {
+                Ok((ops, sol)) => {
+                    let v = sample_v(&p, &ops, &sol);
+                    TradeoffPoint {
+                        method: "penalty",
+                        mesh: n,
+                        eps,
+                        time_s,
+                        error: rel_l2(&v, &v_ref),
+                        converged: sol.status.converged(),
+                        status: status_kind(&sol.status).into(),
+                        pareto: false,
+                    }
+                }
+                Err(e) => TradeoffPoint {
+                    method: "penalty",
+                    mesh: n,
+                    eps,
+                    time_s,
+                    error: f64::NAN,
+                    converged: false,
+                    status: error_kind(&e).into(),
+                    pareto: false,
+                },
+            });
+        }
+    }
+    let valid: Vec<usize> = (0..points.len())
+        .filter(|&i| points[i].converged && points[i].error.is_finite() && points[i].error > 0.0)
+        .collect();
+    let xy: Vec<(f64, f64)> = valid
+        .iter()
+        .map(|&i| (points[i].time_s, points[i].error))
+        .collect();
+    for k in crate::output::charts::pareto_front(&xy) {
+        points[valid[k]].pareto = true;
+    }
+    Ok(Tradeoff { points, reference })
+}
+
+/// One run of the stability sweep.
+#[derive(Debug, Clone, Serialize)]
+pub struct StabilityRow {
+    /// Which parameter is swept: gamma, penalty, position, mu or mesh.
+    pub sweep: &'static str,
+    /// Foundation.
+    pub foundation: &'static str,
+    /// Method.
+    pub method: &'static str,
+    /// Value of the swept parameter.
+    pub value: f64,
+    /// Outcome kind: converged, cycling, iteration-limit, penalty-too-weak, solver-failure,
+    /// infeasible, too-large, numerical.
+    pub outcome: String,
+    /// Iterations (penalty steps or interior-point iterations).
+    pub iterations: usize,
+    /// |reaction − load| / load.
+    pub equilibrium: f64,
+    /// Minimum σ at the constraint points.
+    pub min_pressure: f64,
+    /// Minimum nodal gap (V units).
+    pub min_gap: f64,
+    /// Contact fraction.
+    pub contact_fraction: f64,
+    /// Wall time, s.
+    pub time_s: f64,
+    /// Error or status text.
+    pub detail: String,
+}
+
+/// The sweeps of `liftoff stability`: (name, values), around the paper's base case
+/// (Γ = 0.25e-3, ε̄ = 1e-5, central point load, μ = 1, 16 × 16 elements).
+pub fn stability_sweeps(
+    foundation: crate::foundation::FoundationKind,
+) -> Vec<(&'static str, Vec<f64>)> {
+    let meshes = match foundation {
+        // Winkler: sparse penalty up to 1024 per side; the dense QP is refused beyond its limit.
+        crate::foundation::FoundationKind::Winkler => {
+            vec![8.0, 16.0, 32.0, 64.0, 128.0, 256.0, 512.0]
+        }
+        // Half-space: dense for both methods; 512 per side is beyond memory for both.
+        crate::foundation::FoundationKind::HalfSpace => vec![8.0, 16.0, 32.0, 64.0, 128.0, 512.0],
+    };
+    vec![
+        ("gamma", log_space(1e-9, 1e1, 11)),
+        ("penalty", log_space(1e-2, 1e-14, 13)),
+        ("position", vec![0.0, 0.25, 0.5, 0.75, 0.9, 1.0]),
+        ("mu", vec![0.1, 0.25, 0.5, 0.75, 1.0]),
+        ("mesh", meshes),
+    ]
+}
+
+/// Run one configuration of the stability sweep. `base` is a problem whose loads are replaced by
+/// one point load at (s, s) for the position sweep.
+pub fn stability_run(
+    base: &Problem,
+    sweep: &'static str,
+    value: f64,
+    method: MethodKind,
+) -> StabilityRow {
+    let mut p = base.clone();
+    p.solver.contact = Contact::Unbonded;
+    p.solver.method = method;
+    match sweep {
+        "gamma" => p.groups.gamma = value,
+        "penalty" => p.solver.penalty = value,
+        "position" => {
+            let mu = p.groups.mu;
+            p.loads = vec![crate::scene::Load::Point {
+                x: value,
+                y: value * mu,
+                force: 4.0,
+            }];
+        }
+        "mu" => {
+            // Keep the load where it was in (s, t): rescale y.
+            let old = p.groups.mu;
+            p.groups.mu = value;
+            for l in &mut p.loads {
+                if let crate::scene::Load::Point { y, .. } = l {
+                    *y *= value / old;
+                }
+            }
+        }
+        "mesh" => {
+            let n = value as usize;
+            p.elements = [n, n];
+        }
+        _ => {}
+    }
+    let foundation = p.groups.foundation.name();
+    let t = Instant::now();
+    let result = Operators::assemble(&p).and_then(|ops| {
+        let sol = crate::solve::solve(&ops, &p.solver)?;
+        let rep = post::report(&p, &ops, &sol);
+        Ok((sol, rep))
+    });
+    let time_s = t.elapsed().as_secs_f64();
+    match result {
+        Ok((sol, rep)) => StabilityRow {
+            sweep,
+            foundation,
+            method: method.name(),
+            value,
+            outcome: status_kind(&sol.status).into(),
+            iterations: sol.iterations,
+            equilibrium: rep.resultant.relative_error,
+            min_pressure: rep.complementarity.min_pressure,
+            min_gap: rep.complementarity.min_gap,
+            contact_fraction: rep.contact_fraction,
+            time_s,
+            detail: sol.status.describe(),
+        },
+        Err(e) => StabilityRow {
+            sweep,
+            foundation,
+            method: method.name(),
+            value,
+            outcome: error_kind(&e).into(),
+            iterations: 0,
+            equilibrium: f64::NAN,
+            min_pressure: f64::NAN,
+            min_gap: f64::NAN,
+            contact_fraction: f64::NAN,
+            time_s,
+            detail: e.to_string(),
+        },
+    }
+}
