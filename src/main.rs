@@ -539,7 +539,7 @@ fn tradeoff(args: TradeoffArgs) -> Result<(), Failure> {
         message: m,
         code: exit::BAD_INPUT,
     };
-    if args.meshes.is_empty() || args.meshes.iter().any(|&n| n < 2 || n > 2048) {
+    if args.meshes.is_empty() || args.meshes.iter().any(|n| !(2..=2048).contains(n)) {
         return Err(bad(
             "--meshes takes element counts between 2 and 2048".into()
         ));

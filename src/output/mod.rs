@@ -4,7 +4,9 @@
 //! renames them into place only when all were written, so a failed run never leaves a
 //! half-written file or a half-updated directory behind.
 
+pub mod charts;
 pub mod plot;
+pub mod studies;
 pub mod summary;
 pub mod tables;
 pub mod vtk;

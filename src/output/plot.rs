@@ -20,7 +20,7 @@ use crate::post::{FullField, Profile, CONTACT_THRESHOLD};
 static FONT_BYTES: &[u8] = include_bytes!("../../assets/DejaVuSans.ttf");
 
 /// Font family name under which the embedded font is registered.
-const FONT: &str = "sans-serif";
+pub(crate) const FONT: &str = "sans-serif";
 
 /// Size of the profile figure, pixels.
 const PROFILE_SIZE: (u32, u32) = (800, 900);
@@ -59,7 +59,7 @@ const RAMP: [(u8, u8, u8); 8] = [
 ];
 
 /// Register the embedded font with plotters once; later calls return the first outcome.
-fn ensure_font(path: &Path) -> Result<()> {
+pub(crate) fn ensure_font(path: &Path) -> Result<()> {
     static REGISTERED: OnceLock<bool> = OnceLock::new();
     let ok = *REGISTERED.get_or_init(|| {
         plotters::style::register_font(FONT, FontStyle::Normal, FONT_BYTES).is_ok()
@@ -75,7 +75,7 @@ fn ensure_font(path: &Path) -> Result<()> {
 }
 
 /// Wrap a plotting-library failure as an I/O error on `path`.
-fn plot_error(path: &Path, e: impl std::fmt::Display) -> Error {
+pub(crate) fn plot_error(path: &Path, e: impl std::fmt::Display) -> Error {
     Error::Io {
         path: path.display().to_string(),
         source: std::io::Error::other(e.to_string()),
@@ -169,7 +169,7 @@ fn series(profile: &Profile, value: fn(&crate::post::ProfilePoint) -> f64) -> Ve
 
 /// Caption font size that fits `title` on one line of a `width`-pixel chart (DejaVu Sans
 /// averages about 0.56 em per character), between 10 and 24 px.
-fn caption_size(title: &str, width: u32) -> u32 {
+pub(crate) fn caption_size(title: &str, width: u32) -> u32 {
     let chars = title.chars().count().max(1) as f64;
     (0.92 * f64::from(width) / (0.56 * chars)).clamp(10.0, 24.0) as u32
 }

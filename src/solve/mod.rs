@@ -34,6 +34,8 @@ pub enum Status {
     PenaltyTooWeak {
         /// |most negative pressure| / largest pressure at the constraint points.
         tension_ratio: f64,
+        /// Tension force at lifted points / compressive resultant.
+        tension_share: f64,
         /// A smaller ε̄ to try.
         suggested_penalty: f64,
     },
@@ -60,8 +62,13 @@ impl Status {
             Status::IterationLimit { limit } => {
                 format!("not converged: the penalised set was still changing after {limit} iterations")
             }
-            Status::PenaltyTooWeak { tension_ratio, suggested_penalty } => format!(
-                "not converged: lifted points still carry a tension of {tension_ratio:.1e} × the peak pressure, so ε̄ is too large for this stiffness ratio; rerun with --penalty {suggested_penalty:.0e} or --method qp"
+            Status::PenaltyTooWeak {
+                tension_ratio,
+                tension_share,
+                suggested_penalty,
+            } => format!(
+                "not converged: lifted points still carry tension (peak {tension_ratio:.1e} of the peak pressure, {:.2} % of the load), so ε̄ is too large for this stiffness ratio; rerun with --penalty {suggested_penalty:.0e} or --method qp",
+                100.0 * tension_share
             ),
             Status::SolverFailure { detail } => format!("not converged: {detail}"),
         }
@@ -169,28 +176,46 @@ pub fn check_feasible(ops: &Operators) -> Result<()> {
         )));
     }
     // Resultant position, where the model keeps that rotation (x: mode 1 unless reduced about
-    // x = 0; y: the next mode unless reduced about y = 0).
-    let mut k = 1;
+    // x = 0; y: the next mode unless reduced about y = 0). A non-negative nodal pressure σ_j
+    // acts at the centroid of its shape function (coupling B), so with nodal constraints the
+    // reachable resultants are the bounding box of those centroids — for the consistent
+    // (half-space) coupling a third of an element inside the plate edge.
+    let c: Vec<Vec<f64>> = ops.rigid.iter().map(|r| ops.bt_times(r)).collect();
+    let nodal = ops.constraints.kind == crate::scene::ConstraintPoints::Nodal;
     let m = &ops.mesh;
-    let lo_x = m.x0;
-    let hi_x = m.x0 + m.nx as f64 * m.hx;
-    let lo_y = m.y0;
-    let hi_y = m.y0 + m.ny as f64 * m.hy;
+    let bounds = |k: usize, lo: f64, hi: f64| {
+        if nodal {
+            let (mut a, mut b) = (f64::INFINITY, f64::NEG_INFINITY);
+            for j in 0..c[0].len() {
+                if c[0][j] > 0.0 {
+                    let x = c[k][j] / c[0][j];
+                    a = a.min(x);
+                    b = b.max(x);
+                }
+            }
+            (a, b)
+        } else {
+            (lo, hi)
+        }
+    };
     let tol = 1e-9;
+    let mut k = 1;
     if !m.sym_x {
+        let (lo, hi) = bounds(k, m.x0, m.x0 + m.nx as f64 * m.hx);
         let xbar = rf[k] / total;
         k += 1;
-        if xbar < lo_x - tol || xbar > hi_x + tol {
+        if xbar < lo - tol || xbar > hi + tol {
             return Err(Error::Infeasible(format!(
-                "the load resultant acts at x = {xbar:.4} L, outside the plate [{lo_x}, {hi_x}] L: the plate would tip over; no contact pressure can balance it"
+                "the load resultant acts at x = {xbar:.4} L, outside [{lo:.4}, {hi:.4}] L where non-negative nodal pressures can balance it (the plate would tip over; a resultant on the very edge needs pressure concentrated on the edge, which bilinear pressures reach only to within a third of an element)"
             )));
         }
     }
     if !m.sym_y {
+        let (lo, hi) = bounds(k, m.y0, m.y0 + m.ny as f64 * m.hy);
         let ybar = rf[k] / total;
-        if ybar < lo_y - tol || ybar > hi_y + tol {
+        if ybar < lo - tol || ybar > hi + tol {
             return Err(Error::Infeasible(format!(
-                "the load resultant acts at y = {ybar:.4} L, outside the plate [{lo_y:.4}, {hi_y:.4}] L: the plate would tip over; no contact pressure can balance it"
+                "the load resultant acts at y = {ybar:.4} L, outside [{lo:.4}, {hi:.4}] L where non-negative nodal pressures can balance it (the plate would tip over; a resultant on the very edge needs pressure concentrated on the edge, which bilinear pressures reach only to within a third of an element)"
             )));
         }
     }

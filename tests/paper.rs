@@ -1,0 +1,238 @@
+//! The paper's §4 numbers (Ascione, Olivito & Spadea 1983) and `liftoff::paper::run`.
+
+use liftoff::paper::{self, LoadCondition2, PaperOptions};
+use liftoff::scene::MethodKind;
+use liftoff::{analyse, Analysis, Problem, Status};
+
+const FIG3_HALFSPACE: &str = include_str!("../examples/paper/fig3-halfspace-point.toml");
+const FIG3_WINKLER: &str = include_str!("../examples/paper/fig3-winkler-point.toml");
+
+fn solve(text: &str) -> Analysis {
+    let p = Problem::from_toml(text).unwrap_or_else(|e| panic!("scene: {e}\n{text}"));
+    analyse(&p).unwrap_or_else(|e| panic!("solve: {e}\n{text}"))
+}
+
+/// The scene with Γ replaced (the bundled Fig. 3 scenes carry Γ_1 = 0.25e-3).
+fn with_gamma(text: &str, gamma: f64) -> String {
+    assert!(text.contains("gamma = 0.25e-3"));
+    text.replace("gamma = 0.25e-3", &format!("gamma = {gamma:e}"))
+}
+
+/// The penalised set stopped changing: the iteration reached its fixed point (converged, or
+/// settled with the residual tension flagged), rather than cycling or hitting its cap.
+fn settled(a: &Analysis) -> bool {
+    matches!(
+        a.solution.status,
+        Status::Converged | Status::PenaltyTooWeak { .. }
+    )
+}
+
+/// §4: "for Γ = 0.25 × 10⁻³, the contact radius that we have determined for a square plate
+/// resting on an elastic half-space and subject to a point force is 0.44" (8 × 8 quarter mesh),
+/// reached in "4 ~ 6 steps" (§5 i).
+///
+/// Tolerance: nodal pressures are either in contact or lifted, so the contact boundary is only
+/// located to within the element between the last node in contact and the first lifted one,
+/// h = L/8 on this mesh; the paper's own 0.44 = 3.5/8 sits half-way between two nodes of it. The
+/// contact radius (√(area/π), from the bilinear pressure) and the extent along the axis must
+/// therefore lie within h of 0.44. The paper's step count is taken as stated: 4 to 6 linear
+/// solves of the penalty iteration.
+#[test]
+fn fig3_contact_radius_and_steps_at_the_paper_mesh() {
+    let a = solve(FIG3_HALFSPACE);
+    assert_eq!(
+        a.summary.elements,
+        [16, 16],
+        "the paper's 8 × 8 quarter mesh"
+    );
+    assert_eq!(a.summary.model_elements, [8, 8], "modelled as a quarter");
+    let h = 1.0 / 8.0;
+    let r = a.summary.contact_radius;
+    assert!(
+        (r - paper::PAPER_CONTACT_RADIUS).abs() < h,
+        "contact radius {r:.3} vs the paper's 0.44 (± one element, {h})"
+    );
+    let ex = a.summary.contact_extent.x;
+    assert!(
+        (ex - paper::PAPER_CONTACT_RADIUS).abs() < h,
+        "contact extent along s {ex:.3} vs 0.44 ± {h}"
+    );
+    // Svec's Kirchhoff value (0.50) is farther away than the paper's own.
+    assert!(r < paper::SVEC_CONTACT_RADIUS);
+    assert!(settled(&a), "{}", a.summary.status);
+    let steps = a.summary.iterations;
+    assert!(
+        (paper::PAPER_STEPS[0]..=paper::PAPER_STEPS[1]).contains(&steps),
+        "{steps} penalty steps vs the paper's 4–6"
+    );
+}
+
+/// §4: "the contact regions are diminishing with the decreasing values of Γ" — at the paper's
+/// meshes, for both foundations: the contact radius grows with Γ and the nodes in contact at a
+/// smaller Γ stay in contact at every larger Γ.
+#[test]
+fn contact_regions_shrink_with_gamma_on_both_foundations() {
+    for (name, text) in [("half-space", FIG3_HALFSPACE), ("winkler", FIG3_WINKLER)] {
+        let runs: Vec<Analysis> = paper::GAMMA_SQUARE
+            .iter()
+            .map(|&g| solve(&with_gamma(text, g)))
+            .collect();
+        let radii: Vec<f64> = runs.iter().map(|a| a.summary.contact_radius).collect();
+        assert!(
+            radii.windows(2).all(|w| w[0] < w[1]),
+            "{name}: contact radius must grow with Γ = {:?}: {radii:?}",
+            paper::GAMMA_SQUARE
+        );
+        for (k, w) in runs.windows(2).enumerate() {
+            assert!(settled(&w[0]) && settled(&w[1]), "{name}: settled");
+            let (small, large) = (&w[0].report.field.contact, &w[1].report.field.contact);
+            let escaped = small.iter().zip(large).filter(|(s, l)| **s && !**l).count();
+            assert_eq!(
+                escaped,
+                0,
+                "{name}: {escaped} nodes in contact at Γ{} lift off at Γ{}",
+                k + 1,
+                k + 2
+            );
+        }
+    }
+}
+
+/// `run` at the paper's meshes: every figure file, paper.json and paper.md are written, the
+/// markdown quotes the paper's 0.44 and Svec's 0.50, and the bundled Fig. 4, 5 and 7 scenes are
+/// the runs of the study.
+#[test]
+fn run_writes_the_figures_and_tables() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let out = dir.path().join("paper");
+    let options = PaperOptions {
+        method: MethodKind::Penalty,
+        load2: LoadCondition2::CaptionPatch,
+        refine: 1,
+    };
+    let mut lines = Vec::new();
+    let report = paper::run(&options, &out, &mut |s| lines.push(s.to_string())).expect("run");
+    assert!(!lines.is_empty(), "progress is reported");
+    assert_eq!(report.levels, vec![1]);
+    assert_eq!(
+        report.figures.iter().map(|f| f.number).collect::<Vec<_>>(),
+        vec![3, 4, 5, 6, 7]
+    );
+    for fig in 3..=7 {
+        for f in ["halfspace", "winkler"] {
+            for ext in ["svg", "png"] {
+                let p = out.join(format!("fig{fig}-{f}.{ext}"));
+                let len = std::fs::metadata(&p)
+                    .unwrap_or_else(|e| panic!("{}: {e}", p.display()))
+                    .len();
+                assert!(len > 1000, "{} is {len} bytes", p.display());
+            }
+        }
+    }
+    assert_eq!(report.files.len(), 22);
+    for f in &report.files {
+        assert!(out.join(f).is_file(), "{f} listed and written");
+    }
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("paper.json")).expect("json"))
+            .expect("paper.json parses");
+    assert_eq!(json["figures"].as_array().map(Vec::len), Some(5));
+    let md = paper::write_markdown(&report);
+    assert!(md.contains("0.44"), "markdown quotes the paper's radius");
+    assert!(md.contains("0.50"), "markdown quotes Svec's radius");
+    assert!(md.contains("4 ~ 6 steps"));
+    assert_eq!(
+        std::fs::read_to_string(out.join("paper.md")).expect("paper.md"),
+        md
+    );
+    // No staging directory is left behind.
+    let leftovers = std::fs::read_dir(&out)
+        .expect("dir")
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_name().to_string_lossy().starts_with('.'))
+        .count();
+    assert_eq!(leftovers, 0);
+
+    // The bundled scenes reproduce the study's Γ_1 runs.
+    let bundled = [
+        (
+            4,
+            "half-space",
+            include_str!("../examples/paper/fig4-halfspace-lc2.toml"),
+        ),
+        (
+            4,
+            "winkler",
+            include_str!("../examples/paper/fig4-winkler-lc2.toml"),
+        ),
+        (
+            5,
+            "half-space",
+            include_str!("../examples/paper/fig5-halfspace-lc2.toml"),
+        ),
+        (
+            5,
+            "winkler",
+            include_str!("../examples/paper/fig5-winkler-lc2.toml"),
+        ),
+        (
+            7,
+            "half-space",
+            include_str!("../examples/paper/fig7-halfspace-bonded.toml"),
+        ),
+        (
+            7,
+            "winkler",
+            include_str!("../examples/paper/fig7-winkler-bonded.toml"),
+        ),
+        (3, "half-space", FIG3_HALFSPACE),
+        (3, "winkler", FIG3_WINKLER),
+    ];
+    for (number, foundation, text) in bundled {
+        let a = solve(text);
+        let fig = report
+            .figures
+            .iter()
+            .find(|f| f.number == number)
+            .expect("figure");
+        let run = fig
+            .runs
+            .iter()
+            .find(|r| {
+                r.foundation.name() == foundation
+                    && r.gamma_index == 1
+                    && r.contact.name() == a.summary.contact
+            })
+            .expect("run");
+        let close = |x: f64, y: f64| (x - y).abs() <= 1e-9 * x.abs().max(y.abs()).max(1e-12);
+        assert!(
+            close(a.summary.V_max, run.key.v_max)
+                && close(a.summary.contact_radius, run.key.contact_radius),
+            "Fig. {number} {foundation}: bundled scene V_max {} r_c {} vs study {} {}",
+            a.summary.V_max,
+            a.summary.contact_radius,
+            run.key.v_max,
+            run.key.contact_radius
+        );
+    }
+}
+
+/// Bad options are refused before anything is solved or written.
+#[test]
+fn run_refuses_bad_options() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let out = dir.path().join("never");
+    for refine in [0, paper::MAX_REFINE + 1] {
+        let options = PaperOptions {
+            refine,
+            ..PaperOptions::default()
+        };
+        assert!(paper::run(&options, &out, &mut |_| {}).is_err());
+    }
+    let options = PaperOptions {
+        load2: LoadCondition2::Patch { gamma: 1.5 },
+        ..PaperOptions::default()
+    };
+    assert!(paper::run(&options, &out, &mut |_| {}).is_err());
+    assert!(!out.exists(), "nothing written");
+}
