@@ -486,7 +486,7 @@ fn eps_sweep(args: EpsSweepArgs) -> Result<(), Failure> {
     output::prepare_dir(&args.out)?;
     let eps = liftoff::study::log_space(args.from, args.to, args.points);
     let pb = progress_bar((constraints.len() * (eps.len() + 1)) as u64);
-    let window = [1e-9, 1e-5];
+    let window = [args.to.min(args.from), args.from.max(args.to)];
     let sweep = liftoff::study::eps_sweep(&problem, &eps, &constraints, window, &mut |m: &str| {
         pb.set_message(m.to_string());
         pb.inc(1);
@@ -515,16 +515,13 @@ fn eps_sweep(args: EpsSweepArgs) -> Result<(), Failure> {
             r.time_s
         );
     }
-    for (k, s) in &sweep.slopes {
+    for (k, s, range) in &sweep.slopes {
         match s {
             Some(s) => println!(
-                "  {k}: fitted slope {s:.3} over ε̄ ∈ [{:.0e}, {:.0e}] (first order: 1)",
-                window[0], window[1]
+                "  {k}: fitted slope {s:.3} over ε̄ ∈ [{:.0e}, {:.0e}], the points above 30× the error floor (first order: 1)",
+                range[0], range[1]
             ),
-            None => println!(
-                "  {k}: too few converged points in [{:.0e}, {:.0e}] to fit a slope",
-                window[0], window[1]
-            ),
+            None => println!("  {k}: too few converged points above the error floor to fit a slope"),
         }
     }
     println!(

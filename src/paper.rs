@@ -732,41 +732,41 @@ pub fn run(
     }
 
     let lc2_text = options.load2.describe();
-    let fig_meta: [(u8, &str, f64, String, [f64; 3]); 5] = [
+    let fig_meta: [(u8, &str, f64, String, Vec<f64>); 5] = [
         (
             3,
             "square plate, load condition 1",
             1.0,
             "central point load".to_string(),
-            GAMMA_SQUARE,
+            GAMMA_SQUARE.to_vec(),
         ),
         (
             4,
             "square plate, load condition 2",
             1.0,
             lc2_text.clone(),
-            GAMMA_SQUARE,
+            GAMMA_SQUARE.to_vec(),
         ),
         (
             5,
             "rectangular plate (μ = 0.5), load condition 2",
             0.5,
             lc2_text.clone(),
-            GAMMA_RECTANGLE,
+            GAMMA_RECTANGLE.to_vec(),
         ),
         (
             6,
             "rectangular plate (μ = 0.5), load condition 2: contact regions",
             0.5,
             lc2_text,
-            GAMMA_RECTANGLE,
+            GAMMA_RECTANGLE.to_vec(),
         ),
         (
             7,
             "square plate, load condition 1, Γ = 0.25e-3: bonded and unbonded",
             1.0,
             "central point load".to_string(),
-            [GAMMA_SQUARE[0], f64::NAN, f64::NAN],
+            vec![GAMMA_SQUARE[0]],
         ),
     ];
 
@@ -868,7 +868,6 @@ pub fn run(
                 }
             }
         }
-        let gammas: Vec<f64> = gammas.iter().cloned().filter(|g| g.is_finite()).collect();
         figures.push(PaperFigure {
             number,
             title: title.to_string(),
@@ -1721,9 +1720,17 @@ pub fn write_markdown(report: &PaperReport) -> String {
                 );
                 if max_level > 1 {
                     if let Some(fine) = at(FoundationKind::HalfSpace, 1, max_level) {
+                        let r = fine.key.contact_radius;
+                        let relation = if r < PAPER_CONTACT_RADIUS && r < SVEC_CONTACT_RADIUS {
+                            "below both 0.44 and Svec's 0.50"
+                        } else if r > PAPER_CONTACT_RADIUS && r > SVEC_CONTACT_RADIUS {
+                            "above both 0.44 and Svec's 0.50"
+                        } else {
+                            "between 0.44 and Svec's 0.50"
+                        };
                         s.push_str(&format!(
-                            "; {} at {} × {} — below both 0.44 and Svec's 0.50",
-                            f3(fine.key.contact_radius),
+                            "; {} at {} × {} — {relation}",
+                            f3(r),
                             fine.elements[0],
                             fine.elements[1]
                         ));

@@ -90,9 +90,10 @@ pub struct SweepRow {
 pub struct Sweep {
     /// Rows, per constraint kind, ε̄ decreasing.
     pub rows: Vec<SweepRow>,
-    /// Fitted log–log slope of rel_l2_sigma against ε̄ per constraint kind, over the fit window.
-    pub slopes: Vec<(&'static str, Option<f64>)>,
-    /// The ε̄ window [lo, hi] of the fit.
+    /// Per constraint kind: the fitted log–log slope of rel_l2_sigma against ε̄ and the ε̄ range
+    /// [lo, hi] of the points it used.
+    pub slopes: Vec<(&'static str, Option<f64>, [f64; 2])>,
+    /// The ε̄ window [lo, hi] the fit was allowed to use.
     pub fit_window: [f64; 2],
     /// QP time per constraint kind, s.
     pub qp_time_s: Vec<(&'static str, f64)>,
@@ -108,8 +109,9 @@ pub fn log_space(from: f64, to: f64, points: usize) -> Vec<f64> {
 }
 
 /// Solve the scene with the QP once and with the penalty method at each ε̄, for each constraint
-/// kind, on one assembly per kind. The slope is fitted over ε̄ ∈ `fit_window` where the penalty
-/// converged and the error is above 1e-13 (round-off).
+/// kind, on one assembly per kind. The slope is fitted over the points in `fit_window` where the
+/// penalised set settled and the error is more than 30 times above its floor (the smallest error of
+/// the sweep: round-off and the QP's own tolerance), i.e. over the asymptotic range.
 pub fn eps_sweep(
     problem: &Problem,
     epsilons: &[f64],
@@ -135,7 +137,6 @@ pub fn eps_sweep(
             return Err(Error::numerical("QP reference", q.status.describe()));
         }
         let (vq, sq) = fields(&ops, &p, &q);
-        let mut fit = Vec::new();
         for &eps in epsilons {
             progress(&format!("{}: penalty ε̄ = {eps:.1e}", kind.name()));
             let t = Instant::now();
@@ -165,13 +166,6 @@ pub fn eps_sweep(
                             * gs.iter().cloned().fold(f64::INFINITY, f64::min),
                         time_s,
                     };
-                    if row.converged
-                        && eps >= fit_window[0]
-                        && eps <= fit_window[1]
-                        && row.rel_l2_sigma > 1e-13
-                    {
-                        fit.push((eps, row.rel_l2_sigma));
-                    }
                     row
                 }
                 Err(e) => SweepRow {
@@ -190,9 +184,35 @@ pub fn eps_sweep(
             };
             rows.push(row);
         }
+        let mine: Vec<&SweepRow> = rows
+            .iter()
+            // The penalised set settled (a too-weak penalty still gives a valid point of the
+            // ε̄ → 0 curve; only cycling and the iteration cap do not).
+            .filter(|r| {
+                r.constraint == kind.name()
+                    && (r.status == "converged" || r.status == "penalty-too-weak")
+                    && r.rel_l2_sigma.is_finite()
+            })
+            .collect();
+        let floor = mine
+            .iter()
+            .map(|r| r.rel_l2_sigma)
+            .fold(f64::INFINITY, f64::min);
+        let fit: Vec<(f64, f64)> = mine
+            .iter()
+            .filter(|r| {
+                r.eps >= fit_window[0] && r.eps <= fit_window[1] && r.rel_l2_sigma > 30.0 * floor
+            })
+            .map(|r| (r.eps, r.rel_l2_sigma))
+            .collect();
+        let range = [
+            fit.iter().map(|p| p.0).fold(f64::INFINITY, f64::min),
+            fit.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max),
+        ];
         slopes.push((
             kind.name(),
             crate::output::charts::loglog_fit(&fit).map(|(s, _)| s),
+            range,
         ));
     }
     Ok(Sweep {
@@ -434,7 +454,7 @@ pub fn stability_sweeps(
         crate::foundation::FoundationKind::HalfSpace => vec![8.0, 16.0, 32.0, 64.0, 128.0, 512.0],
     };
     vec![
-        ("gamma", log_space(1e-9, 1e1, 11)),
+        ("gamma", log_space(1e-10, 1e8, 10)),
         ("penalty", log_space(1e-2, 1e-14, 13)),
         ("position", vec![0.0, 0.25, 0.5, 0.75, 0.9, 1.0]),
         ("mu", vec![0.1, 0.25, 0.5, 0.75, 1.0]),

@@ -27,7 +27,7 @@ pub fn write_sweep(dir: &Path, sweep: &Sweep, title: &str) -> Result<Vec<PathBuf
     st.write_text("eps_sweep.csv", &csv_text(&sweep.rows)?)?;
     let mut series = Vec::new();
     let mut notes = Vec::new();
-    for (kind, slope) in &sweep.slopes {
+    for (kind, slope, range) in &sweep.slopes {
         let rows: Vec<_> = sweep
             .rows
             .iter()
@@ -48,7 +48,7 @@ pub fn write_sweep(dir: &Path, sweep: &Sweep, title: &str) -> Result<Vec<PathBuf
         notes.push(match slope {
             Some(s) => format!(
                 "{kind}: fitted slope {s:.3} for ε̄ in [{:.0e}, {:.0e}] (first order = 1)",
-                sweep.fit_window[0], sweep.fit_window[1]
+                range[0], range[1]
             ),
             None => format!("{kind}: too few converged points to fit a slope"),
         });
