@@ -22,6 +22,36 @@ pub const SCENES: &[(&str, &str, &str)] = &[
         "the paper's square plate, central point load, Winkler, Γ_w = 0.25e-3 (dimensionless)",
         include_str!("../examples/paper/fig3-winkler-point.toml"),
     ),
+    (
+        "paper-fig4-halfspace",
+        "the paper's Fig. 4: square plate, load condition 2, half-space (dimensionless)",
+        include_str!("../examples/paper/fig4-halfspace-lc2.toml"),
+    ),
+    (
+        "paper-fig4-winkler",
+        "the paper's Fig. 4: square plate, load condition 2, Winkler (dimensionless)",
+        include_str!("../examples/paper/fig4-winkler-lc2.toml"),
+    ),
+    (
+        "paper-fig5-halfspace",
+        "the paper's Fig. 5: μ = 0.5 plate, load condition 2, half-space (dimensionless)",
+        include_str!("../examples/paper/fig5-halfspace-lc2.toml"),
+    ),
+    (
+        "paper-fig5-winkler",
+        "the paper's Fig. 5: μ = 0.5 plate, load condition 2, Winkler (dimensionless)",
+        include_str!("../examples/paper/fig5-winkler-lc2.toml"),
+    ),
+    (
+        "paper-fig7-halfspace",
+        "the paper's Fig. 7: bonded reference, square plate, point load, half-space (dimensionless)",
+        include_str!("../examples/paper/fig7-halfspace-bonded.toml"),
+    ),
+    (
+        "paper-fig7-winkler",
+        "the paper's Fig. 7: bonded reference, square plate, point load, Winkler (dimensionless)",
+        include_str!("../examples/paper/fig7-winkler-bonded.toml"),
+    ),
 ];
 
 /// The TOML text of a bundled scene.

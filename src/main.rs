@@ -39,6 +39,8 @@ enum Command {
     Tradeoff(TradeoffArgs),
     /// Sweep the regimes where the methods break (Γ, ε̄, load position, μ, mesh).
     Stability(StabilityArgs),
+    /// Regenerate the paper's Figs. 3–7 (SVG and PNG), paper.json and paper.md.
+    Paper(PaperArgs),
     /// Print a bundled example scene (without NAME: list them).
     Example {
         /// Name of the example.
@@ -163,6 +165,22 @@ struct StabilityArgs {
     out: PathBuf,
 }
 
+#[derive(clap::Args)]
+struct PaperArgs {
+    /// Directory for the figures, paper.json and paper.md.
+    #[arg(long, default_value = "paper")]
+    out: PathBuf,
+    /// Method for the unbonded solves.
+    #[arg(long, value_enum, default_value = "penalty")]
+    method: CliMethod,
+    /// Reading of the paper's load condition 2: patch (γ from Fig. 6's captions), patch=G, or edge-band.
+    #[arg(long, default_value = "patch")]
+    load2: String,
+    /// Also solve on meshes 2, 4, … up to this many times finer than the paper's.
+    #[arg(long, default_value_t = 1)]
+    refine: usize,
+}
+
 fn parse_mesh(s: &str) -> Result<[i64; 2], String> {
     let parts: Vec<&str> = s.split(',').map(str::trim).collect();
     if parts.len() != 2 {
@@ -184,6 +202,7 @@ fn main() -> ExitCode {
         Command::EpsSweep(args) => eps_sweep(args),
         Command::Tradeoff(args) => tradeoff(args),
         Command::Stability(args) => stability(args),
+        Command::Paper(args) => paper(args),
         Command::Example { name } => example(name.as_deref()),
     };
     match result {
@@ -223,7 +242,7 @@ fn example(name: Option<&str>) -> Result<(), Failure> {
         None => {
             println!("Bundled scenes (print one with `liftoff example NAME`, solve it with `liftoff solve example:NAME`):");
             for (n, d, _) in liftoff::examples::SCENES {
-                println!("  {n:<16} {d}");
+                println!("  {n:<22} {d}");
             }
             Ok(())
         }
@@ -518,10 +537,10 @@ fn eps_sweep(args: EpsSweepArgs) -> Result<(), Failure> {
     for (k, s, range) in &sweep.slopes {
         match s {
             Some(s) => println!(
-                "  {k}: fitted slope {s:.3} over ε̄ ∈ [{:.0e}, {:.0e}], the points above 30× the error floor (first order: 1)",
+                "  {k}: fitted slope {s:.3} over ε̄ ∈ [{:.0e}, {:.0e}], down to where the error flattens (first order: 1)",
                 range[0], range[1]
             ),
-            None => println!("  {k}: too few converged points above the error floor to fit a slope"),
+            None => println!("  {k}: too few settled points to fit a slope"),
         }
     }
     println!(
@@ -634,6 +653,27 @@ fn stability(args: StabilityArgs) -> Result<(), Failure> {
         }
     }
     println!("  {} of {} runs did not converge (listed above); written: stability.csv, stability-penalty.svg, stability-qp.svg in {}", failures, rows.len(), args.out.display());
+    Ok(())
+}
+
+fn paper(args: PaperArgs) -> Result<(), Failure> {
+    let load2: liftoff::paper::LoadCondition2 =
+        args.load2.parse().map_err(|e: Error| Failure::from(e))?;
+    let options = liftoff::paper::PaperOptions {
+        method: match args.method {
+            CliMethod::Penalty => MethodKind::Penalty,
+            CliMethod::Qp => MethodKind::Qp,
+        },
+        load2,
+        refine: args.refine,
+    };
+    let report = liftoff::paper::run(&options, &args.out, &mut |line: &str| eprintln!("{line}"))?;
+    print!("{}", liftoff::paper::write_markdown(&report));
+    println!(
+        "\nwritten: {} files in {}",
+        report.files.len(),
+        args.out.display()
+    );
     Ok(())
 }
 

@@ -1721,9 +1721,10 @@ pub fn write_markdown(report: &PaperReport) -> String {
                 if max_level > 1 {
                     if let Some(fine) = at(FoundationKind::HalfSpace, 1, max_level) {
                         let r = fine.key.contact_radius;
-                        let relation = if r < PAPER_CONTACT_RADIUS && r < SVEC_CONTACT_RADIUS {
+                        // 0.44 < 0.50: below the first is below both, above the second above both.
+                        let relation = if r < PAPER_CONTACT_RADIUS.min(SVEC_CONTACT_RADIUS) {
                             "below both 0.44 and Svec's 0.50"
-                        } else if r > PAPER_CONTACT_RADIUS && r > SVEC_CONTACT_RADIUS {
+                        } else if r > PAPER_CONTACT_RADIUS.max(SVEC_CONTACT_RADIUS) {
                             "above both 0.44 and Svec's 0.50"
                         } else {
                             "between 0.44 and Svec's 0.50"

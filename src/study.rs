@@ -110,8 +110,8 @@ pub fn log_space(from: f64, to: f64, points: usize) -> Vec<f64> {
 
 /// Solve the scene with the QP once and with the penalty method at each ε̄, for each constraint
 /// kind, on one assembly per kind. The slope is fitted over the points in `fit_window` where the
-/// penalised set settled and the error is more than 30 times above its floor (the smallest error of
-/// the sweep: round-off and the QP's own tolerance), i.e. over the asymptotic range.
+/// penalty converged (or, if fewer than three, where the penalised set settled), from the
+/// largest ε̄ down to where the curve flattens (round-off and the QP's own tolerance).
 pub fn eps_sweep(
     problem: &Problem,
     epsilons: &[f64],
@@ -194,17 +194,39 @@ pub fn eps_sweep(
                     && r.rel_l2_sigma.is_finite()
             })
             .collect();
-        let floor = mine
-            .iter()
-            .map(|r| r.rel_l2_sigma)
-            .fold(f64::INFINITY, f64::min);
-        let fit: Vec<(f64, f64)> = mine
-            .iter()
-            .filter(|r| {
-                r.eps >= fit_window[0] && r.eps <= fit_window[1] && r.rel_l2_sigma > 30.0 * floor
-            })
-            .map(|r| (r.eps, r.rel_l2_sigma))
-            .collect();
+        // The asymptotic range: starting from the largest ε̄, the run of consecutive points
+        // whose local log–log slope stays above 1/2 — it ends where round-off and the QP's own
+        // tolerance flatten the curve. Prefer points where the penalty is adequate; fall back to
+        // every settled point when that leaves fewer than three.
+        let run_of = |adequate_only: bool| -> Vec<(f64, f64)> {
+            let mut pts: Vec<(f64, f64)> = mine
+                .iter()
+                .filter(|r| {
+                    (!adequate_only || r.status == "converged")
+                        && r.eps >= fit_window[0]
+                        && r.eps <= fit_window[1]
+                        && r.rel_l2_sigma > 0.0
+                })
+                .map(|r| (r.eps, r.rel_l2_sigma))
+                .collect();
+            pts.sort_by(|a, b| b.0.total_cmp(&a.0));
+            let mut run: Vec<(f64, f64)> = Vec::new();
+            for p in pts {
+                if let Some(&(e0, r0)) = run.last() {
+                    if (r0 / p.1).ln() / (e0 / p.0).ln() < 0.5 {
+                        break;
+                    }
+                }
+                run.push(p);
+            }
+            run
+        };
+        let adequate = run_of(true);
+        let fit = if adequate.len() >= 3 {
+            adequate
+        } else {
+            run_of(false)
+        };
         let range = [
             fit.iter().map(|p| p.0).fold(f64::INFINITY, f64::min),
             fit.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max),
