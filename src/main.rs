@@ -318,8 +318,9 @@ fn solve(args: SolveArgs) -> Result<(), Failure> {
     }
     let analysis = liftoff::analyse(&problem)?;
     let summary = &analysis.summary;
+    // A result that did not converge is not a solution: no files are written for it.
     let mut written = Vec::new();
-    if let Some(dir) = &args.out {
+    if let (Some(dir), true) = (&args.out, summary.converged) {
         written = output::write_all(dir, &analysis.report, summary)?;
     }
     if args.json {
@@ -335,7 +336,7 @@ fn solve(args: SolveArgs) -> Result<(), Failure> {
     if !summary.converged {
         return Err(Failure {
             message: format!(
-                "the {} method did not converge ({}); the numbers above are not a solution",
+                "the {} method did not converge ({}); the numbers above are not a solution and no files were written",
                 summary.method, summary.status
             ),
             code: exit::SOLVER,

@@ -1,0 +1,151 @@
+//! One test per entry of docs/ERRORS.md: the CLI exits with the documented code and a message
+//! containing the documented text.
+
+use std::process::Command;
+
+const BASE: &str = r#"
+[plate]
+length = 6.0
+width = 4.0
+thickness = 0.25
+youngs_modulus = 30e9
+poissons_ratio = 0.2
+[foundation]
+model = "winkler"
+modulus = 5e7
+[[load]]
+kind = "point"
+x = 1.5
+y = 1.0
+force = 2.0e5
+[mesh]
+elements = [8, 8]
+"#;
+
+struct Case {
+    id: &'static str,
+    scene: Option<String>,
+    args: Vec<&'static str>,
+    code: i32,
+    message: &'static str,
+}
+
+fn edit(from: &str, to: &str) -> Option<String> {
+    assert!(
+        BASE.contains(from),
+        "case setup: `{from}` not in the base scene"
+    );
+    Some(BASE.replacen(from, to, 1))
+}
+
+fn paper(name: &str, from: &str, to: &str) -> Option<String> {
+    let text = liftoff::examples::scene(name).unwrap_or_default();
+    assert!(text.contains(from), "case setup: `{from}` not in {name}");
+    Some(text.replacen(from, to, 1))
+}
+
+#[test]
+fn every_catalogue_entry_has_its_exit_code_and_message() {
+    let cases = vec![
+        Case { id: "E01 TOML syntax", scene: Some("[plate\nlength = 1".into()), args: vec![], code: 2, message: "scene is not valid" },
+        Case { id: "E02 unknown key", scene: edit("thickness = 0.25", "thickness = 0.25\nthicknes = 0.2"), args: vec![], code: 2, message: "unknown field `thicknes`" },
+        Case { id: "E03 wrong type", scene: edit("thickness = 0.25", "thickness = \"0.25\""), args: vec![], code: 2, message: "invalid type" },
+        Case { id: "E04 missing section", scene: edit("[foundation]\nmodel = \"winkler\"\nmodulus = 5e7\n", ""), args: vec![], code: 2, message: "scene field `foundation`: missing" },
+        Case { id: "E05 both forms", scene: Some(format!("{BASE}[dimensionless]\nfoundation = \"winkler\"\ngamma = 1e-3\ndelta = 1e-3\nmu = 1.0\nnu = 0.3\n")), args: vec![], code: 2, message: "give either" },
+        Case { id: "E06 non-positive or non-finite", scene: edit("youngs_modulus = 30e9", "youngs_modulus = nan"), args: vec![], code: 2, message: "plate.youngs_modulus`: must be a finite number" },
+        Case { id: "E07 Poisson's ratio", scene: edit("poissons_ratio = 0.2", "poissons_ratio = 0.7"), args: vec![], code: 2, message: "Poisson's ratio must lie in" },
+        Case { id: "E08 thickness against sides", scene: edit("thickness = 0.25", "thickness = 250"), args: vec![], code: 2, message: "check units" },
+        Case { id: "E09 key of the other foundation", scene: edit("modulus = 5e7", "modulus = 5e7\nyoungs_modulus = 1e8"), args: vec![], code: 2, message: "belongs to model = \"half-space\"" },
+        Case { id: "E10 load outside the plate", scene: edit("x = 1.5", "x = 3.5"), args: vec![], code: 2, message: "lies outside the plate" },
+        Case { id: "E11 bad patch range", scene: edit("kind = \"point\"\nx = 1.5\ny = 1.0\nforce = 2.0e5", "kind = \"patch\"\nx = [1.0, 0.5]\ny = [0.0, 1.0]\npressure = 1e4"), args: vec![], code: 2, message: "must be increasing" },
+        Case { id: "E12 key of another load kind", scene: edit("force = 2.0e5", "force = 2.0e5\npressure = 1e3"), args: vec![], code: 2, message: "does not apply to a point load" },
+        Case { id: "E13 no loads", scene: edit("[[load]]\nkind = \"point\"\nx = 1.5\ny = 1.0\nforce = 2.0e5\n", ""), args: vec![], code: 2, message: "no [[load]] entries" },
+        Case { id: "E14 zero resultant", scene: edit("force = 2.0e5", "force = 0.0"), args: vec![], code: 2, message: "add up to zero" },
+        Case { id: "E15 mesh size", scene: edit("elements = [8, 8]", "elements = [8, 0]"), args: vec![], code: 2, message: "mesh.elements[1]" },
+        Case { id: "E16 solver setting", scene: Some(format!("{BASE}[solver]\npenalty = 0.0\n")), args: vec![], code: 2, message: "solver.penalty" },
+        Case { id: "E17 too large for memory", scene: edit("elements = [8, 8]", "elements = [200, 200]"), args: vec!["--method", "qp"], code: 2, message: "GiB" },
+        Case { id: "E18 bad command-line option", scene: Some(BASE.into()), args: vec!["--mesh", "8x8"], code: 2, message: "NX,NY" },
+        Case { id: "E19 net upward load", scene: edit("force = 2.0e5", "force = -2.0e5"), args: vec![], code: 3, message: "net load is upward" },
+        Case { id: "E20 resultant out of reach", scene: paper("paper-halfspace", "x = 0.0 ", "x = 1.0 "), args: vec!["--symmetry", "none"], code: 3, message: "tip over" },
+        Case { id: "E22 iteration cap", scene: Some(format!("{}[solver]\nmax_iterations = 2\n", liftoff::examples::scene("paper-winkler").unwrap_or_default().replace("[solver]\ncontact = \"unbonded\"\nmethod = \"penalty\"\npenalty = 1e-5\nconstraint = \"nodal\"\n", ""))), args: vec![], code: 4, message: "still changing after 2 iterations" },
+        Case { id: "E23 penalty too weak", scene: paper("paper-halfspace", "gamma = 0.25e-3", "gamma = 1e-9"), args: vec![], code: 4, message: "--penalty" },
+        Case { id: "E25 equilibrium lost", scene: paper("paper-winkler", "gamma = 0.25e-3", "gamma = 1e8"), args: vec![], code: 4, message: "reaction misses the load" },
+        Case { id: "E29 unreadable scene", scene: None, args: vec![], code: 5, message: "cannot read scene file" },
+    ];
+    let dir = tempfile::tempdir().expect("tempdir");
+    for case in cases {
+        let path = dir.path().join(format!("{}.toml", &case.id[..3]));
+        if let Some(text) = &case.scene {
+            std::fs::write(&path, text).expect("write scene");
+        }
+        let out = dir.path().join(format!("out-{}", &case.id[..3]));
+        let mut args = vec![
+            "solve".to_string(),
+            path.display().to_string(),
+            "--out".into(),
+            out.display().to_string(),
+        ];
+        args.extend(case.args.iter().map(|s| s.to_string()));
+        let o = Command::new(env!("CARGO_BIN_EXE_liftoff"))
+            .args(&args)
+            .output()
+            .expect("run liftoff");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(
+            o.status.code(),
+            Some(case.code),
+            "{}: exit code (stderr: {err})",
+            case.id
+        );
+        assert!(
+            err.contains(case.message),
+            "{}: message should contain `{}`, got: {err}",
+            case.id,
+            case.message
+        );
+        let files = std::fs::read_dir(&out).map(|d| d.count()).unwrap_or(0);
+        assert_eq!(files, 0, "{}: no output files after a failure", case.id);
+    }
+}
+
+/// E24: a clarabel status other than Solved is a non-converged result with the status named.
+#[test]
+fn qp_solver_status_is_reported() {
+    let text = liftoff::examples::scene("paper-halfspace").unwrap_or_default();
+    let p = liftoff::Problem::from_toml(text).expect("scene");
+    let ops = liftoff::Operators::assemble(&p).expect("ops");
+    let s = liftoff::solve::qp::QpSettings {
+        max_iter: 2,
+        ..Default::default()
+    };
+    let sol = liftoff::solve::qp::solve(&ops, &s).expect("solve ran");
+    assert!(
+        !sol.status.converged(),
+        "two interior-point iterations cannot converge"
+    );
+    assert!(
+        sol.status.describe().contains("MaxIterations"),
+        "{}",
+        sol.status.describe()
+    );
+}
+
+/// E30: an output directory that cannot be created is refused before solving.
+#[test]
+fn unwritable_output_is_an_io_error_before_solving() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let file = dir.path().join("plain-file");
+    std::fs::write(&file, "x").expect("write");
+    let out = file.join("sub");
+    let o = Command::new(env!("CARGO_BIN_EXE_liftoff"))
+        .args([
+            "solve",
+            "example:paper-winkler",
+            "--out",
+            out.to_str().unwrap_or_default(),
+        ])
+        .output()
+        .expect("run liftoff");
+    assert_eq!(o.status.code(), Some(5), "E30: exit code");
+    assert!(o.stdout.is_empty(), "E30: nothing solved or printed");
+}
