@@ -376,70 +376,36 @@ fn compare(args: CompareArgs) -> Result<(), Failure> {
         p.symmetry, p.model_elements[0], p.model_elements[1], p.nodes, p.foundation, p.dimensionless.penalty, p.constraint, c.assemble_s
     );
     println!("  {:<22} {:>16} {:>16}", "", "penalty", "qp");
-    let row = |name: &str, a: String, b: String| println!("  {name:<22} {a:>16} {b:>16}");
-    row(
-        "status",
-        if p.converged {
-            "converged".into()
+    let status = |x: &output::Summary| {
+        if x.converged {
+            "converged".to_string()
         } else {
-            "NOT converged".into()
-        },
-        if q.converged {
-            "converged".into()
-        } else {
-            "NOT converged".into()
-        },
-    );
-    row(
-        "iterations",
-        p.iterations.to_string(),
-        q.iterations.to_string(),
-    );
-    row(
-        "solve time (s)",
-        format!("{:.4}", p.time_s.solve),
-        format!("{:.4}", q.time_s.solve),
-    );
-    row(
-        "V_max",
-        format!("{:.6e}", p.V_max),
-        format!("{:.6e}", q.V_max),
-    );
-    row(
-        "contact fraction",
-        format!("{:.4}", p.contact_fraction),
-        format!("{:.4}", q.contact_fraction),
-    );
-    row(
-        "contact radius",
-        format!("{:.4}", p.contact_radius),
-        format!("{:.4}", q.contact_radius),
-    );
-    row(
-        "extent x",
-        format!("{:.4}", p.contact_extent.x),
-        format!("{:.4}", q.contact_extent.x),
-    );
-    row(
-        "extent y",
-        format!("{:.4}", p.contact_extent.y),
-        format!("{:.4}", q.contact_extent.y),
-    );
-    row(
-        "extent diagonal",
-        format!("{:.4}", p.contact_extent.diagonal),
-        format!("{:.4}", q.contact_extent.diagonal),
-    );
-    row(
-        "min σ",
-        format!("{:.2e}", p.complementarity.min_pressure),
-        format!("{:.2e}", q.complementarity.min_pressure),
-    );
-    row(
-        "max |σ·gap|",
-        format!("{:.2e}", p.complementarity.max_product),
-        format!("{:.2e}", q.complementarity.max_product),
-    );
+            "NOT converged".to_string()
+        }
+    };
+    type Cell = fn(&output::Summary) -> String;
+    let rows: [(&str, Cell); 10] = [
+        ("iterations", |x| x.iterations.to_string()),
+        ("solve time (s)", |x| format!("{:.4}", x.time_s.solve)),
+        ("V_max", |x| format!("{:.6e}", x.V_max)),
+        ("contact fraction", |x| format!("{:.4}", x.contact_fraction)),
+        ("contact radius", |x| format!("{:.4}", x.contact_radius)),
+        ("extent x", |x| format!("{:.4}", x.contact_extent.x)),
+        ("extent y", |x| format!("{:.4}", x.contact_extent.y)),
+        ("extent diagonal", |x| {
+            format!("{:.4}", x.contact_extent.diagonal)
+        }),
+        ("min σ", |x| {
+            format!("{:.2e}", x.complementarity.min_pressure)
+        }),
+        ("max |σ·gap|", |x| {
+            format!("{:.2e}", x.complementarity.max_product)
+        }),
+    ];
+    println!("  {:<22} {:>16} {:>16}", "status", status(p), status(q));
+    for (name, cell) in rows {
+        println!("  {name:<22} {:>16} {:>16}", cell(p), cell(q));
+    }
     let d = &c.differences;
     println!(
         "  max |Δσ| = {:.3e} ({:.2e} of max σ), max |ΔV| = {:.3e} ({:.2e} of max V), contact differs at {} node(s)",

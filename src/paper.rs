@@ -38,6 +38,7 @@ use crate::analysis::analyse;
 use crate::error::{Error, Result};
 use crate::foundation::FoundationKind;
 use crate::output::plot::{caption_size, ensure_font, plot_error, FONT};
+use crate::output::plot::{contour, tick_format, txt};
 use crate::output::Staged;
 use crate::post::{Extent, FullField, Profile, Report, CONTACT_THRESHOLD};
 use crate::scene::{ConstraintPoints, Contact, MethodKind, Problem};
@@ -1064,40 +1065,6 @@ struct Curve<'a> {
 
 type DrawResult<T> = std::result::Result<T, String>;
 
-fn txt<E: std::fmt::Display>(e: E) -> String {
-    e.to_string()
-}
-
-/// Tick labels with about three significant digits over the span, no "-0".
-fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
-    let span = (hi - lo).abs();
-    let step = if span > 0.0 && span.is_finite() {
-        span / 8.0
-    } else {
-        1.0
-    };
-    let decimals = ((-step.log10()).ceil() as i32 + 1).clamp(0, 8) as usize;
-    move |v: &f64| {
-        if !v.is_finite() {
-            return String::new();
-        }
-        if v.abs() <= 1e-9 * span.max(f64::MIN_POSITIVE) {
-            return "0".into();
-        }
-        let t = format!("{v:.decimals$}");
-        let t = if t.contains('.') {
-            t.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            t
-        };
-        if t == "-0" {
-            "0".into()
-        } else {
-            t
-        }
-    }
-}
-
 /// Padded range of `values` including 0.
 fn range_with_zero(values: impl Iterator<Item = f64>) -> (f64, f64) {
     let (mut lo, mut hi) = (0.0_f64, 0.0_f64);
@@ -1286,54 +1253,6 @@ fn draw_profiles<DB: DrawingBackend>(
         }
     }
     Ok(())
-}
-
-/// Segments of the level set σ = `level` of the bilinear nodal σ, in (x, y), by marching
-/// squares.
-fn contour(field: &FullField, level: f64) -> Vec<[(f64, f64); 2]> {
-    let n = field.nx + 1;
-    let mut segments = Vec::new();
-    for j in 0..field.ny {
-        for i in 0..field.nx {
-            let c = [
-                i + j * n,
-                i + 1 + j * n,
-                i + 1 + (j + 1) * n,
-                i + (j + 1) * n,
-            ];
-            let f = c.map(|k| field.sigma[k] - level);
-            let cross = |e: usize| -> Option<(f64, f64)> {
-                let (a, b) = (e, (e + 1) % 4);
-                if (f[a] > 0.0) == (f[b] > 0.0) {
-                    return None;
-                }
-                let t = (f[a] / (f[a] - f[b])).clamp(0.0, 1.0);
-                let (na, nb) = (c[a], c[b]);
-                Some((
-                    field.x[na] + t * (field.x[nb] - field.x[na]),
-                    field.y[na] + t * (field.y[nb] - field.y[na]),
-                ))
-            };
-            let pts: Vec<(usize, (f64, f64))> =
-                (0..4).filter_map(|e| cross(e).map(|p| (e, p))).collect();
-            match pts.as_slice() {
-                [(_, p), (_, q)] => segments.push([*p, *q]),
-                [(_, p0), (_, p1), (_, p2), (_, p3)] => {
-                    // Saddle: join by the sign of the cell centre.
-                    let centre = f.iter().sum::<f64>() > 0.0;
-                    if centre == (f[0] > 0.0) {
-                        segments.push([*p0, *p3]);
-                        segments.push([*p1, *p2]);
-                    } else {
-                        segments.push([*p0, *p1]);
-                        segments.push([*p2, *p3]);
-                    }
-                }
-                _ => {}
-            }
-        }
-    }
-    segments
 }
 
 fn write_regions(

@@ -86,7 +86,7 @@ pub(crate) fn plot_error(path: &Path, e: impl std::fmt::Display) -> Error {
 type DrawResult<T> = std::result::Result<T, String>;
 
 /// Convert a plotters error into text.
-fn txt<E: std::fmt::Display>(e: E) -> String {
+pub(crate) fn txt<E: std::fmt::Display>(e: E) -> String {
     e.to_string()
 }
 
@@ -112,7 +112,7 @@ fn padded_range(values: impl Iterator<Item = f64>, always: Option<f64>) -> (f64,
 
 /// Tick-label formatter for an axis spanning `lo`..`hi`: enough decimals for about ten ticks,
 /// trailing zeros dropped, no "-0", scientific notation for very small or large magnitudes.
-fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
+pub(crate) fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
     let span = (hi - lo).abs();
     let mag = lo.abs().max(hi.abs());
     let step = if span > 0.0 && span.is_finite() {
@@ -404,7 +404,7 @@ fn cell_nodes(field: &FullField, i: usize, j: usize) -> [usize; 4] {
 }
 
 /// Segments of the level set σ = `level` of the bilinear σ field, by marching squares.
-fn contour(field: &FullField, level: f64) -> Vec<[(f64, f64); 2]> {
+pub(crate) fn contour(field: &FullField, level: f64) -> Vec<[(f64, f64); 2]> {
     let mut segments = Vec::new();
     for j in 0..field.ny {
         for i in 0..field.nx {
@@ -618,45 +618,9 @@ mod tests {
     use super::*;
     use crate::post::ProfilePoint;
 
-    /// A 4 × 2 plate with a σ bump in the middle and lifted corners.
+    /// The shared 4 × 2 test plate without its element field.
     fn bump_field() -> FullField {
-        let (nx, ny) = (4, 2);
-        let mut f = FullField {
-            nx,
-            ny,
-            x: vec![],
-            y: vec![],
-            s: vec![],
-            t: vec![],
-            w: vec![],
-            psi_x: vec![],
-            psi_y: vec![],
-            pressure: vec![],
-            gap: vec![],
-            v: vec![],
-            sigma: vec![],
-            contact: vec![],
-        };
-        for j in 0..=ny {
-            for i in 0..=nx {
-                let s = -1.0 + 2.0 * i as f64 / nx as f64;
-                let t = -1.0 + 2.0 * j as f64 / ny as f64;
-                let sigma = 1.0 - s * s - 0.6 * t * t;
-                f.x.push(2.0 * s);
-                f.y.push(t);
-                f.s.push(s);
-                f.t.push(t);
-                f.w.push(0.01 * sigma);
-                f.psi_x.push(0.0);
-                f.psi_y.push(0.0);
-                f.pressure.push(sigma.max(0.0));
-                f.gap.push((-sigma).max(0.0));
-                f.v.push(0.1 * sigma);
-                f.sigma.push(sigma.max(0.0));
-                f.contact.push(sigma > 0.0);
-            }
-        }
-        f
+        crate::post::test_fixtures::bump().0
     }
 
     fn profiles() -> Vec<Profile> {
