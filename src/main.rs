@@ -72,6 +72,60 @@ enum CliSymmetry {
     None,
 }
 
+impl From<CliContact> for Contact {
+    fn from(c: CliContact) -> Self {
+        match c {
+            CliContact::Bonded => Contact::Bonded,
+            CliContact::Unbonded => Contact::Unbonded,
+        }
+    }
+}
+
+impl From<CliMethod> for MethodKind {
+    fn from(m: CliMethod) -> Self {
+        match m {
+            CliMethod::Penalty => MethodKind::Penalty,
+            CliMethod::Qp => MethodKind::Qp,
+        }
+    }
+}
+
+impl From<CliConstraint> for ConstraintPoints {
+    fn from(c: CliConstraint) -> Self {
+        match c {
+            CliConstraint::Nodal => ConstraintPoints::Nodal,
+            CliConstraint::Gauss => ConstraintPoints::Gauss,
+        }
+    }
+}
+
+impl From<CliSymmetry> for SymmetryMode {
+    fn from(s: CliSymmetry) -> Self {
+        match s {
+            CliSymmetry::Auto => SymmetryMode::Auto,
+            CliSymmetry::None => SymmetryMode::None,
+        }
+    }
+}
+
+/// Options shared by `solve` and `compare` that override the scene file.
+fn apply_overrides(
+    file: &mut SceneFile,
+    penalty: Option<f64>,
+    constraint: Option<CliConstraint>,
+    mesh: Option<[i64; 2]>,
+) {
+    if let Some(p) = penalty {
+        file.solver.penalty = p;
+    }
+    if let Some(c) = constraint {
+        file.solver.constraint = c.into();
+    }
+    if let Some(m) = mesh {
+        file.mesh.elements = m;
+    }
+}
+
 #[derive(clap::Args)]
 struct SolveArgs {
     /// Scene file (TOML), or `example:NAME` for a bundled scene.
@@ -283,34 +337,14 @@ fn read_scene(spec: &str) -> Result<(String, SceneFile), Failure> {
 fn solve(args: SolveArgs) -> Result<(), Failure> {
     let (_, mut file) = read_scene(&args.scene)?;
     if let Some(c) = args.contact {
-        file.solver.contact = match c {
-            CliContact::Bonded => Contact::Bonded,
-            CliContact::Unbonded => Contact::Unbonded,
-        };
+        file.solver.contact = c.into();
     }
     if let Some(m) = args.method {
-        file.solver.method = match m {
-            CliMethod::Penalty => MethodKind::Penalty,
-            CliMethod::Qp => MethodKind::Qp,
-        };
+        file.solver.method = m.into();
     }
-    if let Some(p) = args.penalty {
-        file.solver.penalty = p;
-    }
-    if let Some(c) = args.constraint {
-        file.solver.constraint = match c {
-            CliConstraint::Nodal => ConstraintPoints::Nodal,
-            CliConstraint::Gauss => ConstraintPoints::Gauss,
-        };
-    }
-    if let Some(m) = args.mesh {
-        file.mesh.elements = m;
-    }
+    apply_overrides(&mut file, args.penalty, args.constraint, args.mesh);
     if let Some(s) = args.symmetry {
-        file.mesh.symmetry = match s {
-            CliSymmetry::Auto => SymmetryMode::Auto,
-            CliSymmetry::None => SymmetryMode::None,
-        };
+        file.mesh.symmetry = s.into();
     }
     let problem = file.validate().map_err(|e| with_scene(&args.scene, e))?;
     if let Some(dir) = &args.out {
@@ -347,18 +381,7 @@ fn solve(args: SolveArgs) -> Result<(), Failure> {
 
 fn compare(args: CompareArgs) -> Result<(), Failure> {
     let (_, mut file) = read_scene(&args.scene)?;
-    if let Some(p) = args.penalty {
-        file.solver.penalty = p;
-    }
-    if let Some(c) = args.constraint {
-        file.solver.constraint = match c {
-            CliConstraint::Nodal => ConstraintPoints::Nodal,
-            CliConstraint::Gauss => ConstraintPoints::Gauss,
-        };
-    }
-    if let Some(m) = args.mesh {
-        file.mesh.elements = m;
-    }
+    apply_overrides(&mut file, args.penalty, args.constraint, args.mesh);
     let problem = file.validate().map_err(|e| with_scene(&args.scene, e))?;
     output::prepare_dir(&args.out)?;
     let c = liftoff::compare::compare(&problem)?;
@@ -627,10 +650,7 @@ fn paper(args: PaperArgs) -> Result<(), Failure> {
     let load2: liftoff::paper::LoadCondition2 =
         args.load2.parse().map_err(|e: Error| Failure::from(e))?;
     let options = liftoff::paper::PaperOptions {
-        method: match args.method {
-            CliMethod::Penalty => MethodKind::Penalty,
-            CliMethod::Qp => MethodKind::Qp,
-        },
+        method: args.method.into(),
         load2,
         refine: args.refine,
     };
