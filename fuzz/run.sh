@@ -31,7 +31,6 @@ SANITIZER="${FUZZ_SANITIZER:-address}"
 TARGET=scene
 
 FUZZ_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-ROOT="$(dirname "$FUZZ_DIR")"
 CORPUS="$FUZZ_DIR/corpus/$TARGET"
 ARTIFACTS="$FUZZ_DIR/artifacts/$TARGET"
 LOG="$FUZZ_DIR/artifacts/$TARGET-run.log"
@@ -50,9 +49,12 @@ cp "$FUZZ_DIR"/seeds/*.toml "$CORPUS"/
 # Artifacts already present are reported as old, not as found by this run.
 before="$(find "$ARTIFACTS" -maxdepth 1 -type f \( -name 'crash-*' -o -name 'timeout-*' -o -name 'oom-*' -o -name 'leak-*' \) | sort)"
 
-cd "$ROOT"
+# Run from the artifacts directory (ignored by git): with -jobs, libFuzzer writes fuzz-N.log
+# files to the working directory.
+cd "$ARTIFACTS"
+rm -f "$ARTIFACTS"/fuzz-*.log
 echo "== building fuzz target '$TARGET' ($(cargo fuzz --version))"
-cargo fuzz build "${CARGO_FUZZ_FLAGS[@]}" "$TARGET"
+cargo fuzz build --fuzz-dir "$FUZZ_DIR" "${CARGO_FUZZ_FLAGS[@]}" "$TARGET"
 
 echo "== fuzzing '$TARGET' for ${SECONDS_BUDGET} s (sanitizer ${SANITIZER}, jobs ${JOBS}, timeout ${TIMEOUT} s, rss ${RSS_MB} MiB); log: $LOG"
 start="$(date -u +%Y-%m-%dT%H:%M:%SZ)"
@@ -69,7 +71,7 @@ if [ "$JOBS" -gt 1 ]; then
     LIBFUZZER_ARGS+=(-jobs="$JOBS" -workers="$JOBS")
 fi
 set +e
-cargo fuzz run "${CARGO_FUZZ_FLAGS[@]}" "$TARGET" "$CORPUS" -- "${LIBFUZZER_ARGS[@]}" 2>&1 | tee "$LOG"
+cargo fuzz run --fuzz-dir "$FUZZ_DIR" "${CARGO_FUZZ_FLAGS[@]}" "$TARGET" "$CORPUS" -- "${LIBFUZZER_ARGS[@]}" 2>&1 | tee "$LOG"
 status="${PIPESTATUS[0]}"
 set -e
 t1="$(date +%s)"
@@ -79,11 +81,12 @@ new="$(comm -13 <(printf '%s\n' "$before" | sed '/^$/d') <(printf '%s\n' "$after
 n_new="$(printf '%s\n' "$new" | sed '/^$/d' | wc -l)"
 # With -jobs the statistics are in fuzz-N.log files; otherwise in the log above.
 stats_src=("$LOG")
-if [ "$JOBS" -gt 1 ]; then stats_src=("$ROOT"/fuzz-*.log); fi
-execs="$(grep -h 'stat::number_of_executed_units' "${stats_src[@]}" 2>/dev/null | awk '{s += $2} END {print s + 0}')"
-rate="$(grep -h 'stat::average_exec_per_sec' "${stats_src[@]}" 2>/dev/null | awk '{s += $2} END {print s + 0}')"
-peak="$(grep -h 'stat::peak_rss_mb' "${stats_src[@]}" 2>/dev/null | awk '$2 > m {m = $2} END {print m + 0}')"
-cov="$(grep -ho 'cov: [0-9]*' "${stats_src[@]}" 2>/dev/null | awk '$2 > m {m = $2} END {print m + 0}')"
+if [ "$JOBS" -gt 1 ]; then stats_src=("$ARTIFACTS"/fuzz-*.log); fi
+# (grep finds nothing when libFuzzer stopped early: `|| true` keeps pipefail from exiting.)
+execs="$({ grep -h 'stat::number_of_executed_units' "${stats_src[@]}" 2>/dev/null || true; } | awk '{s += $2} END {print s + 0}')"
+rate="$({ grep -h 'stat::average_exec_per_sec' "${stats_src[@]}" 2>/dev/null || true; } | awk '{s += $2} END {print s + 0}')"
+peak="$({ grep -h 'stat::peak_rss_mb' "${stats_src[@]}" 2>/dev/null || true; } | awk '$2 > m {m = $2} END {print m + 0}')"
+cov="$({ grep -ho 'cov: [0-9]*' "${stats_src[@]}" 2>/dev/null || true; } | awk '$2 > m {m = $2} END {print m + 0}')"
 corpus_n="$(find "$CORPUS" -maxdepth 1 -type f | wc -l)"
 
 echo
@@ -98,8 +101,8 @@ echo "corpus size:      $corpus_n files in $CORPUS"
 echo "new artifacts:    $n_new"
 if [ "$n_new" -gt 0 ]; then
     printf '  %s\n' $new
-    echo "reproduce: RUSTC_BOOTSTRAP=1 cargo fuzz run ${CARGO_FUZZ_FLAGS[*]} $TARGET <artifact>"
-    echo "minimise:  RUSTC_BOOTSTRAP=1 cargo fuzz tmin ${CARGO_FUZZ_FLAGS[*]} $TARGET <artifact>"
+    echo "reproduce: RUSTC_BOOTSTRAP=1 cargo fuzz run --fuzz-dir $FUZZ_DIR ${CARGO_FUZZ_FLAGS[*]} $TARGET <artifact>"
+    echo "minimise:  RUSTC_BOOTSTRAP=1 cargo fuzz tmin --fuzz-dir $FUZZ_DIR ${CARGO_FUZZ_FLAGS[*]} $TARGET <artifact>"
 fi
 echo "libFuzzer exit:   $status"
 

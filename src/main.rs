@@ -122,7 +122,7 @@ fn apply_overrides(
         file.solver.constraint = c.into();
     }
     if let Some(m) = mesh {
-        file.mesh.elements = m;
+        file.mesh.elements = m.to_vec();
     }
 }
 

@@ -179,14 +179,14 @@ pub struct LoadSpec {
 pub struct MeshSpec {
     /// Elements [nx, ny] over the whole plate.
     #[serde(default = "default_elements")]
-    pub elements: [i64; 2],
+    pub elements: Vec<i64>,
     /// "auto" or "none".
     #[serde(default = "default_symmetry")]
     pub symmetry: SymmetryMode,
 }
 
-fn default_elements() -> [i64; 2] {
-    [16, 16]
+fn default_elements() -> Vec<i64> {
+    vec![16, 16]
 }
 fn default_symmetry() -> SymmetryMode {
     SymmetryMode::Auto
@@ -622,6 +622,18 @@ impl SceneFile {
                             d * (1.0 - nus * nus) / (std::f64::consts::PI * es * mu * l.powi(3))
                         }
                     };
+                    // Each input is finite and positive, but their combination may still
+                    // underflow or overflow (a 1e308 m plate, a 1e-200 m thickness).
+                    for (name, v) in [("rigidity D", d), ("Δ", delta), ("Γ", gamma)] {
+                        if !(v.is_finite() && v > 0.0) {
+                            return Err(Error::invalid(
+                                "plate",
+                                format!(
+                                    "the plate and foundation values give {name} = {v:e}, outside double precision: check their units (m, Pa, N/m³)"
+                                ),
+                            ));
+                        }
+                    }
                     (
                         Groups { foundation: f.model, gamma, delta, mu, nu },
                         Some((l, d)),
@@ -791,7 +803,13 @@ impl SceneFile {
                 Load::Patch { .. } => l.resultant().abs() * area_scale,
             })
             .sum();
-        if !total.is_finite() || total.abs() <= 1e-12 * gross.max(f64::MIN_POSITIVE) {
+        if !total.is_finite() || !gross.is_finite() {
+            return Err(Error::invalid(
+                "load",
+                "the load magnitudes overflow when added up: check their units (N and Pa)",
+            ));
+        }
+        if total.abs() <= 1e-12 * gross.max(f64::MIN_POSITIVE) {
             return Err(Error::invalid(
                 "load",
                 format!("the loads add up to zero (resultant {total:e}); a free plate needs a net vertical load"),
@@ -807,7 +825,13 @@ impl SceneFile {
         }
 
         // Mesh.
-        let el = self.mesh.elements;
+        let el = &self.mesh.elements;
+        if el.len() != 2 {
+            return Err(Error::invalid(
+                "mesh.elements",
+                format!("give two element counts [nx, ny], got {} values", el.len()),
+            ));
+        }
         for (k, &n) in el.iter().enumerate() {
             if n < 1 {
                 return Err(Error::invalid(

@@ -180,7 +180,6 @@ fn malformed_toml_is_a_parse_error() {
             "float elements",
             dimensionless("[mesh]\nelements = [1.5, 1]"),
         ),
-        ("one element", dimensionless("[mesh]\nelements = [1]")),
         (
             "elements past i64",
             dimensionless("[mesh]\nelements = [9223372036854775808, 1]"),

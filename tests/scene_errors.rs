@@ -171,3 +171,35 @@ fn meshes_beyond_memory_are_refused_before_allocating() {
         other => panic!("expected TooLarge, got {:?}", other.map(|_| ())),
     }
 }
+
+/// Found by fuzzing (fuzz/RESULTS.md): extra element counts, values whose combination leaves
+/// double precision, and load totals that overflow are validation errors naming the field.
+#[test]
+fn fuzz_findings_are_validation_errors() {
+    let cases: &[(&str, &str, &str)] = &[
+        ("elements = [8, 8]", "elements = [1, 1, 1]", "mesh.elements"),
+        ("elements = [8, 8]", "elements = [8]", "mesh.elements"),
+        (
+            "thickness = 0.25",
+            "thickness = 1e-200",
+            "outside double precision",
+        ),
+        (
+            "modulus = 5e7",
+            "modulus = 5e-324",
+            "outside double precision",
+        ),
+        (
+            "force = 2.0e5",
+            "force = 1.7e308\n[[load]]\nkind = \"point\"\nx = 0.0\ny = 0.0\nforce = 1.7e308",
+            "overflow",
+        ),
+    ];
+    for (from, to, needle) in cases {
+        let msg = rejected(&BASE.replacen(from, to, 1));
+        assert!(
+            msg.contains(needle),
+            "`{to}` should mention `{needle}`, got: {msg}"
+        );
+    }
+}
