@@ -3,24 +3,8 @@
 
 use std::process::Command;
 
-const BASE: &str = r#"
-[plate]
-length = 6.0
-width = 4.0
-thickness = 0.25
-youngs_modulus = 30e9
-poissons_ratio = 0.2
-[foundation]
-model = "winkler"
-modulus = 5e7
-[[load]]
-kind = "point"
-x = 1.5
-y = 1.0
-force = 2.0e5
-[mesh]
-elements = [8, 8]
-"#;
+mod common;
+use common::BASE;
 
 struct Case {
     id: &'static str,

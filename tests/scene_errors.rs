@@ -2,24 +2,8 @@
 
 use liftoff::{Error, Problem};
 
-const BASE: &str = r#"
-[plate]
-length = 6.0
-width = 4.0
-thickness = 0.25
-youngs_modulus = 30e9
-poissons_ratio = 0.2
-[foundation]
-model = "winkler"
-modulus = 5e7
-[[load]]
-kind = "point"
-x = 1.5
-y = 1.0
-force = 2.0e5
-[mesh]
-elements = [8, 8]
-"#;
+mod common;
+use common::BASE;
 
 fn rejected(text: &str) -> String {
     match Problem::from_toml(text) {

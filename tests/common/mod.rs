@@ -54,3 +54,24 @@ pub fn max_abs_diff(a: &[f64], b: &[f64]) -> f64 {
 pub fn max_abs(a: &[f64]) -> f64 {
     a.iter().map(|x| x.abs()).fold(0.0, f64::max)
 }
+
+/// The README's physical scene trimmed to one point load on an 8 × 8 mesh: the valid starting
+/// point that the validation and exit-code tests edit one field at a time.
+pub const BASE: &str = r#"
+[plate]
+length = 6.0
+width = 4.0
+thickness = 0.25
+youngs_modulus = 30e9
+poissons_ratio = 0.2
+[foundation]
+model = "winkler"
+modulus = 5e7
+[[load]]
+kind = "point"
+x = 1.5
+y = 1.0
+force = 2.0e5
+[mesh]
+elements = [8, 8]
+"#;
