@@ -3,11 +3,11 @@
 //! Run with `cargo bench --bench solvers`; results and the machine are in BENCHMARKS.md.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
-use liftoff::scene::{Contact, MethodKind, Problem};
+use liftoff::method::{KktSolver, Method};
 use liftoff::solve::{self, qp};
-use liftoff::Operators;
+use liftoff::{Operators, Problem};
 
-fn paper(foundation: &str, n: usize, contact: Contact, method: MethodKind) -> Problem {
+fn paper(foundation: &str, n: usize) -> Problem {
     let name = if foundation == "winkler" {
         "paper-winkler"
     } else {
@@ -17,10 +17,7 @@ fn paper(foundation: &str, n: usize, contact: Contact, method: MethodKind) -> Pr
     let text = text
         .replace("elements = [16, 16]", &format!("elements = [{n}, {n}]"))
         .replace("elements = [20, 20]", &format!("elements = [{n}, {n}]"));
-    let mut p = Problem::from_toml(&text).expect("bundled scene");
-    p.solver.contact = contact;
-    p.solver.method = method;
-    p
+    Problem::from_toml(&text).expect("bundled scene")
 }
 
 fn winkler(c: &mut Criterion) {
@@ -28,17 +25,16 @@ fn winkler(c: &mut Criterion) {
     let mut g = c.benchmark_group("winkler");
     g.sample_size(10);
     for n in [100, 200, 400] {
-        let p = paper("winkler", n, Contact::Bonded, MethodKind::Penalty);
+        let p = paper("winkler", n);
         g.bench_with_input(BenchmarkId::new("assemble", n), &p, |b, p| {
-            b.iter(|| Operators::assemble(p).expect("assemble"))
+            b.iter(|| Operators::assemble(&p.model))
         });
-        let ops = Operators::assemble(&p).expect("assemble");
+        let ops = Operators::assemble(&p.model);
         g.bench_with_input(BenchmarkId::new("bonded-solve", n), &ops, |b, ops| {
             b.iter(|| solve::bonded::solve(ops).expect("solve"))
         });
-        let pu = paper("winkler", n, Contact::Unbonded, MethodKind::Penalty);
         g.bench_with_input(BenchmarkId::new("penalty-solve", n), &ops, |b, ops| {
-            b.iter(|| solve::solve(ops, &pu.solver).expect("solve"))
+            b.iter(|| solve::solve(ops, &Method::penalty()).expect("solve"))
         });
     }
     g.finish();
@@ -49,22 +45,24 @@ fn half_space(c: &mut Criterion) {
     let mut g = c.benchmark_group("half-space");
     g.sample_size(10);
     for n in [32, 64] {
-        let p = paper("half-space", n, Contact::Unbonded, MethodKind::Penalty);
+        let p = paper("half-space", n);
         g.bench_with_input(BenchmarkId::new("assemble", n), &p, |b, p| {
-            b.iter(|| Operators::assemble(p).expect("assemble"))
+            b.iter(|| Operators::assemble(&p.model))
         });
-        let ops = Operators::assemble(&p).expect("assemble");
+        let ops = Operators::assemble(&p.model);
         g.bench_with_input(BenchmarkId::new("penalty-solve", n), &ops, |b, ops| {
-            b.iter(|| solve::solve(ops, &p.solver).expect("solve"))
+            b.iter(|| solve::solve(ops, &Method::penalty()).expect("solve"))
         });
-        for kkt in ["faer", "qdldl"] {
-            let s = qp::QpSettings {
-                kkt: kkt.into(),
+        for kkt in [KktSolver::Faer, KktSolver::Qdldl] {
+            let s = liftoff::QpSettings {
+                kkt,
                 ..Default::default()
             };
-            g.bench_with_input(BenchmarkId::new(format!("qp-{kkt}"), n), &ops, |b, ops| {
-                b.iter(|| qp::solve(ops, &s).expect("solve"))
-            });
+            g.bench_with_input(
+                BenchmarkId::new(format!("qp-{}", kkt.name()), n),
+                &ops,
+                |b, ops| b.iter(|| qp::solve(ops, &s).expect("solve")),
+            );
         }
     }
     g.finish();

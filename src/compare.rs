@@ -4,11 +4,12 @@ use std::time::Instant;
 
 use serde::Serialize;
 
+use crate::analysis;
+use crate::budget;
 use crate::error::Result;
-use crate::output::summary::{Summary, Times};
-use crate::post;
-use crate::scene::{Contact, MethodKind, Problem};
-use crate::solve;
+use crate::method::Method;
+use crate::output::summary::Summary;
+use crate::scene::Problem;
 use crate::Operators;
 
 /// Differences between the penalty and QP solutions.
@@ -39,35 +40,26 @@ pub struct Comparison {
     pub differences: Differences,
 }
 
-/// Run both methods on the same operators.
+/// Run both unbonded methods (the penalty with the problem's settings when it names the
+/// penalty, defaults otherwise; the QP with defaults) on one assembly of the model.
 pub fn compare(problem: &Problem) -> Result<Comparison> {
-    let mut problem = problem.clone();
-    problem.solver.contact = Contact::Unbonded;
-    let t0 = Instant::now();
-    let ops = Operators::assemble(&Problem {
-        solver: crate::scene::SolverSettings {
-            method: MethodKind::Qp,
-            ..problem.solver
-        },
-        ..problem.clone()
-    })?;
-    let assemble_s = t0.elapsed().as_secs_f64();
-    let run = |method: MethodKind| -> Result<(Summary, post::Report)> {
-        let mut p = problem.clone();
-        p.solver.method = method;
-        let t = Instant::now();
-        let sol = solve::solve(&ops, &p.solver)?;
-        let t_solve = t.elapsed().as_secs_f64();
-        let report = post::report(&p, &ops, &sol);
-        let times = Times {
-            assemble: assemble_s,
-            solve: t_solve,
-            total: assemble_s + t.elapsed().as_secs_f64(),
-        };
-        Ok((Summary::new(&p, &ops, &sol, &report, times), report))
+    let penalty = match &problem.method {
+        Method::Penalty(s) => Method::Penalty(*s),
+        _ => Method::penalty(),
     };
-    let (pen, pen_r) = run(MethodKind::Penalty)?;
-    let (qp, qp_r) = run(MethodKind::Qp)?;
+    let qp = match &problem.method {
+        Method::Qp(s) => Method::Qp(s.clone()),
+        _ => Method::qp(),
+    };
+    for m in [&penalty, &qp] {
+        budget::check(&problem.model, m, problem.memory_limit)?;
+    }
+    let t0 = Instant::now();
+    let ops = Operators::assemble(&problem.model);
+    let assemble_s = t0.elapsed().as_secs_f64();
+    let pen = analysis::run(&problem.model, &ops, &penalty, assemble_s)?;
+    let qp = analysis::run(&problem.model, &ops, &qp, assemble_s)?;
+    let (pen_r, qp_r) = (&pen.report, &qp.report);
     let diff = |a: &[f64], b: &[f64]| {
         a.iter()
             .zip(b)
@@ -93,7 +85,7 @@ pub fn compare(problem: &Problem) -> Result<Comparison> {
             rel_v: dv / amax(&qp_r.field.v).max(f64::MIN_POSITIVE),
             contact_nodes_differing: differing,
         },
-        penalty: pen,
-        qp,
+        penalty: pen.summary,
+        qp: qp.summary,
     })
 }

@@ -62,6 +62,17 @@ impl Error {
         }
     }
 
+    /// Short machine-readable kind, as in the studies' CSV files.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Error::TooLarge { .. } => "too-large",
+            Error::Infeasible(_) => "infeasible",
+            Error::Numerical { .. } => "numerical",
+            Error::Parse(_) | Error::Invalid { .. } | Error::Unsupported(_) => "invalid",
+            Error::Io { .. } => "io",
+        }
+    }
+
     /// Shorthand for [`Error::Numerical`].
     pub fn numerical(stage: impl Into<String>, message: impl Into<String>) -> Self {
         Error::Numerical {

@@ -26,13 +26,19 @@
 #![allow(clippy::needless_range_loop)]
 
 pub mod analysis;
+pub mod budget;
 pub mod compare;
 pub mod error;
 pub mod examples;
 pub mod foundation;
 pub mod mesh;
+pub mod method;
+pub mod model;
 pub mod operators;
+pub mod output;
+pub mod paper;
 pub mod plate;
+pub mod post;
 pub mod quadrature;
 pub mod scene;
 pub mod solve;
@@ -40,9 +46,8 @@ pub mod study;
 
 pub use analysis::{analyse, Analysis};
 pub use error::{Error, Result};
+pub use method::{Method, PenaltySettings, QpSettings};
+pub use model::Model;
 pub use operators::Operators;
 pub use scene::Problem;
-pub use solve::{Solution, Status};
-pub mod output;
-pub mod paper;
-pub mod post;
+pub use solve::{solve, Solution, SolveInfo, Status};

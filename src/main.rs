@@ -3,9 +3,11 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use clap::{Parser, Subcommand, ValueEnum};
+use clap::{Parser, Subcommand};
+use liftoff::method::{Contact, MethodKind};
+use liftoff::model::{ConstraintPoints, SymmetryMode};
 use liftoff::output;
-use liftoff::scene::{ConstraintPoints, Contact, MethodKind, SceneFile, SymmetryMode};
+use liftoff::scene::SceneFile;
 use liftoff::{Error, Problem};
 
 /// Exit codes, one per kind of failure (docs/ERRORS.md).
@@ -48,78 +50,18 @@ enum Command {
     },
 }
 
-#[derive(Clone, Copy, ValueEnum)]
-enum CliContact {
-    Bonded,
-    Unbonded,
-}
-
-#[derive(Clone, Copy, ValueEnum)]
-enum CliMethod {
-    Penalty,
-    Qp,
-}
-
-#[derive(Clone, Copy, ValueEnum)]
-enum CliConstraint {
-    Nodal,
-    Gauss,
-}
-
-#[derive(Clone, Copy, ValueEnum)]
-enum CliSymmetry {
-    Auto,
-    None,
-}
-
-impl From<CliContact> for Contact {
-    fn from(c: CliContact) -> Self {
-        match c {
-            CliContact::Bonded => Contact::Bonded,
-            CliContact::Unbonded => Contact::Unbonded,
-        }
-    }
-}
-
-impl From<CliMethod> for MethodKind {
-    fn from(m: CliMethod) -> Self {
-        match m {
-            CliMethod::Penalty => MethodKind::Penalty,
-            CliMethod::Qp => MethodKind::Qp,
-        }
-    }
-}
-
-impl From<CliConstraint> for ConstraintPoints {
-    fn from(c: CliConstraint) -> Self {
-        match c {
-            CliConstraint::Nodal => ConstraintPoints::Nodal,
-            CliConstraint::Gauss => ConstraintPoints::Gauss,
-        }
-    }
-}
-
-impl From<CliSymmetry> for SymmetryMode {
-    fn from(s: CliSymmetry) -> Self {
-        match s {
-            CliSymmetry::Auto => SymmetryMode::Auto,
-            CliSymmetry::None => SymmetryMode::None,
-        }
-    }
-}
-
 /// Options shared by `solve` and `compare` that override the scene file.
 fn apply_overrides(
     file: &mut SceneFile,
     penalty: Option<f64>,
-    constraint: Option<CliConstraint>,
+    constraint: Option<ConstraintPoints>,
     mesh: Option<[i64; 2]>,
 ) {
     if let Some(p) = penalty {
         file.solver.penalty = p;
     }
     if let Some(c) = constraint {
-        file.solver.constraint = c.into();
+        file.solver.constraint = c;
     }
     if let Some(m) = mesh {
         file.mesh.elements = m.to_vec();
@@ -132,22 +74,22 @@ struct SolveArgs {
     scene: String,
     /// Contact law (overrides [solver] contact).
     #[arg(long, value_enum)]
-    contact: Option<CliContact>,
+    contact: Option<Contact>,
     /// Method for unbonded contact (overrides [solver] method).
     #[arg(long, value_enum)]
-    method: Option<CliMethod>,
+    method: Option<MethodKind>,
     /// Dimensionless penalty ε̄ (overrides [solver] penalty).
     #[arg(long)]
     penalty: Option<f64>,
     /// Constraint points (overrides [solver] constraint).
     #[arg(long, value_enum)]
-    constraint: Option<CliConstraint>,
+    constraint: Option<ConstraintPoints>,
     /// Elements over the whole plate, NX,NY (overrides [mesh] elements).
     #[arg(long, value_parser = parse_mesh)]
     mesh: Option<[i64; 2]>,
     /// Symmetry reduction (overrides [mesh] symmetry).
     #[arg(long, value_enum)]
-    symmetry: Option<CliSymmetry>,
+    symmetry: Option<SymmetryMode>,
     /// Directory for summary.json, CSV tables, plate.vtu and charts.
     #[arg(long)]
     out: Option<PathBuf>,
@@ -165,7 +107,7 @@ struct CompareArgs {
     penalty: Option<f64>,
     /// Constraint points (overrides [solver] constraint).
     #[arg(long, value_enum)]
-    constraint: Option<CliConstraint>,
+    constraint: Option<ConstraintPoints>,
     /// Elements over the whole plate, NX,NY (overrides [mesh] elements).
     #[arg(long, value_parser = parse_mesh)]
     mesh: Option<[i64; 2]>,
@@ -226,7 +168,7 @@ struct PaperArgs {
     out: PathBuf,
     /// Method for the unbonded solves.
     #[arg(long, value_enum, default_value = "penalty")]
-    method: CliMethod,
+    method: MethodKind,
     /// Reading of the paper's load condition 2: patch (γ from Fig. 6's captions), patch=G, or edge-band.
     #[arg(long, default_value = "patch")]
     load2: String,
@@ -284,8 +226,15 @@ impl From<Error> for Failure {
             Error::Numerical { .. } => exit::SOLVER,
             Error::Io { .. } => exit::IO,
         };
+        let hint = match &e {
+            Error::Infeasible(_) => {
+                "\nhint: bonded contact (--contact bonded) lets the foundation pull"
+            }
+            Error::Numerical { .. } => "\nhint: --method qp, or a coarser --mesh",
+            _ => "",
+        };
         Failure {
-            message: e.to_string(),
+            message: format!("{e}{hint}"),
             code,
         }
     }
@@ -337,14 +286,14 @@ fn read_scene(spec: &str) -> Result<(String, SceneFile), Failure> {
 fn solve(args: SolveArgs) -> Result<(), Failure> {
     let (_, mut file) = read_scene(&args.scene)?;
     if let Some(c) = args.contact {
-        file.solver.contact = c.into();
+        file.solver.contact = c;
     }
     if let Some(m) = args.method {
-        file.solver.method = m.into();
+        file.solver.method = m;
     }
     apply_overrides(&mut file, args.penalty, args.constraint, args.mesh);
     if let Some(s) = args.symmetry {
-        file.mesh.symmetry = s.into();
+        file.mesh.symmetry = s;
     }
     let problem = file.validate().map_err(|e| with_scene(&args.scene, e))?;
     if let Some(dir) = &args.out {
@@ -368,9 +317,15 @@ fn solve(args: SolveArgs) -> Result<(), Failure> {
         println!("{SIGN_CONVENTION}");
     }
     if !summary.converged {
+        let hint = match analysis.solution.status {
+            liftoff::Status::PenaltyTooWeak {
+                suggested_penalty, ..
+            } => format!("\nhint: rerun with --penalty {suggested_penalty:.0e} or --method qp"),
+            _ => "\nhint: --method qp solves the same operators as a convex QP".into(),
+        };
         return Err(Failure {
             message: format!(
-                "the {} method did not converge ({}); the numbers above are not a solution and no files were written",
+                "the {} method did not converge ({}); the numbers above are not a solution and no files were written{hint}",
                 summary.method, summary.status
             ),
             code: exit::SOLVER,
@@ -396,7 +351,7 @@ fn compare(args: CompareArgs) -> Result<(), Failure> {
     println!("liftoff compare — {}", p.title);
     println!(
         "  model: {} {} × {} elements ({} pressure nodes), {} foundation, ε̄ = {:e}, {} constraints, assembled once in {:.3} s",
-        p.symmetry, p.model_elements[0], p.model_elements[1], p.nodes, p.foundation, p.dimensionless.penalty, p.constraint, c.assemble_s
+        p.symmetry, p.model_elements[0], p.model_elements[1], p.nodes, p.foundation, p.dimensionless.penalty.unwrap_or(f64::NAN), p.constraint, c.assemble_s
     );
     println!("  {:<22} {:>16} {:>16}", "", "penalty", "qp");
     let status = |x: &output::Summary| {
@@ -504,9 +459,9 @@ fn eps_sweep(args: EpsSweepArgs) -> Result<(), Failure> {
     output::studies::write_sweep(
         &args.out,
         &sweep,
-        &format!("{} — penalty against QP", problem.title),
+        &format!("{} — penalty against QP", problem.model.title),
     )?;
-    println!("liftoff eps-sweep — {}", problem.title);
+    println!("liftoff eps-sweep — {}", problem.model.title);
     println!(
         "  {:<6} {:>9} {:>5} {:>17} {:>11} {:>11} {:>11} {:>9}",
         "points", "ε̄", "steps", "status", "L2 err σ", "L2 err V", "min σ", "time (s)"
@@ -564,9 +519,9 @@ fn tradeoff(args: TradeoffArgs) -> Result<(), Failure> {
     output::studies::write_tradeoff(
         &args.out,
         &t,
-        &format!("{} — speed against accuracy", problem.title),
+        &format!("{} — speed against accuracy", problem.model.title),
     )?;
-    println!("liftoff tradeoff — {}", problem.title);
+    println!("liftoff tradeoff — {}", problem.model.title);
     println!("  reference: {}", t.reference);
     println!(
         "  {:<8} {:>5} {:>9} {:>10} {:>11} {:>17} {:>7}",
@@ -605,28 +560,18 @@ fn stability(args: StabilityArgs) -> Result<(), Failure> {
         bases.push(load_problem(s)?);
     }
     output::prepare_dir(&args.out)?;
-    let mut plan = Vec::new();
-    for base in &bases {
-        for (sweep, values) in liftoff::study::stability_sweeps(base.groups.foundation) {
-            for &v in &values {
-                for method in [MethodKind::Penalty, MethodKind::Qp] {
-                    if sweep == "penalty" && method == MethodKind::Qp {
-                        continue;
-                    }
-                    plan.push((base, sweep, v, method));
-                }
-            }
-        }
-    }
+    let plan = liftoff::study::stability_plan(&bases);
     let pb = progress_bar(plan.len() as u64);
     let mut rows = Vec::new();
-    for (base, sweep, v, method) in plan {
+    for case in &plan {
         pb.set_message(format!(
-            "{} {sweep} = {v:.2e} ({})",
-            base.groups.foundation.name(),
-            method.name()
+            "{} {} = {:.2e} ({})",
+            case.base.model.groups.foundation.name(),
+            case.param.name(),
+            case.value,
+            case.method.name()
         ));
-        rows.push(liftoff::study::stability_run(base, sweep, v, method));
+        rows.push(liftoff::study::stability_run(case));
         pb.inc(1);
     }
     pb.finish_and_clear();
@@ -650,7 +595,7 @@ fn paper(args: PaperArgs) -> Result<(), Failure> {
     let load2: liftoff::paper::LoadCondition2 =
         args.load2.parse().map_err(|e: Error| Failure::from(e))?;
     let options = liftoff::paper::PaperOptions {
-        method: args.method.into(),
+        method: args.method,
         load2,
         refine: args.refine,
     };
@@ -725,7 +670,7 @@ fn print_table(problem: &Problem, s: &output::Summary) {
         "  time       : assemble {:.3} s, solve {:.3} s, total {:.3} s",
         s.time_s.assemble, s.time_s.solve, s.time_s.total
     );
-    match problem.physical {
+    match problem.model.physical {
         Some(_) => {
             println!("  w_max      : {:.3} mm (downward)", s.w_max * 1e3);
             println!("  pressure   : max {:.1} kPa", s.pressure_max / 1e3);

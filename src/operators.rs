@@ -8,12 +8,11 @@
 //!
 //! Nothing here depends on the solution method; methods only read this value.
 
-use crate::error::{Error, Result};
 use crate::foundation::{self, halfspace, winkler, Compliance, FoundationKind};
 use crate::mesh::{Dof, DofMap, Mesh};
+use crate::model::{ConstraintPoints, Load, Model};
 use crate::plate::{self, Section};
 use crate::quadrature::GaussRule;
-use crate::scene::{loads_symmetric, ConstraintPoints, Load, Problem, SymmetryMode};
 
 /// Where σ ≥ 0 is imposed: rows of G (interpolation of nodal σ) and their area weights.
 #[derive(Debug, Clone)]
@@ -59,113 +58,38 @@ pub struct Operators {
     pub notes: Vec<String>,
 }
 
-/// Choose the model: symmetry reduction where the loads allow it and the element counts are
-/// even. Returns the mesh and notes on what was decided.
-pub fn plan_mesh(problem: &Problem) -> (Mesh, Vec<String>) {
-    let mut notes = Vec::new();
-    let mu = problem.groups.mu;
-    let [nx, ny] = problem.elements;
-    let (mut sx, mut sy) = (false, false);
-    if problem.symmetry == SymmetryMode::Auto {
-        sx = loads_symmetric(&problem.loads, true);
-        sy = loads_symmetric(&problem.loads, false);
-        if sx && nx % 2 == 1 {
-            notes.push(format!(
-                "loads are symmetric about x = 0 but mesh.elements[0] = {nx} is odd: modelling the whole width (use an even count to halve the model)"
-            ));
-            sx = false;
-        }
-        if sy && ny % 2 == 1 {
-            notes.push(format!(
-                "loads are symmetric about y = 0 but mesh.elements[1] = {ny} is odd: modelling the whole depth (use an even count to halve the model)"
-            ));
-            sy = false;
-        }
+/// y = A x with sprs's product (CSC or CSR storage alike).
+fn mat_vec(a: sprs::CsMatView<'_, f64>, x: &[f64]) -> Vec<f64> {
+    let mut y = vec![0.0; a.rows()];
+    if a.is_csc() {
+        sprs::prod::mul_acc_mat_vec_csc(a, x, &mut y[..]);
+    } else {
+        sprs::prod::mul_acc_mat_vec_csr(a, x, &mut y[..]);
     }
-    (Mesh::new(2.0, 2.0 * mu, problem.elements, sx, sy), notes)
-}
-
-/// Rough memory need of assembling and solving a model, bytes.
-pub fn estimate_bytes(mesh: &Mesh, foundation: FoundationKind, dense_schur: bool) -> f64 {
-    let n = mesh.n_nodes() as f64;
-    let n_eq = 3.0 * n;
-    // Sparse K, its triplets and a nested-dissection Cholesky factor (≈ 31 n log₂ n entries for a
-    // 2-D grid with 3 dofs per node), 16 bytes per stored entry.
-    let sparse = n_eq * 81.0 * 32.0 + 31.0 * n_eq * n.max(2.0).log2() * 16.0;
-    // Dense operators: T, the Schur complement S, its penalised copy and factor (4 n² doubles)
-    // plus a 256-column block of K⁻B; the QP adds clarabel's KKT system (≈ 47 n² bytes).
-    let mut dense = 0.0;
-    if foundation == FoundationKind::HalfSpace || dense_schur {
-        dense += 4.0 * n * n * 8.0 + n_eq * 256.0 * 8.0;
-    }
-    if dense_schur {
-        dense += crate::solve::qp::clarabel_bytes(mesh.n_nodes());
-    }
-    sparse + dense
-}
-
-/// Refuse a model that will not fit in `limit` bytes.
-pub fn check_memory(
-    mesh: &Mesh,
-    foundation: FoundationKind,
-    dense_schur: bool,
-    limit: f64,
-) -> Result<()> {
-    let need = estimate_bytes(mesh, foundation, dense_schur);
-    if need > limit {
-        let gib = 1024f64.powi(3);
-        let hint = if foundation == FoundationKind::HalfSpace || dense_schur {
-            format!(
-                "the dense operators grow with the square of the {} pressure nodes: use fewer elements (halving each side divides memory by about 16) or an even mesh with symmetric loads",
-                mesh.n_nodes()
-            )
-        } else {
-            "use fewer elements, or an even mesh with symmetric loads".to_string()
-        };
-        return Err(Error::TooLarge {
-            what: format!(
-                "a {} model of {} × {} elements ({} nodes)",
-                mesh.symmetry_name(),
-                mesh.nx,
-                mesh.ny,
-                mesh.n_nodes()
-            ),
-            need_gib: need / gib,
-            limit_gib: limit / gib,
-            hint,
-        });
-    }
-    Ok(())
+    y
 }
 
 impl Operators {
-    /// Assemble all operators of a validated problem.
-    pub fn assemble(problem: &Problem) -> Result<Self> {
-        let (mesh, notes) = plan_mesh(problem);
-        let dense_schur = problem.solver.contact == crate::scene::Contact::Unbonded
-            && problem.solver.method == crate::scene::MethodKind::Qp;
-        check_memory(
-            &mesh,
-            problem.groups.foundation,
-            dense_schur,
-            problem.solver.memory_limit,
-        )?;
-        let g = &problem.groups;
+    /// Assemble all operators of a model. Knows nothing of the method that will use them;
+    /// check the memory budget ([`crate::budget::check`]) first for large models.
+    pub fn assemble(model: &Model) -> Self {
+        let (mesh, notes) = model.plan_mesh();
+        let g = &model.groups;
         let section = Section {
             bending: 1.0,
             shear: 1.0 / (g.mu * g.delta),
             poisson: g.nu,
         };
         let c = g.mu * g.gamma;
-        Ok(Self::build(
+        Self::build(
             mesh,
             section,
             g.foundation,
             c,
-            &problem.loads,
-            problem.solver.constraint,
+            &model.loads,
+            model.constraint,
             notes,
-        ))
+        )
     }
 
     /// Assemble from parts: a mesh, a section, the foundation and its constant
@@ -224,46 +148,22 @@ impl Operators {
 
     /// B σ.
     pub fn b_times(&self, sigma: &[f64]) -> Vec<f64> {
-        let mut y = vec![0.0; self.n_eq()];
-        for (j, col) in self.b.outer_iterator().enumerate() {
-            let s = sigma[j];
-            for (i, &v) in col.iter() {
-                y[i] += v * s;
-            }
-        }
-        y
+        mat_vec(self.b.view(), sigma)
     }
 
     /// Bᵀ u.
     pub fn bt_times(&self, u: &[f64]) -> Vec<f64> {
-        self.b
-            .outer_iterator()
-            .map(|col| col.iter().map(|(i, &v)| v * u[i]).sum())
-            .collect()
+        mat_vec(self.b.transpose_view(), u)
     }
 
     /// K u.
     pub fn k_times(&self, u: &[f64]) -> Vec<f64> {
-        let mut y = vec![0.0; self.n_eq()];
-        for (j, col) in self.k.outer_iterator().enumerate() {
-            let s = u[j];
-            for (i, &v) in col.iter() {
-                y[i] += v * s;
-            }
-        }
-        y
+        mat_vec(self.k.view(), u)
     }
 
     /// G σ: pressure at the constraint points.
     pub fn g_times(&self, sigma: &[f64]) -> Vec<f64> {
-        let g = &self.constraints.g;
-        let mut y = vec![0.0; g.rows()];
-        for (j, col) in g.outer_iterator().enumerate() {
-            for (i, &v) in col.iter() {
-                y[i] += v * sigma[j];
-            }
-        }
-        y
+        mat_vec(self.constraints.g.view(), sigma)
     }
 
     /// Total load on the model, Σ f over the w equations (the model's share of 4P).

@@ -35,13 +35,16 @@ use plotters::prelude::*;
 use serde::Serialize;
 
 use crate::analysis::analyse;
+use crate::budget::default_memory_limit;
 use crate::error::{Error, Result};
 use crate::foundation::FoundationKind;
+use crate::method::{Contact, Method, MethodKind, PenaltySettings};
+use crate::model::{ConstraintPoints, Model, SymmetryMode};
 use crate::output::plot::{caption_size, ensure_font, plot_error, FONT};
 use crate::output::plot::{contour, tick_format, txt};
 use crate::output::Staged;
 use crate::post::{Extent, FullField, Profile, Report, CONTACT_THRESHOLD};
-use crate::scene::{ConstraintPoints, Contact, MethodKind, Problem};
+use crate::scene::{ModelBuilder, Problem};
 use crate::solve::Status;
 
 /// Plate Poisson's ratio ν_p of the paper's examples.
@@ -149,26 +152,20 @@ impl LoadCondition2 {
         Ok(())
     }
 
-    /// The `[[load]]` entries of a dimensionless scene.
-    fn toml(&self, foundation: FoundationKind) -> String {
+    /// Add the loads (dimensionless: uniform pressure 1 on each loaded area) to a model.
+    fn add_loads(&self, builder: ModelBuilder, foundation: FoundationKind) -> ModelBuilder {
         let g = self.gamma(foundation);
-        let patch = |x: [f64; 2], y: [f64; 2]| {
-            format!(
-                "[[load]]\nkind = \"patch\"\nx = [{:?}, {:?}]\ny = [{:?}, {:?}]\npressure = 1.0\n",
-                x[0], x[1], y[0], y[1]
-            )
-        };
         match self {
-            LoadCondition2::CaptionPatch | LoadCondition2::Patch { .. } => patch([-g, g], [-g, g]),
+            LoadCondition2::CaptionPatch | LoadCondition2::Patch { .. } => {
+                builder.patch_load([-g, g], [-g, g], 1.0)
+            }
             LoadCondition2::EdgeBand => {
                 let b = 1.0 - g;
-                [
-                    patch([-1.0, -b], [-1.0, 1.0]),
-                    patch([b, 1.0], [-1.0, 1.0]),
-                    patch([-b, b], [-1.0, -b]),
-                    patch([-b, b], [b, 1.0]),
-                ]
-                .concat()
+                builder
+                    .patch_load([-1.0, -b], [-1.0, 1.0], 1.0)
+                    .patch_load([b, 1.0], [-1.0, 1.0], 1.0)
+                    .patch_load([-b, b], [-1.0, -b], 1.0)
+                    .patch_load([-b, b], [b, 1.0], 1.0)
             }
         }
     }
@@ -449,13 +446,6 @@ impl Case {
         [n, n]
     }
 
-    fn load_toml(&self) -> String {
-        match self.load {
-            Lc::One => "[[load]]\nkind = \"point\"\nx = 0.0\ny = 0.0\nforce = 1.0\n".into(),
-            Lc::Two(lc2) => lc2.toml(self.foundation),
-        }
-    }
-
     fn title(&self) -> String {
         let plate = if self.mu == 1.0 {
             "square plate".to_string()
@@ -475,26 +465,47 @@ impl Case {
         )
     }
 
-    /// The dimensionless scene of this case.
-    fn scene(&self, refine: usize, method: MethodKind) -> String {
+    /// The dimensionless model of this case.
+    fn model(&self, refine: usize) -> Result<Model> {
         let [nx, ny] = self.elements(refine);
-        format!(
-            "title = \"{title}\"\n\n[dimensionless]\nfoundation = \"{f}\"\ngamma = {g:e}\n\
-             delta = {d}\nmu = {mu:?}\nnu = {nu}\n\n{loads}\n[mesh]\nelements = [{nx}, {ny}]\n\
-             symmetry = \"auto\"\n\n[solver]\ncontact = \"{c}\"\nmethod = \"{m}\"\n\
-             penalty = {p:e}\nconstraint = \"nodal\"\n",
-            title = self.title(),
-            f = self.foundation.name(),
-            g = self.gamma,
-            d = DELTA,
-            mu = self.mu,
-            nu = NU,
-            loads = self.load_toml(),
-            c = self.contact.name(),
-            m = method.name(),
-            p = PENALTY,
-        )
+        let builder = Model::builder()
+            .title(self.title())
+            .dimensionless(self.foundation, self.gamma, DELTA, self.mu, NU)
+            .elements(nx, ny)
+            .symmetry(SymmetryMode::Auto)
+            .constraint(ConstraintPoints::Nodal);
+        let builder = match self.load {
+            Lc::One => builder.point_load(0.0, 0.0, 1.0),
+            Lc::Two(lc2) => lc2.add_loads(builder, self.foundation),
+        };
+        builder.build()
     }
+
+    /// The method of this case: bonded, or the unbonded `kind` with the paper's ε̄.
+    fn method(&self, kind: MethodKind) -> Method {
+        match (self.contact, kind) {
+            (Contact::Bonded, _) => Method::Bonded,
+            (Contact::Unbonded, MethodKind::Penalty) => paper_penalty(),
+            (Contact::Unbonded, MethodKind::Qp) => Method::qp(),
+        }
+    }
+
+    /// The problem of this case.
+    fn problem(&self, refine: usize, kind: MethodKind) -> Result<Problem> {
+        Ok(Problem {
+            model: self.model(refine)?,
+            method: self.method(kind),
+            memory_limit: default_memory_limit(),
+        })
+    }
+}
+
+/// The paper's penalty iteration: ε̄ = [`PENALTY`].
+fn paper_penalty() -> Method {
+    Method::Penalty(PenaltySettings {
+        epsilon: PENALTY,
+        ..PenaltySettings::default()
+    })
 }
 
 fn foundation_label(f: FoundationKind) -> &'static str {
@@ -561,8 +572,7 @@ fn solve_case(
     method: MethodKind,
     progress: &mut dyn FnMut(&str),
 ) -> Result<Solved> {
-    let text = case.scene(refine, method);
-    let problem = Problem::from_toml(&text)?;
+    let problem = case.problem(refine, method)?;
     let t0 = Instant::now();
     let a = analyse(&problem)?;
     let time_s = t0.elapsed().as_secs_f64();
@@ -577,8 +587,8 @@ fn solve_case(
     // The paper's own setting: Gauss-point constraints, penalty, at its meshes.
     let (gauss_steps, gauss_contact_radius) = if refine == 1 && case.contact == Contact::Unbonded {
         let mut p = problem.clone();
-        p.solver.method = MethodKind::Penalty;
-        p.solver.constraint = ConstraintPoints::Gauss;
+        p.method = paper_penalty();
+        p.model.constraint = ConstraintPoints::Gauss;
         let g = analyse(&p)?;
         (Some(g.summary.iterations), Some(g.summary.contact_radius))
     } else {
@@ -1822,11 +1832,11 @@ mod tests {
             LoadCondition2::EdgeBand,
         ] {
             for case in cases(lc) {
-                let p = Problem::from_toml(&case.scene(1, MethodKind::Penalty)).expect("scene");
+                let p = case.model(1).expect("scene");
                 assert!((p.resultant() - 4.0).abs() < 1e-12);
                 assert_eq!(p.elements, case.elements(1));
-                assert!(crate::scene::loads_symmetric(&p.loads, true));
-                assert!(crate::scene::loads_symmetric(&p.loads, false));
+                assert!(crate::model::loads_symmetric(&p.loads, true));
+                assert!(crate::model::loads_symmetric(&p.loads, false));
             }
         }
     }

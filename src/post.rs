@@ -9,9 +9,9 @@ use serde::Serialize;
 
 use crate::foundation::nodal_areas;
 use crate::mesh::{Dof, Mesh};
+use crate::model::{Model, Physical};
 use crate::operators::Operators;
 use crate::plate::{centre_resultants, ElementVector};
-use crate::scene::{Physical, Problem};
 use crate::solve::Solution;
 
 /// A node is in contact where its pressure exceeds this fraction of the peak pressure: contact
@@ -201,8 +201,8 @@ pub struct Report {
     pub complementarity: Complementarity,
 }
 
-fn scales(problem: &Problem) -> Physical {
-    problem.physical.unwrap_or(Physical {
+fn scales(model: &Model) -> Physical {
+    model.physical.unwrap_or(Physical {
         half_length: 1.0,
         force: 1.0,
         rigidity: 1.0,
@@ -210,10 +210,10 @@ fn scales(problem: &Problem) -> Physical {
 }
 
 /// Build the report of a solution.
-pub fn report(problem: &Problem, ops: &Operators, sol: &Solution) -> Report {
+pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
     let mesh = &ops.mesh;
-    let mu = problem.groups.mu;
-    let ph = scales(problem);
+    let mu = model.groups.mu;
+    let ph = scales(model);
     let [nx, ny] = mesh.full_elements();
     let nnx = nx + 1;
     let n_full = nnx * (ny + 1);

@@ -8,15 +8,19 @@ use std::time::Instant;
 
 use serde::Serialize;
 
+use crate::budget;
 use crate::error::{Error, Result};
+use crate::foundation::FoundationKind;
+use crate::method::{Method, MethodKind, PenaltySettings};
+use crate::model::{ConstraintPoints, Load, Model};
 use crate::operators::Operators;
 use crate::post;
-use crate::scene::{ConstraintPoints, Contact, MethodKind, Problem};
-use crate::solve::{penalty, qp, Solution, Status};
+use crate::scene::Problem;
+use crate::solve::{self, Solution};
 
 /// Dimensionless nodal fields of a solution: (V at model nodes, σ at model nodes).
-fn fields(ops: &Operators, problem: &Problem, sol: &Solution) -> (Vec<f64>, Vec<f64>) {
-    let mu = problem.groups.mu;
+fn fields(ops: &Operators, model: &Model, sol: &Solution) -> (Vec<f64>, Vec<f64>) {
+    let mu = model.groups.mu;
     (
         ops.node_w(&sol.u),
         sol.sigma.iter().map(|s| mu * s).collect(),
@@ -34,28 +38,6 @@ fn rel_l2(a: &[f64], reference: &[f64]) -> f64 {
     let num: f64 = a.iter().zip(reference).map(|(x, y)| (x - y).powi(2)).sum();
     let den: f64 = reference.iter().map(|y| y * y).sum();
     (num / den.max(f64::MIN_POSITIVE)).sqrt()
-}
-
-/// Short machine-readable kind of an outcome.
-pub fn status_kind(status: &Status) -> &'static str {
-    match status {
-        Status::Converged => "converged",
-        Status::Cycling { .. } => "cycling",
-        Status::IterationLimit { .. } => "iteration-limit",
-        Status::PenaltyTooWeak { .. } => "penalty-too-weak",
-        Status::SolverFailure { .. } => "solver-failure",
-    }
-}
-
-/// Short kind of an error.
-pub fn error_kind(e: &Error) -> &'static str {
-    match e {
-        Error::TooLarge { .. } => "too-large",
-        Error::Infeasible(_) => "infeasible",
-        Error::Numerical { .. } => "numerical",
-        Error::Parse(_) | Error::Invalid { .. } | Error::Unsupported(_) => "invalid",
-        Error::Io { .. } => "io",
-    }
 }
 
 /// One row of `eps_sweep.csv`.
@@ -122,47 +104,50 @@ pub fn eps_sweep(
     let mut rows = Vec::new();
     let mut slopes = Vec::new();
     let mut qp_time_s = Vec::new();
+    let max_iterations = match &problem.method {
+        Method::Penalty(s) => s.max_iterations,
+        _ => PenaltySettings::default().max_iterations,
+    };
     for &kind in constraints {
-        let mut p = problem.clone();
-        p.solver.contact = Contact::Unbonded;
-        p.solver.method = MethodKind::Qp;
-        p.solver.constraint = kind;
-        let ops = Operators::assemble(&p)?;
-        crate::solve::check_feasible(&ops)?;
+        let mut model = problem.model.clone();
+        model.constraint = kind;
+        budget::check(&model, &Method::qp(), problem.memory_limit)?;
+        let ops = Operators::assemble(&model);
+        solve::check_feasible(&ops)?;
         progress(&format!("{}: QP reference", kind.name()));
         let t = Instant::now();
-        let q = qp::solve(&ops, &qp::QpSettings::default())?;
+        let q = solve::solve(&ops, &Method::qp())?;
         qp_time_s.push((kind.name(), t.elapsed().as_secs_f64()));
         if !q.status.converged() {
             return Err(Error::numerical("QP reference", q.status.describe()));
         }
-        let (vq, sq) = fields(&ops, &p, &q);
+        let (vq, sq) = fields(&ops, &model, &q);
         for &eps in epsilons {
             progress(&format!("{}: penalty ε̄ = {eps:.1e}", kind.name()));
             let t = Instant::now();
-            let r = penalty::solve(
+            let r = solve::solve(
                 &ops,
-                &penalty::PenaltySettings {
+                &Method::Penalty(PenaltySettings {
                     epsilon: eps,
-                    max_iterations: p.solver.max_iterations,
-                },
+                    max_iterations,
+                }),
             );
             let time_s = t.elapsed().as_secs_f64();
             let row = match r {
                 Ok(sol) => {
-                    let (v, s) = fields(&ops, &p, &sol);
+                    let (v, s) = fields(&ops, &model, &sol);
                     let gs = ops.g_times(&sol.sigma);
                     let row = SweepRow {
                         constraint: kind.name(),
                         eps,
                         iterations: sol.iterations,
                         converged: sol.status.converged(),
-                        status: status_kind(&sol.status).into(),
+                        status: sol.status.kind().into(),
                         max_abs_sigma_err: max_abs_diff(&s, &sq),
                         max_abs_v_err: max_abs_diff(&v, &vq),
                         rel_l2_sigma: rel_l2(&s, &sq),
                         rel_l2_v: rel_l2(&v, &vq),
-                        min_pressure: p.groups.mu
+                        min_pressure: model.groups.mu
                             * gs.iter().cloned().fold(f64::INFINITY, f64::min),
                         time_s,
                     };
@@ -173,7 +158,7 @@ pub fn eps_sweep(
                     eps,
                     iterations: 0,
                     converged: false,
-                    status: error_kind(&e).into(),
+                    status: e.kind().into(),
                     max_abs_sigma_err: f64::NAN,
                     max_abs_v_err: f64::NAN,
                     rel_l2_sigma: f64::NAN,
@@ -278,8 +263,8 @@ pub struct Tradeoff {
 }
 
 /// V on a 21 × 21 grid of (s, t) over the whole plate, for comparing meshes.
-fn sample_v(problem: &Problem, ops: &Operators, sol: &Solution) -> Vec<f64> {
-    let rep = post::report(problem, ops, sol);
+fn sample_v(model: &Model, ops: &Operators, sol: &Solution) -> Vec<f64> {
+    let rep = post::report(model, ops, sol);
     let mut out = Vec::with_capacity(441);
     for j in 0..21 {
         for i in 0..21 {
@@ -291,9 +276,56 @@ fn sample_v(problem: &Problem, ops: &Operators, sol: &Solution) -> Vec<f64> {
     out
 }
 
+/// The model on n elements along x, the y count following μ (even when n is).
+fn with_mesh(model: &Model, n: usize) -> Model {
+    let mut m = model.clone();
+    let ny = ((n as f64 * m.groups.mu).round() as usize).max(1);
+    let ny = if ny % 2 == 1 && n % 2 == 0 {
+        ny + 1
+    } else {
+        ny
+    };
+    m.elements = [n, ny];
+    m
+}
+
+/// A tradeoff point from a solve that ran, or from the error that stopped it.
+fn tradeoff_point(
+    method: &'static str,
+    mesh: usize,
+    eps: f64,
+    time_s: f64,
+    outcome: std::result::Result<(f64, &Solution), &Error>,
+) -> TradeoffPoint {
+    match outcome {
+        Ok((error, sol)) => TradeoffPoint {
+            method,
+            mesh,
+            eps,
+            time_s,
+            error,
+            converged: sol.status.converged(),
+            status: sol.status.kind().into(),
+            pareto: false,
+        },
+        Err(e) => TradeoffPoint {
+            method,
+            mesh,
+            eps,
+            time_s,
+            error: f64::NAN,
+            converged: false,
+            status: e.kind().into(),
+            pareto: false,
+        },
+    }
+}
+
 /// Each method at each mesh (and each ε̄ for the penalty): wall time against the error in V
 /// relative to a reference: the QP on a mesh twice the finest, or — if that does not fit in
-/// memory — the QP on the finest mesh (the `reference` field says which).
+/// memory — the QP on the finest mesh (the `reference` field says which). The operators of
+/// each mesh are assembled once and shared by the QP and every ε̄; a point's time is that
+/// assembly plus its own solve.
 pub fn tradeoff(
     problem: &Problem,
     meshes: &[usize],
@@ -304,119 +336,65 @@ pub fn tradeoff(
         .iter()
         .copied()
         .max()
-        .ok_or_else(|| Error::invalid("--meshes", "give at least one mesh"))?;
-    let with_mesh = |n: usize, method: MethodKind| {
-        let mut p = problem.clone();
-        p.solver.contact = Contact::Unbonded;
-        p.solver.method = method;
-        let mu = p.groups.mu;
-        let ny = ((n as f64 * mu).round() as usize).max(1);
-        let ny = if ny % 2 == 1 && n % 2 == 0 {
-            ny + 1
-        } else {
-            ny
-        };
-        p.elements = [n, ny];
-        p
-    };
-    let run_qp = |n: usize| -> Result<(Problem, Operators, Solution, f64)> {
-        let p = with_mesh(n, MethodKind::Qp);
-        let t = Instant::now();
-        let ops = Operators::assemble(&p)?;
-        let sol = crate::solve::solve(&ops, &p.solver)?;
-        Ok((p, ops, sol, t.elapsed().as_secs_f64()))
+        .ok_or_else(|| Error::invalid("meshes", "give at least one mesh"))?;
+    let limit = problem.memory_limit;
+    let qp = Method::qp();
+    let reference_at = |n: usize| -> Result<Vec<f64>> {
+        let model = with_mesh(&problem.model, n);
+        budget::check(&model, &qp, limit)?;
+        let ops = Operators::assemble(&model);
+        let sol = solve::solve(&ops, &qp)?;
+        Ok(sample_v(&model, &ops, &sol))
     };
     progress(&format!(
         "reference: QP at {} elements per side",
         2 * finest
     ));
-    let (reference, v_ref) = match run_qp(2 * finest) {
-        Ok((p, ops, sol, _)) => (
+    let (reference, v_ref) = match reference_at(2 * finest) {
+        Ok(v) => (
             format!(
                 "QP on {} elements per side (twice the finest mesh)",
                 2 * finest
             ),
-            sample_v(&p, &ops, &sol),
+            v,
         ),
         Err(Error::TooLarge { .. }) => {
             progress(&format!(
                 "reference at {} does not fit; using the QP at {finest}",
                 2 * finest
             ));
-            let (p, ops, sol, _) = run_qp(finest)?;
-            (format!("QP on {finest} elements per side (the finest mesh; twice it does not fit in memory)"), sample_v(&p, &ops, &sol))
+            (format!("QP on {finest} elements per side (the finest mesh; twice it does not fit in memory)"), reference_at(finest)?)
         }
         Err(e) => return Err(e),
     };
+    let max_iterations = match &problem.method {
+        Method::Penalty(s) => s.max_iterations,
+        _ => PenaltySettings::default().max_iterations,
+    };
     let mut points = Vec::new();
     for &n in meshes {
+        let model = with_mesh(&problem.model, n);
+        let t = Instant::now();
+        let ops = Operators::assemble(&model);
+        let assemble_s = t.elapsed().as_secs_f64();
+        let run = |method: &Method, eps: f64| -> TradeoffPoint {
+            let t = Instant::now();
+            let sol = budget::check(&model, method, limit).and_then(|_| solve::solve(&ops, method));
+            let time_s = assemble_s + t.elapsed().as_secs_f64();
+            let outcome = sol
+                .as_ref()
+                .map(|sol| (rel_l2(&sample_v(&model, &ops, sol), &v_ref), sol));
+            tradeoff_point(method.name(), n, eps, time_s, outcome)
+        };
         progress(&format!("QP at {n}"));
-        match run_qp(n) {
-            Ok((p, ops, sol, time_s)) => {
-                let v = sample_v(&p, &ops, &sol);
-                points.push(TradeoffPoint {
-                    method: "qp",
-                    mesh: n,
-                    eps: f64::NAN,
-                    time_s,
-                    error: rel_l2(&v, &v_ref),
-                    converged: sol.status.converged(),
-                    status: status_kind(&sol.status).into(),
-                    pareto: false,
-                });
-            }
-            Err(e) => points.push(TradeoffPoint {
-                method: "qp",
-                mesh: n,
-                eps: f64::NAN,
-                time_s: f64::NAN,
-                error: f64::NAN,
-                converged: false,
-                status: error_kind(&e).into(),
-                pareto: false,
-            }),
-        }
+        points.push(run(&qp, f64::NAN));
         for &eps in penalties {
             progress(&format!("penalty at {n}, ε̄ = {eps:.0e}"));
-            let mut p = with_mesh(n, MethodKind::Penalty);
-            p.solver.penalty = eps;
-            let t = Instant::now();
-            let outcome = Operators::assemble(&p).and_then(|ops| {
-                let sol = penalty::solve(
-                    &ops,
-                    &penalty::PenaltySettings {
-                        epsilon: eps,
-                        max_iterations: p.solver.max_iterations,
-                    },
-                )?;
-                Ok((ops, sol))
+            let method = Method::Penalty(PenaltySettings {
+                epsilon: eps,
+                max_iterations,
             });
-            let time_s = t.elapsed().as_secs_f64();
-            points.push(match outcome {
-                Ok((ops, sol)) => {
-                    let v = sample_v(&p, &ops, &sol);
-                    TradeoffPoint {
-                        method: "penalty",
-                        mesh: n,
-                        eps,
-                        time_s,
-                        error: rel_l2(&v, &v_ref),
-                        converged: sol.status.converged(),
-                        status: status_kind(&sol.status).into(),
-                        pareto: false,
-                    }
-                }
-                Err(e) => TradeoffPoint {
-                    method: "penalty",
-                    mesh: n,
-                    eps,
-                    time_s,
-                    error: f64::NAN,
-                    converged: false,
-                    status: error_kind(&e).into(),
-                    pareto: false,
-                },
-            });
+            points.push(run(&method, eps));
         }
     }
     let valid: Vec<usize> = (0..points.len())
@@ -432,11 +410,99 @@ pub fn tradeoff(
     Ok(Tradeoff { points, reference })
 }
 
+/// The parameter a stability sweep varies around the base case.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum StabilityParam {
+    /// Γ (plate-to-foundation stiffness).
+    Gamma,
+    /// ε̄ (penalty only).
+    Penalty,
+    /// A single point load at (s, s).
+    Position,
+    /// μ = width / length.
+    Mu,
+    /// Elements per side.
+    Mesh,
+}
+
+crate::names!(StabilityParam, Gamma => "gamma", Penalty => "penalty", Position => "position", Mu => "mu", Mesh => "mesh");
+
+impl StabilityParam {
+    /// Every parameter, in the order of the CSV and the maps.
+    pub const ALL: [StabilityParam; 5] = [
+        StabilityParam::Gamma,
+        StabilityParam::Penalty,
+        StabilityParam::Position,
+        StabilityParam::Mu,
+        StabilityParam::Mesh,
+    ];
+
+    /// The values swept around the paper's base case (Γ = 0.25e-3, ε̄ = 1e-5, central point
+    /// load, μ = 1, 16 × 16 elements).
+    pub fn values(self, foundation: FoundationKind) -> Vec<f64> {
+        match self {
+            StabilityParam::Gamma => log_space(1e-10, 1e8, 10),
+            StabilityParam::Penalty => log_space(1e-2, 1e-14, 13),
+            StabilityParam::Position => vec![0.0, 0.25, 0.5, 0.75, 0.9, 1.0],
+            StabilityParam::Mu => vec![0.1, 0.25, 0.5, 0.75, 1.0],
+            StabilityParam::Mesh => match foundation {
+                // Winkler: sparse penalty up to 512 per side; the dense QP is refused beyond
+                // its limit.
+                FoundationKind::Winkler => vec![8.0, 16.0, 32.0, 64.0, 128.0, 256.0, 512.0],
+                // Half-space: dense for both methods; 512 per side is beyond memory for both.
+                FoundationKind::HalfSpace => vec![8.0, 16.0, 32.0, 64.0, 128.0, 512.0],
+            },
+        }
+    }
+
+    /// The methods this parameter applies to (ε̄ is the penalty's alone).
+    pub fn methods(self) -> &'static [MethodKind] {
+        match self {
+            StabilityParam::Penalty => &[MethodKind::Penalty],
+            _ => &[MethodKind::Penalty, MethodKind::Qp],
+        }
+    }
+}
+
+/// One planned run of the stability sweep.
+#[derive(Debug, Clone, Copy)]
+pub struct StabilityCase<'a> {
+    /// The base problem.
+    pub base: &'a Problem,
+    /// The swept parameter.
+    pub param: StabilityParam,
+    /// Its value.
+    pub value: f64,
+    /// The method.
+    pub method: MethodKind,
+}
+
+/// Every run of `liftoff stability` over the base problems.
+pub fn stability_plan(bases: &[Problem]) -> Vec<StabilityCase<'_>> {
+    let mut plan = Vec::new();
+    for base in bases {
+        for param in StabilityParam::ALL {
+            for value in param.values(base.model.groups.foundation) {
+                for &method in param.methods() {
+                    plan.push(StabilityCase {
+                        base,
+                        param,
+                        value,
+                        method,
+                    });
+                }
+            }
+        }
+    }
+    plan
+}
+
 /// One run of the stability sweep.
 #[derive(Debug, Clone, Serialize)]
 pub struct StabilityRow {
-    /// Which parameter is swept: gamma, penalty, position, mu or mesh.
-    pub sweep: &'static str,
+    /// Which parameter is swept.
+    pub sweep: StabilityParam,
     /// Foundation.
     pub foundation: &'static str,
     /// Method.
@@ -462,81 +528,62 @@ pub struct StabilityRow {
     pub detail: String,
 }
 
-/// The sweeps of `liftoff stability`: (name, values), around the paper's base case
-/// (Γ = 0.25e-3, ε̄ = 1e-5, central point load, μ = 1, 16 × 16 elements).
-pub fn stability_sweeps(
-    foundation: crate::foundation::FoundationKind,
-) -> Vec<(&'static str, Vec<f64>)> {
-    let meshes = match foundation {
-        // Winkler: sparse penalty up to 1024 per side; the dense QP is refused beyond its limit.
-        crate::foundation::FoundationKind::Winkler => {
-            vec![8.0, 16.0, 32.0, 64.0, 128.0, 256.0, 512.0]
-        }
-        // Half-space: dense for both methods; 512 per side is beyond memory for both.
-        crate::foundation::FoundationKind::HalfSpace => vec![8.0, 16.0, 32.0, 64.0, 128.0, 512.0],
+/// Run one configuration of the stability sweep. For the position sweep the loads are replaced
+/// by one point load at (s, s).
+pub fn stability_run(case: &StabilityCase<'_>) -> StabilityRow {
+    let value = case.value;
+    let mut model = case.base.model.clone();
+    let mut method = match (case.method, &case.base.method) {
+        (MethodKind::Penalty, Method::Penalty(s)) => Method::Penalty(*s),
+        (kind, _) => Method::unbonded(kind),
     };
-    vec![
-        ("gamma", log_space(1e-10, 1e8, 10)),
-        ("penalty", log_space(1e-2, 1e-14, 13)),
-        ("position", vec![0.0, 0.25, 0.5, 0.75, 0.9, 1.0]),
-        ("mu", vec![0.1, 0.25, 0.5, 0.75, 1.0]),
-        ("mesh", meshes),
-    ]
-}
-
-/// Run one configuration of the stability sweep. `base` is a problem whose loads are replaced by
-/// one point load at (s, s) for the position sweep.
-pub fn stability_run(
-    base: &Problem,
-    sweep: &'static str,
-    value: f64,
-    method: MethodKind,
-) -> StabilityRow {
-    let mut p = base.clone();
-    p.solver.contact = Contact::Unbonded;
-    p.solver.method = method;
-    match sweep {
-        "gamma" => p.groups.gamma = value,
-        "penalty" => p.solver.penalty = value,
-        "position" => {
-            let mu = p.groups.mu;
-            p.loads = vec![crate::scene::Load::Point {
+    match case.param {
+        StabilityParam::Gamma => model.groups.gamma = value,
+        StabilityParam::Penalty => {
+            if let Method::Penalty(s) = &mut method {
+                s.epsilon = value;
+            }
+        }
+        StabilityParam::Position => {
+            let mu = model.groups.mu;
+            model.loads = vec![Load::Point {
                 x: value,
                 y: value * mu,
                 force: 4.0,
             }];
         }
-        "mu" => {
+        StabilityParam::Mu => {
             // Keep the load where it was in (s, t): rescale y.
-            let old = p.groups.mu;
-            p.groups.mu = value;
-            for l in &mut p.loads {
-                if let crate::scene::Load::Point { y, .. } = l {
+            let old = model.groups.mu;
+            model.groups.mu = value;
+            for l in &mut model.loads {
+                if let Load::Point { y, .. } = l {
                     *y *= value / old;
                 }
             }
         }
-        "mesh" => {
+        StabilityParam::Mesh => {
             let n = value as usize;
-            p.elements = [n, n];
+            model.elements = [n, n];
         }
-        _ => {}
     }
-    let foundation = p.groups.foundation.name();
+    let foundation = model.groups.foundation.name();
     let t = Instant::now();
-    let result = Operators::assemble(&p).and_then(|ops| {
-        let sol = crate::solve::solve(&ops, &p.solver)?;
-        let rep = post::report(&p, &ops, &sol);
+    let result = budget::check(&model, &method, case.base.memory_limit).and_then(|_| {
+        let ops = Operators::assemble(&model);
+        let sol = solve::solve(&ops, &method)?;
+        let rep = post::report(&model, &ops, &sol);
         Ok((sol, rep))
     });
     let time_s = t.elapsed().as_secs_f64();
+    let (sweep, method) = (case.param, case.method.name());
     match result {
         Ok((sol, rep)) => StabilityRow {
             sweep,
             foundation,
-            method: method.name(),
+            method,
             value,
-            outcome: status_kind(&sol.status).into(),
+            outcome: sol.status.kind().into(),
             iterations: sol.iterations,
             equilibrium: rep.resultant.relative_error,
             min_pressure: rep.complementarity.min_pressure,
@@ -548,9 +595,9 @@ pub fn stability_run(
         Err(e) => StabilityRow {
             sweep,
             foundation,
-            method: method.name(),
+            method,
             value,
-            outcome: error_kind(&e).into(),
+            outcome: e.kind().into(),
             iterations: 0,
             equilibrium: f64::NAN,
             min_pressure: f64::NAN,

@@ -97,8 +97,8 @@ fn every_catalogue_entry_has_its_exit_code_and_message() {
 fn qp_solver_status_is_reported() {
     let text = liftoff::examples::scene("paper-halfspace").unwrap_or_default();
     let p = liftoff::Problem::from_toml(text).expect("scene");
-    let ops = liftoff::Operators::assemble(&p).expect("ops");
-    let s = liftoff::solve::qp::QpSettings {
+    let ops = liftoff::Operators::assemble(&p.model);
+    let s = liftoff::QpSettings {
         max_iter: 2,
         ..Default::default()
     };

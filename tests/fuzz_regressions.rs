@@ -41,16 +41,21 @@ fn run(text: &str) -> Outcome {
         Err(e) => panic!("validate returned a non-Invalid error: {e:?}"),
     };
     if std::env::var_os("FUZZ_REGRESSIONS_VERBOSE").is_some() {
-        eprintln!("  validated: {:?}", problem.groups);
+        eprintln!("  validated: {:?}", problem.model.groups);
     }
-    if problem.elements.iter().any(|&n| n > MAX_SOLVED_ELEMENTS) {
+    if problem
+        .model
+        .elements
+        .iter()
+        .any(|&n| n > MAX_SOLVED_ELEMENTS)
+    {
         return Outcome::ValidLarge;
     }
-    let ops = match liftoff::Operators::assemble(&problem) {
-        Ok(o) => o,
-        Err(e) => return Outcome::SolveError(e),
-    };
-    match liftoff::solve::solve(&ops, &problem.solver) {
+    if let Err(e) = liftoff::budget::check(&problem.model, &problem.method, problem.memory_limit) {
+        return Outcome::SolveError(e);
+    }
+    let ops = liftoff::Operators::assemble(&problem.model);
+    match liftoff::solve(&ops, &problem.method) {
         Ok(_) => Outcome::Solved,
         Err(e) => Outcome::SolveError(e),
     }

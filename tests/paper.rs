@@ -1,7 +1,7 @@
 //! The paper's §4 numbers (Ascione, Olivito & Spadea 1983) and `liftoff::paper::run`.
 
+use liftoff::method::MethodKind;
 use liftoff::paper::{self, LoadCondition2, PaperOptions};
-use liftoff::scene::MethodKind;
 use liftoff::{analyse, Analysis, Problem, Status};
 
 const FIG3_HALFSPACE: &str = include_str!("../examples/paper/fig3-halfspace-point.toml");

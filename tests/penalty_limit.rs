@@ -1,7 +1,8 @@
 //! The penalty solution converges to the QP solution at first order in ε̄ (paper §3, DESIGN §3).
 
-use liftoff::scene::{ConstraintPoints, Problem};
+use liftoff::model::ConstraintPoints;
 use liftoff::study::{eps_sweep, log_space};
+use liftoff::Problem;
 
 /// On a Winkler and a half-space scene and for both constraint kinds, the relative L2 error of
 /// σ against the QP on the same operators falls with a fitted log–log slope within 0.1 of 1 over

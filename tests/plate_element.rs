@@ -15,12 +15,12 @@
 //! coefficient of q a⁴/D or P a²/D. Sign convention of the crate: w and loads positive downward.
 
 use liftoff::mesh::{Dof, DofMap, Mesh};
+use liftoff::model::Load;
 use liftoff::operators::load_vector;
 use liftoff::plate::{
     assemble_stiffness, centre_resultants, element_stiffness, ElementMatrix, ElementVector,
     Section, NODE_ETA, NODE_XI,
 };
-use liftoff::scene::Load;
 use liftoff::solve::linalg::{sparse_solve, SparseCholesky};
 use nalgebra::{SMatrix, SVector, SymmetricEigen};
 use proptest::prelude::*;

@@ -1,7 +1,8 @@
 //! Property tests over random scenes (bounded case counts so the suite stays fast).
 
-use liftoff::scene::{Contact, MethodKind, Problem};
+use liftoff::method::{Contact, MethodKind};
 use liftoff::{analyse, Analysis};
+use liftoff::{Method, PenaltySettings, Problem};
 use proptest::prelude::*;
 
 #[derive(Debug, Clone)]
@@ -62,9 +63,14 @@ fn solve(
     eps: f64,
 ) -> Result<Analysis, liftoff::Error> {
     let mut p = Problem::from_toml(text)?;
-    p.solver.contact = contact;
-    p.solver.method = method;
-    p.solver.penalty = eps;
+    p.method = match (contact, method) {
+        (Contact::Bonded, _) => Method::Bonded,
+        (Contact::Unbonded, MethodKind::Penalty) => Method::Penalty(PenaltySettings {
+            epsilon: eps,
+            ..PenaltySettings::default()
+        }),
+        (Contact::Unbonded, MethodKind::Qp) => Method::qp(),
+    };
     analyse(&p)
 }
 

@@ -129,7 +129,7 @@ fn odd_meshes_fall_back_to_the_full_plate_and_say_so() {
         .replace("y = 1.0", "y = 0.0")
         .replace("elements = [8, 8]", "elements = [7, 8]");
     let p = Problem::from_toml(&text).expect("valid");
-    let (mesh, notes) = liftoff::operators::plan_mesh(&p);
+    let (mesh, notes) = p.model.plan_mesh();
     assert_eq!(mesh.symmetry_name(), "half-y");
     assert!(
         notes
@@ -146,7 +146,7 @@ fn meshes_beyond_memory_are_refused_before_allocating() {
         "elements = [3000, 3000]\n[solver]\nmemory_limit_gib = 1.0",
     );
     let p = Problem::from_toml(&text).expect("valid scene");
-    match liftoff::Operators::assemble(&p) {
+    match liftoff::budget::check(&p.model, &p.method, p.memory_limit) {
         Err(Error::TooLarge {
             need_gib,
             limit_gib,

@@ -2,26 +2,27 @@
 
 mod common;
 use common::*;
-use liftoff::scene::{ConstraintPoints, MethodKind};
+use liftoff::method::MethodKind;
+use liftoff::model::ConstraintPoints;
 use liftoff::solve::{penalty, qp};
 use liftoff::{Error, Operators, Problem};
 
 fn ops_of(text: &str) -> (Problem, Operators) {
     let p = Problem::from_toml(text).expect("scene");
-    let o = Operators::assemble(&p).expect("operators");
+    let o = Operators::assemble(&p.model);
     (p, o)
 }
 
 fn solve_both(ops: &Operators, eps: f64) -> (liftoff::Solution, liftoff::Solution) {
     let pen = penalty::solve(
         ops,
-        &penalty::PenaltySettings {
+        &liftoff::PenaltySettings {
             epsilon: eps,
             max_iterations: 50,
         },
     )
     .expect("penalty");
-    let q = qp::solve(ops, &qp::QpSettings::default()).expect("qp");
+    let q = qp::solve(ops, &liftoff::QpSettings::default()).expect("qp");
     assert!(pen.status.converged(), "penalty: {}", pen.status.describe());
     assert!(q.status.converged(), "qp: {}", q.status.describe());
     (pen, q)
@@ -53,7 +54,7 @@ fn penalty_agrees_with_qp_on_the_paper_cases() {
             // between the two ε̄, and the QP tolerance), and that the paper's ε̄ = 1e-5 is within 1e-2 in V.
             let fine = penalty::solve(
                 &ops,
-                &penalty::PenaltySettings {
+                &liftoff::PenaltySettings {
                     epsilon: eps / 10.0,
                     max_iterations: 50,
                 },
@@ -237,7 +238,7 @@ fn infeasible_loads_are_refused_by_both_methods() {
         let up = point_scene("winkler", 1e-3, 0.002857, 1.0, (0.2, 0.1), [8, 8], "")
             .replace("force = 1.0", "force = -1.0");
         let mut p = Problem::from_toml(&up).expect("scene");
-        p.solver.method = method;
+        p.method = liftoff::Method::unbonded(method);
         match liftoff::analyse(&p) {
             Err(Error::Infeasible(msg)) => assert!(msg.contains("upward"), "{method}: {msg}"),
             Err(e) => panic!("{method}: expected Infeasible, got {e}"),
@@ -251,7 +252,7 @@ fn infeasible_loads_are_refused_by_both_methods() {
                 .replace("force = 1.0", "force = 2.0")
         );
         let mut p = Problem::from_toml(&tip).expect("scene");
-        p.solver.method = method;
+        p.method = liftoff::Method::unbonded(method);
         match liftoff::analyse(&p) {
             Err(Error::Infeasible(msg)) => {
                 assert!(msg.contains("tip over"), "{method}: {msg}")
@@ -276,7 +277,7 @@ fn gauss_constraints_agree_between_methods() {
             "[solver]\nconstraint = \"gauss\"",
         );
         let (p, ops) = ops_of(&text);
-        assert_eq!(p.solver.constraint, ConstraintPoints::Gauss);
+        assert_eq!(p.model.constraint, ConstraintPoints::Gauss);
         let (pen, q) = solve_both(&ops, 1e-6);
         let ds = max_abs_diff(&pen.sigma, &q.sigma) / max_abs(&q.sigma);
         assert!(ds < 1e-4, "{found} gauss: Δσ {ds:e}");
@@ -339,7 +340,7 @@ fn oversized_and_ill_conditioned_problems_are_refused() {
         "[solver]\nmethod = \"qp\"\nmemory_limit_gib = 16.0",
     );
     let p = Problem::from_toml(&text).expect("scene");
-    match Operators::assemble(&p) {
+    match liftoff::budget::check(&p.model, &p.method, p.memory_limit) {
         Err(Error::TooLarge {
             need_gib,
             limit_gib,

@@ -140,15 +140,15 @@ pub fn write_stability(dir: &Path, rows: &[StabilityRow], title: &str) -> Result
         let mine: Vec<&StabilityRow> = rows.iter().filter(|r| r.method == method).collect();
         let mut row_keys: Vec<(&str, &str)> = Vec::new();
         for r in &mine {
-            if !row_keys.contains(&(r.foundation, r.sweep)) {
-                row_keys.push((r.foundation, r.sweep));
+            if !row_keys.contains(&(r.foundation, r.sweep.name())) {
+                row_keys.push((r.foundation, r.sweep.name()));
             }
         }
         let cols = row_keys
             .iter()
             .map(|k| {
                 mine.iter()
-                    .filter(|r| (r.foundation, r.sweep) == *k)
+                    .filter(|r| (r.foundation, r.sweep.name()) == *k)
                     .count()
             })
             .max()
@@ -157,7 +157,7 @@ pub fn write_stability(dir: &Path, rows: &[StabilityRow], title: &str) -> Result
         for (ri, k) in row_keys.iter().enumerate() {
             for (ci, r) in mine
                 .iter()
-                .filter(|r| (r.foundation, r.sweep) == *k)
+                .filter(|r| (r.foundation, r.sweep.name()) == *k)
                 .enumerate()
             {
                 let text = if r.outcome == "converged" {

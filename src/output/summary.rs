@@ -4,8 +4,9 @@
 use serde::Serialize;
 
 use crate::error::{Error, Result};
+use crate::method::Method;
+use crate::model::{Model, Physical};
 use crate::post::{Complementarity, Extent, Report, Resultant};
-use crate::scene::{Physical, Problem};
 use crate::solve::{Iteration, Solution};
 use crate::Operators;
 
@@ -20,8 +21,8 @@ pub struct DimensionlessGroups {
     pub mu: f64,
     /// ν_p.
     pub nu: f64,
-    /// ε̄ (used by the penalty method).
-    pub penalty: f64,
+    /// ε̄ of the penalty method (null for the QP and bonded contact, which have none).
+    pub penalty: Option<f64>,
 }
 
 /// Wall-clock times, seconds.
@@ -106,43 +107,42 @@ pub struct Summary {
 impl Summary {
     /// Assemble the summary.
     pub fn new(
-        problem: &Problem,
+        model: &Model,
         ops: &Operators,
         sol: &Solution,
         report: &Report,
         times: Times,
     ) -> Self {
-        let s = &problem.solver;
-        let bonded = s.contact == crate::scene::Contact::Bonded;
+        let named =
+            |v: Vec<(&'static str, f64)>| v.into_iter().map(|(k, x)| (k.to_string(), x)).collect();
         Summary {
-            title: problem.title.clone(),
-            method: if bonded {
-                "direct".into()
-            } else {
-                s.method.name().into()
+            title: model.title.clone(),
+            method: match sol.method {
+                Method::Bonded => "direct".into(),
+                ref m => m.name().into(),
             },
-            contact: s.contact.name().into(),
+            contact: sol.method.contact().name().into(),
             symmetry: ops.mesh.symmetry_name().into(),
-            foundation: problem.groups.foundation.name().into(),
-            constraint: s.constraint.name().into(),
-            elements: problem.elements,
+            foundation: model.groups.foundation.name().into(),
+            constraint: ops.constraints.kind.name().into(),
+            elements: model.elements,
             model_elements: [ops.mesh.nx, ops.mesh.ny],
             nodes: ops.mesh.n_nodes(),
             dofs: ops.n_eq(),
             dimensionless: DimensionlessGroups {
-                gamma: problem.groups.gamma,
-                delta: problem.groups.delta,
-                mu: problem.groups.mu,
-                nu: problem.groups.nu,
-                penalty: s.penalty,
+                gamma: model.groups.gamma,
+                delta: model.groups.delta,
+                mu: model.groups.mu,
+                nu: model.groups.nu,
+                penalty: sol.method.penalty_epsilon(),
             },
-            physical: problem.physical,
+            physical: model.physical,
             converged: sol.status.converged(),
             status: sol.status.describe(),
             iterations: sol.iterations,
             time_s: times,
-            method_time_s: sol.timings.iter().cloned().collect(),
-            solver_info: sol.diagnostics.iter().cloned().collect(),
+            method_time_s: named(sol.info.timings.named()),
+            solver_info: sol.info.qp.map(|q| named(q.named())).unwrap_or_default(),
             w_max: report.w_max,
             V_max: report.v_max,
             V_center: report.v_center,

@@ -13,13 +13,15 @@
 
 use std::time::Instant;
 
-use faer::linalg::solvers::Solve;
 use faer::Mat;
 
-use super::linalg::{dense_cholesky, schur_complement, sparse_solve, PlateInverse, SparseCholesky};
-use super::{discrete_gap, Solution, Status};
+use super::linalg::{
+    dense_cholesky, schur_complement, sparse_solve, DenseLlt, PlateInverse, SparseCholesky,
+};
+use super::{discrete_gap, Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
+use crate::method::Method;
 use crate::operators::Operators;
 
 /// Position of each diagonal entry in the data array of a CSC matrix.
@@ -89,7 +91,7 @@ fn solve_springs(ops: &Operators, t: &[f64]) -> Result<Solution> {
     let gap = discrete_gap(ops, &u, &sigma);
     finite(&u, "bonded Winkler solve")?;
     Ok(Solution {
-        method: "bonded",
+        method: Method::Bonded,
         u,
         sigma,
         gap,
@@ -97,12 +99,15 @@ fn solve_springs(ops: &Operators, t: &[f64]) -> Result<Solution> {
         status: Status::Converged,
         iterations: 1,
         history: Vec::new(),
-        timings: vec![
-            ("analyse".into(), t_an),
-            ("factor".into(), t_fac),
-            ("total".into(), t0.elapsed().as_secs_f64()),
-        ],
-        diagnostics: Vec::new(),
+        info: SolveInfo {
+            timings: Timings {
+                analyse: Some(t_an),
+                factor: Some(t_fac),
+                total: t0.elapsed().as_secs_f64(),
+                ..Timings::default()
+            },
+            qp: None,
+        },
     })
 }
 
@@ -162,7 +167,7 @@ impl SchurSystem {
 
 /// Solve [S −C; −Cᵀ 0][σ; α] = [h; −Rᵀf] given a factor of S.
 pub fn saddle_solve(
-    llt: &faer::linalg::solvers::Llt<f64>,
+    llt: &DenseLlt,
     h: &[f64],
     c: &[Vec<f64>],
     rf: &[f64],
@@ -198,7 +203,7 @@ fn solve_schur(ops: &Operators) -> Result<Solution> {
     finite(&u, "bonded half-space solve")?;
     let gap = discrete_gap(ops, &u, &sigma);
     Ok(Solution {
-        method: "bonded",
+        method: Method::Bonded,
         u,
         sigma,
         gap,
@@ -206,13 +211,16 @@ fn solve_schur(ops: &Operators) -> Result<Solution> {
         status: Status::Converged,
         iterations: 1,
         history: Vec::new(),
-        timings: vec![
-            ("plate factor".into(), sys.time_plate),
-            ("schur".into(), sys.time_schur),
-            ("factor".into(), t_fac),
-            ("total".into(), t0.elapsed().as_secs_f64()),
-        ],
-        diagnostics: Vec::new(),
+        info: SolveInfo {
+            timings: Timings {
+                plate_factor: Some(sys.time_plate),
+                schur: Some(sys.time_schur),
+                factor: Some(t_fac),
+                total: t0.elapsed().as_secs_f64(),
+                ..Timings::default()
+            },
+            qp: None,
+        },
     })
 }
 

@@ -4,11 +4,12 @@
 use std::sync::Arc;
 
 use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::linalg::cholesky::llt;
 use faer::sparse::linalg::cholesky::{
     factorize_symbolic_cholesky, LltRef, SymbolicCholesky, SymmetricOrdering,
 };
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
-use faer::{Mat, MatMut, Side};
+use faer::{Mat, MatMut, Par, Side};
 
 use crate::error::{Error, Result};
 use crate::operators::Operators;
@@ -226,22 +227,59 @@ impl PlateInverse {
     }
 }
 
-/// Dense Cholesky with a stage name in the error. Large dense factorisations use every core
-/// (BLAS-3 work scales), whatever the global setting; sparse ones stay on the caller's setting
-/// (sequential is faster for the plate's K on two cores).
-pub fn dense_cholesky(a: &Mat<f64>, stage: &str) -> Result<faer::linalg::solvers::Llt<f64>> {
-    let previous = faer::get_global_parallelism();
-    if a.nrows() >= 512 {
-        faer::set_global_parallelism(faer::Par::rayon(0));
+/// A dense Cholesky factor L (A = L Lᵀ) with the parallelism it was made with.
+pub struct DenseLlt {
+    l: Mat<f64>,
+    par: Par,
+}
+
+/// Parallelism for a dense factorisation of size n: large ones use every core (BLAS-3 work
+/// scales); small ones stay sequential, where threads cost more than they save.
+fn dense_par(n: usize) -> Par {
+    if n >= 512 {
+        Par::rayon(0)
+    } else {
+        Par::Seq
     }
-    let result = a.llt(Side::Lower);
-    faer::set_global_parallelism(previous);
-    result.map_err(|e| {
+}
+
+impl DenseLlt {
+    /// Solve A X = B in place.
+    pub fn solve_in_place(&self, rhs: MatMut<'_, f64>) {
+        let mut stack = MemBuffer::new(llt::solve::solve_in_place_scratch::<f64>(
+            self.l.nrows(),
+            rhs.ncols(),
+            self.par,
+        ));
+        llt::solve::solve_in_place(self.l.as_ref(), rhs, self.par, MemStack::new(&mut stack));
+    }
+}
+
+/// Dense Cholesky with a stage name in the error. The parallelism is passed explicitly (see
+/// `dense_par`), never through faer's global setting, so concurrent solves do not interfere.
+pub fn dense_cholesky(a: &Mat<f64>, stage: &str) -> Result<DenseLlt> {
+    let n = a.nrows();
+    let par = dense_par(n);
+    let mut l = a.clone();
+    let mut stack = MemBuffer::new(llt::factor::cholesky_in_place_scratch::<f64>(
+        n,
+        par,
+        Default::default(),
+    ));
+    llt::factor::cholesky_in_place(
+        l.as_mut(),
+        Default::default(),
+        par,
+        MemStack::new(&mut stack),
+        Default::default(),
+    )
+    .map_err(|e| {
         Error::numerical(
             stage,
             format!("matrix is not positive definite ({e:?}): the problem is too badly conditioned at this mesh and stiffness ratio"),
         )
-    })
+    })?;
+    Ok(DenseLlt { l, par })
 }
 
 /// Schur complement S = T + Bᵀ K⁻ B (dense, n_σ × n_σ), computed in column blocks so K⁻B is

@@ -10,8 +10,9 @@ pub mod penalty;
 pub mod qp;
 
 use crate::error::{Error, Result};
+use crate::method::Method;
+use crate::model::ConstraintPoints;
 use crate::operators::Operators;
-use crate::scene::{Contact, MethodKind, SolverSettings};
 
 /// Outcome of a solve that ran.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -52,6 +53,17 @@ impl Status {
         matches!(self, Status::Converged)
     }
 
+    /// Short machine-readable kind, as in the studies' CSV files.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Status::Converged => "converged",
+            Status::Cycling { .. } => "cycling",
+            Status::IterationLimit { .. } => "iteration-limit",
+            Status::PenaltyTooWeak { .. } => "penalty-too-weak",
+            Status::SolverFailure { .. } => "solver-failure",
+        }
+    }
+
     /// One-line description.
     pub fn describe(&self) -> String {
         match self {
@@ -67,7 +79,7 @@ impl Status {
                 tension_share,
                 suggested_penalty,
             } => format!(
-                "not converged: lifted points still carry tension (peak {tension_ratio:.1e} of the peak pressure, {:.2} % of the load), so ε̄ is too large for this stiffness ratio; rerun with --penalty {suggested_penalty:.0e} or --method qp",
+                "not converged: lifted points still carry tension (peak {tension_ratio:.1e} of the peak pressure, {:.2} % of the load), so ε̄ is too large for this stiffness ratio; ε̄ = {suggested_penalty:.0e} or the QP should converge",
                 100.0 * tension_share
             ),
             Status::SolverFailure { detail } => format!("not converged: {detail}"),
@@ -90,11 +102,86 @@ pub struct Iteration {
     pub min_pressure: f64,
 }
 
+/// Wall-clock times of a method's phases, seconds; a phase the method does not have is None.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Timings {
+    /// Symbolic analysis of the sparse plate matrix (bonded Winkler).
+    pub analyse: Option<f64>,
+    /// Numeric factorisation of the bonded system.
+    pub factor: Option<f64>,
+    /// Factoring the plate with its rigid modes fixed (Schur routes).
+    pub plate_factor: Option<f64>,
+    /// Forming the Schur complement S = T + BᵀK⁻B.
+    pub schur: Option<f64>,
+    /// Setting up the penalty iteration's linear solver.
+    pub setup: Option<f64>,
+    /// The penalty iteration's linear solves.
+    pub solves: Option<f64>,
+    /// clarabel's set-up and interior-point iterations.
+    pub clarabel: Option<f64>,
+    /// The whole method.
+    pub total: f64,
+}
+
+impl Timings {
+    /// (name, seconds) of the phases present, as in summary.json's `method_time_s`.
+    pub fn named(&self) -> Vec<(&'static str, f64)> {
+        let phases = [
+            ("analyse", self.analyse),
+            ("factor", self.factor),
+            ("plate factor", self.plate_factor),
+            ("schur", self.schur),
+            ("setup", self.setup),
+            ("solves", self.solves),
+            ("clarabel", self.clarabel),
+            ("total", Some(self.total)),
+        ];
+        phases
+            .into_iter()
+            .filter_map(|(n, v)| v.map(|v| (n, v)))
+            .collect()
+    }
+}
+
+/// clarabel's account of a QP solve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct QpDiagnostics {
+    /// Primal residual.
+    pub primal_residual: f64,
+    /// Dual residual.
+    pub dual_residual: f64,
+    /// Objective value.
+    pub objective: f64,
+    /// |primal − dual objective|.
+    pub duality_gap: f64,
+}
+
+impl QpDiagnostics {
+    /// (name, value) pairs, as in summary.json's `solver_info`.
+    pub fn named(&self) -> Vec<(&'static str, f64)> {
+        vec![
+            ("primal_residual", self.primal_residual),
+            ("dual_residual", self.dual_residual),
+            ("objective", self.objective),
+            ("duality_gap", self.duality_gap),
+        ]
+    }
+}
+
+/// How a solve went: timings and the external solver's diagnostics.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct SolveInfo {
+    /// Phase timings.
+    pub timings: Timings,
+    /// clarabel's diagnostics (QP only).
+    pub qp: Option<QpDiagnostics>,
+}
+
 /// What every method returns.
 #[derive(Debug, Clone)]
 pub struct Solution {
-    /// "bonded", "penalty" or "qp".
-    pub method: &'static str,
+    /// The method (with its settings) that produced this solution.
+    pub method: Method,
     /// Plate dofs (unit system).
     pub u: Vec<f64>,
     /// Nodal pressures (unit system; the paper's σ is μ times these).
@@ -109,15 +196,26 @@ pub struct Solution {
     pub iterations: usize,
     /// Per-step history of iterative methods.
     pub history: Vec<Iteration>,
-    /// Named timings of the method's phases, seconds.
-    pub timings: Vec<(String, f64)>,
-    /// Named diagnostics of the method (clarabel's residuals and objective for the QP).
-    pub diagnostics: Vec<(String, f64)>,
+    /// Timings and diagnostics.
+    pub info: SolveInfo,
 }
 
-/// Solve with the contact law and method of the settings.
-pub fn solve(ops: &Operators, settings: &SolverSettings) -> Result<Solution> {
-    let sol = solve_unchecked(ops, settings)?;
+/// Solve the assembled operators with a method: bonded contact directly, unbonded contact (after
+/// a feasibility check) by the penalty iteration or the QP. Every solution's reaction is
+/// checked against the load.
+pub fn solve(ops: &Operators, method: &Method) -> Result<Solution> {
+    method.validate()?;
+    let sol = match method {
+        Method::Bonded => bonded::solve(ops)?,
+        Method::Penalty(settings) => {
+            check_feasible(ops)?;
+            penalty::solve(ops, settings)?
+        }
+        Method::Qp(settings) => {
+            check_feasible(ops)?;
+            qp::solve(ops, settings)?
+        }
+    };
     check_equilibrium(ops, &sol)?;
     Ok(sol)
 }
@@ -135,32 +233,13 @@ pub fn check_equilibrium(ops: &Operators, sol: &Solution) -> Result<()> {
     let rel = (reaction - load).abs() / load.abs().max(f64::MIN_POSITIVE);
     if rel.is_nan() || rel > EQUILIBRIUM_TOLERANCE {
         return Err(Error::numerical(
-            format!("{} solve", sol.method),
+            format!("{} solve", sol.method.name()),
             format!(
-                "the reaction misses the load by {rel:.1e} (relative): the system is too badly conditioned for this plate-to-foundation stiffness ratio; try --method qp, a coarser mesh, or check the units of the moduli"
+                "the reaction misses the load by {rel:.1e} (relative): the system is too badly conditioned for this plate-to-foundation stiffness ratio; try the QP method, a coarser mesh, or check the units of the moduli"
             ),
         ));
     }
     Ok(())
-}
-
-fn solve_unchecked(ops: &Operators, settings: &SolverSettings) -> Result<Solution> {
-    match settings.contact {
-        Contact::Bonded => bonded::solve(ops),
-        Contact::Unbonded => {
-            check_feasible(ops)?;
-            match settings.method {
-                MethodKind::Penalty => penalty::solve(
-                    ops,
-                    &penalty::PenaltySettings {
-                        epsilon: settings.penalty,
-                        max_iterations: settings.max_iterations,
-                    },
-                ),
-                MethodKind::Qp => qp::solve(ops, &qp::QpSettings::default()),
-            }
-        }
-    }
 }
 
 /// A tensionless foundation can only balance a net downward load whose line of action passes
@@ -171,7 +250,7 @@ pub fn check_feasible(ops: &Operators) -> Result<()> {
     let scale: f64 = ops.f.iter().map(|v| v.abs()).sum();
     if total <= 1e-12 * scale {
         return Err(Error::Infeasible(format!(
-            "the net load is upward or zero ({:.3e} in units of P on the model): a foundation that cannot pull cannot hold the plate down; bonded contact (--contact bonded) can",
+            "the net load is upward or zero ({:.3e} in units of P on the model): a foundation that cannot pull cannot hold the plate down; bonded contact can",
             total
         )));
     }
@@ -181,7 +260,7 @@ pub fn check_feasible(ops: &Operators) -> Result<()> {
     // reachable resultants are the bounding box of those centroids — for the consistent
     // (half-space) coupling a third of an element inside the plate edge.
     let c: Vec<Vec<f64>> = ops.rigid.iter().map(|r| ops.bt_times(r)).collect();
-    let nodal = ops.constraints.kind == crate::scene::ConstraintPoints::Nodal;
+    let nodal = ops.constraints.kind == ConstraintPoints::Nodal;
     let m = &ops.mesh;
     let bounds = |k: usize, lo: f64, hi: f64| {
         if nodal {

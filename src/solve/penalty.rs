@@ -25,11 +25,12 @@ use faer::Mat;
 use super::bonded::finite;
 use super::bonded::{diagonal_positions, lumped_coupling, saddle_solve, SchurSystem};
 use super::linalg::{dense_cholesky, faer_view, sparse_solve, SparseCholesky, SparseFactor};
-use super::{discrete_gap, Iteration, Solution, Status};
+use super::{discrete_gap, Iteration, Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
+use crate::method::{Method, PenaltySettings};
+use crate::model::ConstraintPoints;
 use crate::operators::Operators;
-use crate::scene::ConstraintPoints;
 
 /// Largest tension left at lifted points that a converged penalty solution may carry, relative
 /// to the peak pressure and (as a force) to the compressive resultant. The penalty error is O(ε̄): on the paper's cases at ε̄ = 1e-5 the
@@ -41,15 +42,6 @@ pub const TENSION_TOLERANCE: f64 = 1e-4;
 /// penalty solution: 0.1 %. On the paper's cases at ε̄ = 1e-5 the share is ~1e-4 (about 10 ε̄);
 /// a plate balanced on one corner node of a Winkler bed needs 3 %.
 pub const TENSION_FORCE_TOLERANCE: f64 = 1e-3;
-
-/// Settings of the penalty iteration.
-#[derive(Debug, Clone, Copy)]
-pub struct PenaltySettings {
-    /// ε̄ (dimensionless, eq. 4.1f).
-    pub epsilon: f64,
-    /// Cap on linear solves.
-    pub max_iterations: usize,
-}
 
 /// Linear solver of one penalised bilateral problem.
 enum Backend {
@@ -430,7 +422,7 @@ pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
     }
     let gap = discrete_gap(ops, &u, &sigma);
     Ok(Solution {
-        method: "penalty",
+        method: Method::Penalty(*settings),
         u,
         sigma,
         gap,
@@ -438,11 +430,14 @@ pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
         status,
         iterations: history.len(),
         history,
-        timings: vec![
-            ("setup".into(), t_setup),
-            ("solves".into(), t_solves),
-            ("total".into(), t0.elapsed().as_secs_f64()),
-        ],
-        diagnostics: Vec::new(),
+        info: SolveInfo {
+            timings: Timings {
+                setup: Some(t_setup),
+                solves: Some(t_solves),
+                total: t0.elapsed().as_secs_f64(),
+                ..Timings::default()
+            },
+            qp: None,
+        },
     })
 }

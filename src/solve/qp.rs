@@ -23,41 +23,10 @@ use clarabel::solver::{
 
 use super::bonded::finite;
 use super::bonded::SchurSystem;
-use super::{discrete_gap, Solution, Status};
+use super::{discrete_gap, QpDiagnostics, Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
+use crate::method::{Method, QpSettings};
 use crate::operators::Operators;
-
-/// Settings of the QP.
-#[derive(Debug, Clone)]
-pub struct QpSettings {
-    /// Absolute duality-gap tolerance.
-    pub tol_gap_abs: f64,
-    /// Relative duality-gap tolerance.
-    pub tol_gap_rel: f64,
-    /// Feasibility tolerance.
-    pub tol_feas: f64,
-    /// Interior-point iteration cap.
-    pub max_iter: u32,
-    /// clarabel's KKT solver: "faer" or "qdldl".
-    pub kkt: String,
-}
-
-impl Default for QpSettings {
-    fn default() -> Self {
-        Self {
-            tol_gap_abs: 1e-12,
-            tol_gap_rel: 1e-11,
-            tol_feas: 1e-11,
-            max_iter: 200,
-            kkt: "faer".into(),
-        }
-    }
-}
-
-/// Bytes clarabel needs for a dense P of size n (measured ≈ 47 n², DESIGN.md).
-pub fn clarabel_bytes(n: usize) -> f64 {
-    47.0 * (n as f64).powi(2)
-}
 
 /// Solve the unbonded problem as a QP.
 pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
@@ -118,7 +87,7 @@ pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
         .tol_gap_rel(settings.tol_gap_rel)
         .tol_feas(settings.tol_feas)
         .max_iter(settings.max_iter)
-        .direct_solve_method(settings.kkt.clone())
+        .direct_solve_method(settings.kkt.name().to_string())
         .build()
         .map_err(|e| Error::numerical("clarabel settings", format!("{e:?}")))?;
     let t1 = Instant::now();
@@ -147,7 +116,7 @@ pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
     let u = sys.displacements(ops, &sigma, &alpha);
     let gap = discrete_gap(ops, &u, &sigma);
     Ok(Solution {
-        method: "qp",
+        method: Method::Qp(settings.clone()),
         u,
         sigma,
         gap,
@@ -155,17 +124,20 @@ pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
         status,
         iterations: sol.iterations as usize,
         history: Vec::new(),
-        timings: vec![
-            ("plate factor".into(), sys.time_plate),
-            ("schur".into(), t_schur - sys.time_plate),
-            ("clarabel".into(), t_qp),
-            ("total".into(), t0.elapsed().as_secs_f64()),
-        ],
-        diagnostics: vec![
-            ("primal_residual".into(), sol.r_prim),
-            ("dual_residual".into(), sol.r_dual),
-            ("objective".into(), sol.obj_val),
-            ("duality_gap".into(), (sol.obj_val - sol.obj_val_dual).abs()),
-        ],
+        info: SolveInfo {
+            timings: Timings {
+                plate_factor: Some(sys.time_plate),
+                schur: Some(t_schur - sys.time_plate),
+                clarabel: Some(t_qp),
+                total: t0.elapsed().as_secs_f64(),
+                ..Timings::default()
+            },
+            qp: Some(QpDiagnostics {
+                primal_residual: sol.r_prim,
+                dual_residual: sol.r_dual,
+                objective: sol.obj_val,
+                duality_gap: (sol.obj_val - sol.obj_val_dual).abs(),
+            }),
+        },
     })
 }

@@ -1,0 +1,207 @@
+//! How a [`crate::model::Model`] is solved: bonded (bilateral) contact, or unbonded contact by
+//! the paper's penalty iteration or by the convex QP. Settings carry their defaults and check
+//! themselves (`validate`), as clarabel's do; nothing here knows about the command line.
+
+use serde::{Deserialize, Serialize};
+
+use crate::error::{Error, Result};
+
+/// Contact law between plate and foundation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, clap::ValueEnum)]
+#[serde(rename_all = "kebab-case")]
+pub enum Contact {
+    /// Bilateral: the foundation may pull (gap = 0 everywhere).
+    Bonded,
+    /// Unilateral, tensionless: pressure ≥ 0, gap ≥ 0, pressure · gap = 0.
+    Unbonded,
+}
+
+/// Which method solves unbonded contact (the scene's `[solver] method`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, clap::ValueEnum)]
+#[serde(rename_all = "kebab-case")]
+pub enum MethodKind {
+    /// The paper's penalty iteration (eqs. 4.5–4.6).
+    Penalty,
+    /// Convex QP in the contact pressures, solved by clarabel.
+    Qp,
+}
+
+crate::names!(Contact, Bonded => "bonded", Unbonded => "unbonded");
+crate::names!(MethodKind, Penalty => "penalty", Qp => "qp");
+
+/// Settings of the penalty iteration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PenaltySettings {
+    /// ε̄ (dimensionless, eq. 4.1f); the paper uses 1e-5.
+    pub epsilon: f64,
+    /// Cap on linear solves.
+    pub max_iterations: usize,
+}
+
+impl Default for PenaltySettings {
+    fn default() -> Self {
+        Self {
+            epsilon: 1e-5,
+            max_iterations: 50,
+        }
+    }
+}
+
+impl PenaltySettings {
+    /// Check the settings; the error names the scene field.
+    pub fn validate(&self) -> Result<()> {
+        let e = self.epsilon;
+        if !e.is_finite() || e <= 0.0 || e >= 1.0 {
+            return Err(Error::invalid(
+                "solver.penalty",
+                format!("ε̄ must lie in (0, 1), typically 1e-5; got {e}"),
+            ));
+        }
+        if self.max_iterations < 1 || self.max_iterations > 10_000 {
+            return Err(Error::invalid(
+                "solver.max_iterations",
+                format!("must lie in 1..=10000, got {}", self.max_iterations),
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// clarabel's linear solver for the KKT systems.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum KktSolver {
+    /// faer's supernodal LDLᵀ: about 3× faster than QDLDL on dense KKT systems (BENCHMARKS.md).
+    Faer,
+    /// QDLDL, clarabel's default.
+    Qdldl,
+}
+
+impl KktSolver {
+    /// clarabel's name of the solver.
+    pub fn name(self) -> &'static str {
+        match self {
+            KktSolver::Faer => "faer",
+            KktSolver::Qdldl => "qdldl",
+        }
+    }
+}
+
+/// Settings of the QP.
+#[derive(Debug, Clone, PartialEq)]
+pub struct QpSettings {
+    /// Absolute duality-gap tolerance.
+    pub tol_gap_abs: f64,
+    /// Relative duality-gap tolerance.
+    pub tol_gap_rel: f64,
+    /// Feasibility tolerance.
+    pub tol_feas: f64,
+    /// Interior-point iteration cap.
+    pub max_iter: u32,
+    /// clarabel's KKT solver.
+    pub kkt: KktSolver,
+}
+
+impl Default for QpSettings {
+    fn default() -> Self {
+        Self {
+            tol_gap_abs: 1e-12,
+            tol_gap_rel: 1e-11,
+            tol_feas: 1e-11,
+            max_iter: 200,
+            kkt: KktSolver::Faer,
+        }
+    }
+}
+
+impl QpSettings {
+    /// Check the settings.
+    pub fn validate(&self) -> Result<()> {
+        for (name, v) in [
+            ("qp.tol_gap_abs", self.tol_gap_abs),
+            ("qp.tol_gap_rel", self.tol_gap_rel),
+            ("qp.tol_feas", self.tol_feas),
+        ] {
+            if !(v.is_finite() && v > 0.0 && v < 1.0) {
+                return Err(Error::invalid(name, format!("must lie in (0, 1), got {v}")));
+            }
+        }
+        if self.max_iter == 0 {
+            return Err(Error::invalid("qp.max_iter", "must be at least 1"));
+        }
+        Ok(())
+    }
+}
+
+/// A solution method with its settings.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Method {
+    /// Bonded (bilateral) contact: one linear solve.
+    Bonded,
+    /// Unbonded contact by the penalty iteration.
+    Penalty(PenaltySettings),
+    /// Unbonded contact by the convex QP.
+    Qp(QpSettings),
+}
+
+impl Method {
+    /// The penalty iteration with default settings.
+    pub fn penalty() -> Self {
+        Method::Penalty(PenaltySettings::default())
+    }
+
+    /// The QP with default settings.
+    pub fn qp() -> Self {
+        Method::Qp(QpSettings::default())
+    }
+
+    /// The unbonded method of a kind, with default settings.
+    pub fn unbonded(kind: MethodKind) -> Self {
+        match kind {
+            MethodKind::Penalty => Method::penalty(),
+            MethodKind::Qp => Method::qp(),
+        }
+    }
+
+    /// "bonded", "penalty" or "qp".
+    pub fn name(&self) -> &'static str {
+        match self {
+            Method::Bonded => "bonded",
+            Method::Penalty(_) => "penalty",
+            Method::Qp(_) => "qp",
+        }
+    }
+
+    /// The contact law the method solves.
+    pub fn contact(&self) -> Contact {
+        match self {
+            Method::Bonded => Contact::Bonded,
+            _ => Contact::Unbonded,
+        }
+    }
+
+    /// The unbonded method kind (None for bonded contact).
+    pub fn kind(&self) -> Option<MethodKind> {
+        match self {
+            Method::Bonded => None,
+            Method::Penalty(_) => Some(MethodKind::Penalty),
+            Method::Qp(_) => Some(MethodKind::Qp),
+        }
+    }
+
+    /// ε̄ of the penalty method (None for the others).
+    pub fn penalty_epsilon(&self) -> Option<f64> {
+        match self {
+            Method::Penalty(s) => Some(s.epsilon),
+            _ => None,
+        }
+    }
+
+    /// Check the settings.
+    pub fn validate(&self) -> Result<()> {
+        match self {
+            Method::Bonded => Ok(()),
+            Method::Penalty(s) => s.validate(),
+            Method::Qp(s) => s.validate(),
+        }
+    }
+}

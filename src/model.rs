@@ -1,0 +1,274 @@
+//! The method-free model: plate, foundation, loads, mesh and symmetry, constraint points — in the
+//! solver's unit system.
+//!
+//! * lengths in units of L (half the side along x): the plate is [−1, 1] × [−μ, μ];
+//! * forces in units of P, where 4P is the resultant of the loads;
+//! * flexural rigidity D = 1, so deflections are the paper's V = D w / (P L²);
+//! * shear rigidity κ_s = χ G H L² / D = 1 / (μ Δ);
+//! * Winkler modulus K L⁴ / D = 1 / (μ Γ_w); half-space constant
+//!   (1 − ν_s²) D / (π E_s L³) = μ Γ_h.
+//!
+//! The paper's dimensionless pressure is σ = μ L² r / P = μ r in these units.
+//!
+//! A [`Model`] comes from a scene file ([`crate::scene`]) or from Rust through
+//! [`Model::builder`]; either way it says nothing about how it will be solved: that is a
+//! [`crate::method::Method`].
+
+use serde::{Deserialize, Serialize};
+
+use crate::foundation::FoundationKind;
+use crate::mesh::Mesh;
+
+/// Where σ ≥ 0 is imposed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, clap::ValueEnum)]
+#[serde(rename_all = "kebab-case")]
+pub enum ConstraintPoints {
+    /// At the nodes (σ ≥ 0 everywhere for bilinear σ).
+    Nodal,
+    /// At the 2 × 2 Gauss points of each element (the paper's eqs. 4.3–4.4).
+    Gauss,
+}
+
+/// Whether to reduce the model by symmetry.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, clap::ValueEnum)]
+#[serde(rename_all = "kebab-case")]
+pub enum SymmetryMode {
+    /// Model a half or a quarter when the loads allow it.
+    Auto,
+    /// Always model the whole plate.
+    None,
+}
+
+/// `name()` and `Display` for the small enums of scene files and reports.
+#[macro_export]
+macro_rules! names {
+    ($t:ty, $($v:ident => $s:literal),+) => {
+        impl $t {
+            /// Name as written in scene files and reports.
+            pub fn name(self) -> &'static str {
+                match self { $(Self::$v => $s),+ }
+            }
+        }
+        impl std::fmt::Display for $t {
+            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str(self.name())
+            }
+        }
+    };
+}
+names!(ConstraintPoints, Nodal => "nodal", Gauss => "gauss");
+names!(SymmetryMode, Auto => "auto", None => "none");
+
+/// The paper's dimensionless groups of a problem.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Groups {
+    /// Foundation model.
+    pub foundation: FoundationKind,
+    /// Γ_w or Γ_h.
+    pub gamma: f64,
+    /// Δ.
+    pub delta: f64,
+    /// μ.
+    pub mu: f64,
+    /// ν_p.
+    pub nu: f64,
+}
+
+/// Physical scales of a scene given in SI units.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Physical {
+    /// L: half the side along x, m.
+    pub half_length: f64,
+    /// P: a quarter of the load resultant, N.
+    pub force: f64,
+    /// D, N·m.
+    pub rigidity: f64,
+}
+
+impl Physical {
+    /// Scale of deflections: P L² / D (m per unit V).
+    pub fn deflection(&self) -> f64 {
+        self.force * self.half_length.powi(2) / self.rigidity
+    }
+    /// Scale of rotations: P L / D.
+    pub fn rotation(&self) -> f64 {
+        self.force * self.half_length / self.rigidity
+    }
+    /// Scale of pressures in the unit system: P / L² (Pa).
+    pub fn pressure(&self) -> f64 {
+        self.force / self.half_length.powi(2)
+    }
+    /// Scale of moments per unit length: P (N·m/m).
+    pub fn moment(&self) -> f64 {
+        self.force
+    }
+    /// Scale of shear forces per unit length: P / L (N/m).
+    pub fn shear(&self) -> f64 {
+        self.force / self.half_length
+    }
+}
+
+/// A load in the unit system (lengths / L, forces / P), downward positive.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Load {
+    /// Force at a point.
+    Point {
+        /// x / L.
+        x: f64,
+        /// y / L.
+        y: f64,
+        /// F / P.
+        force: f64,
+    },
+    /// Uniform pressure on a rectangle.
+    Patch {
+        /// [x0, x1] / L.
+        x: [f64; 2],
+        /// [y0, y1] / L.
+        y: [f64; 2],
+        /// p L² / P.
+        pressure: f64,
+    },
+}
+
+impl Load {
+    /// Resultant of the load.
+    pub fn resultant(&self) -> f64 {
+        match *self {
+            Load::Point { force, .. } => force,
+            Load::Patch { x, y, pressure } => pressure * (x[1] - x[0]) * (y[1] - y[0]),
+        }
+    }
+
+    /// The load mirrored about x = 0 (`about_x`) or y = 0.
+    pub fn mirrored(&self, about_x: bool) -> Load {
+        match *self {
+            Load::Point { x, y, force } => {
+                if about_x {
+                    Load::Point { x: -x, y, force }
+                } else {
+                    Load::Point { x, y: -y, force }
+                }
+            }
+            Load::Patch { x, y, pressure } => {
+                if about_x {
+                    Load::Patch {
+                        x: [-x[1], -x[0]],
+                        y,
+                        pressure,
+                    }
+                } else {
+                    Load::Patch {
+                        x,
+                        y: [-y[1], -y[0]],
+                        pressure,
+                    }
+                }
+            }
+        }
+    }
+
+    fn close(&self, other: &Load, tol: f64) -> bool {
+        match (*self, *other) {
+            (
+                Load::Point { x, y, force },
+                Load::Point {
+                    x: x2,
+                    y: y2,
+                    force: f2,
+                },
+            ) => {
+                (x - x2).abs() < tol
+                    && (y - y2).abs() < tol
+                    && (force - f2).abs() <= tol * force.abs().max(f2.abs())
+            }
+            (
+                Load::Patch { x, y, pressure },
+                Load::Patch {
+                    x: x2,
+                    y: y2,
+                    pressure: p2,
+                },
+            ) => {
+                (x[0] - x2[0]).abs() < tol
+                    && (x[1] - x2[1]).abs() < tol
+                    && (y[0] - y2[0]).abs() < tol
+                    && (y[1] - y2[1]).abs() < tol
+                    && (pressure - p2).abs() <= tol * pressure.abs().max(p2.abs())
+            }
+            _ => false,
+        }
+    }
+}
+
+/// True when the load set is unchanged by mirroring about x = 0 (`about_x`) or y = 0.
+pub fn loads_symmetric(loads: &[Load], about_x: bool) -> bool {
+    let tol = 1e-9;
+    let mut used = vec![false; loads.len()];
+    for l in loads {
+        let m = l.mirrored(about_x);
+        match loads
+            .iter()
+            .enumerate()
+            .position(|(k, c)| !used[k] && c.close(&m, tol))
+        {
+            Some(k) => used[k] = true,
+            None => return false,
+        }
+    }
+    true
+}
+
+/// A validated model in the solver's unit system (see the module docs).
+#[derive(Debug, Clone)]
+pub struct Model {
+    /// Title for reports.
+    pub title: String,
+    /// Dimensionless groups.
+    pub groups: Groups,
+    /// Physical scales, for scenes given in SI units.
+    pub physical: Option<Physical>,
+    /// Loads, whole plate, unit system; their resultant is ±4.
+    pub loads: Vec<Load>,
+    /// Elements over the whole plate.
+    pub elements: [usize; 2],
+    /// Symmetry mode asked for.
+    pub symmetry: SymmetryMode,
+    /// Where σ ≥ 0 is imposed.
+    pub constraint: ConstraintPoints,
+}
+
+impl Model {
+    /// Sum of the loads in units of P: +4 for a net downward load, −4 for a net upward one.
+    pub fn resultant(&self) -> f64 {
+        self.loads.iter().map(Load::resultant).sum()
+    }
+
+    /// The grid to solve on: a half or a quarter where the loads allow it and the element counts
+    /// are even. Returns the mesh and notes on what was decided.
+    pub fn plan_mesh(&self) -> (Mesh, Vec<String>) {
+        let mut notes = Vec::new();
+        let [nx, ny] = self.elements;
+        let (mut sx, mut sy) = (false, false);
+        if self.symmetry == SymmetryMode::Auto {
+            sx = loads_symmetric(&self.loads, true);
+            sy = loads_symmetric(&self.loads, false);
+            if sx && nx % 2 == 1 {
+                notes.push(format!(
+                    "loads are symmetric about x = 0 but mesh.elements[0] = {nx} is odd: modelling the whole width (use an even count to halve the model)"
+                ));
+                sx = false;
+            }
+            if sy && ny % 2 == 1 {
+                notes.push(format!(
+                    "loads are symmetric about y = 0 but mesh.elements[1] = {ny} is odd: modelling the whole depth (use an even count to halve the model)"
+                ));
+                sy = false;
+            }
+        }
+        (
+            Mesh::new(2.0, 2.0 * self.groups.mu, self.elements, sx, sy),
+            notes,
+        )
+    }
+}

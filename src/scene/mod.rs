@@ -1,0 +1,175 @@
+//! Scene files (TOML): the plate, its foundation, the loads, the mesh and the solver settings,
+//! validated into a [`Problem`]: a method-free [`Model`] in the solver's unit system (see
+//! [`crate::model`]) and the [`Method`] that solves it.
+//!
+//! Two equivalent forms are accepted. A *physical* scene gives `[plate]` and `[foundation]` in SI
+//! units; a *dimensionless* scene gives the paper's groups in `[dimensionless]` (eq. 4.1) and
+//! positions as (s, t) ∈ [−1, 1]². Both become the same [`Model`].
+//!
+//! * [`spec`]: the serde types of the sections, with their defaults;
+//! * [`validate`]: one function per section;
+//! * [`builder`]: [`Model::builder`], the same validation from Rust without writing TOML.
+
+pub mod builder;
+pub mod spec;
+pub mod validate;
+
+pub use builder::ModelBuilder;
+pub use spec::*;
+
+use crate::error::{Error, Result};
+use crate::method::Method;
+use crate::model::Model;
+
+/// A validated scene: what to solve, how, and within how much memory.
+#[derive(Debug, Clone)]
+pub struct Problem {
+    /// The model.
+    pub model: Model,
+    /// The method of `[solver]`.
+    pub method: Method,
+    /// Memory the solver may use, bytes.
+    pub memory_limit: f64,
+}
+
+impl SceneFile {
+    /// Parse TOML text.
+    pub fn parse(text: &str) -> Result<Self> {
+        toml::from_str(text).map_err(|e| Error::Parse(e.to_string()))
+    }
+
+    /// Validate and convert to the unit system.
+    pub fn validate(&self) -> Result<Problem> {
+        validate::problem(self)
+    }
+}
+
+impl Problem {
+    /// Parse and validate scene text.
+    pub fn from_toml(text: &str) -> Result<Self> {
+        SceneFile::parse(text)?.validate()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{loads_symmetric, Load};
+
+    const PHYSICAL: &str = r#"
+[plate]
+length = 6.0
+width = 4.0
+thickness = 0.25
+youngs_modulus = 30e9
+poissons_ratio = 0.2
+[foundation]
+model = "winkler"
+modulus = 5e7
+[[load]]
+kind = "point"
+x = 1.5
+y = 1.0
+force = 2.0e5
+[[load]]
+kind = "uniform"
+pressure = 6.0e3
+[mesh]
+elements = [48, 32]
+symmetry = "auto"
+[solver]
+contact = "unbonded"
+method = "penalty"
+penalty = 1e-5
+constraint = "nodal"
+"#;
+
+    #[test]
+    fn the_documented_physical_scene_parses() {
+        let p = Problem::from_toml(PHYSICAL).unwrap().model;
+        assert_eq!(p.elements, [48, 32]);
+        assert!((p.groups.mu - 4.0 / 6.0).abs() < 1e-15);
+        // Resultant 2e5 + 6e3 · 24 = 344 kN, so P = 86 kN and the loads sum to 4P.
+        assert!((p.resultant() - 4.0).abs() < 1e-12);
+        assert!((p.physical.unwrap().force - 86_000.0).abs() < 1e-6);
+        // Γ_w = D / (K μ L⁴) with D = E H³ / (12 (1 − ν²)).
+        let d = 30e9 * 0.25f64.powi(3) / (12.0 * (1.0 - 0.04));
+        let gw = d / (5e7 * (4.0 / 6.0) * 3f64.powi(4));
+        assert!((p.groups.gamma - gw).abs() < 1e-12 * gw);
+    }
+
+    #[test]
+    fn the_paper_groups_match_eq_4_1() {
+        // Eq. (4.1e) written out for the half-space and Winkler groups.
+        let (e, nu, h, l, w) = (2.0e10, 0.3, 0.1, 1.0, 1.0);
+        let (es, nus, k) = (3.0e7, 0.25, 4.0e7);
+        let mu = w / l;
+        let gh = 1.0 / (12.0 * std::f64::consts::PI) * (1.0 - nus * nus) / (1.0 - nu * nu) * e / es
+            * (h / (mu * l))
+            * (h / l).powi(2);
+        let gw = 1.0 / (12.0 * (1.0 - nu * nu)) * e / (k * l) * (h / (mu * l)) * (h / l).powi(2);
+        let delta = 1.0 / (6.0 * (5.0 / 6.0) * (1.0 - nu)) * (h / (mu * l)) * (h / l);
+        let scene = |found: &str| {
+            format!(
+                "[plate]\nlength = {}\nwidth = {}\nthickness = {h}\nyoungs_modulus = {e}\npoissons_ratio = {nu}\n{found}\n[[load]]\nkind = \"point\"\nx = 0.0\ny = 0.0\nforce = 1.0\n",
+                2.0 * l,
+                2.0 * w
+            )
+        };
+        let ph = Problem::from_toml(&scene(&format!(
+            "[foundation]\nmodel = \"half-space\"\nyoungs_modulus = {es}\npoissons_ratio = {nus}"
+        )))
+        .unwrap()
+        .model;
+        let pw = Problem::from_toml(&scene(&format!(
+            "[foundation]\nmodel = \"winkler\"\nmodulus = {k}"
+        )))
+        .unwrap()
+        .model;
+        assert!(
+            (ph.groups.gamma - gh).abs() < 1e-12 * gh,
+            "Γ_h {} vs eq. 4.1e {gh}",
+            ph.groups.gamma
+        );
+        assert!(
+            (pw.groups.gamma - gw).abs() < 1e-12 * gw,
+            "Γ_w {} vs eq. 4.1e {gw}",
+            pw.groups.gamma
+        );
+        assert!(
+            (ph.groups.delta - delta).abs() < 1e-12 * delta,
+            "Δ {} vs eq. 4.1d {delta}",
+            ph.groups.delta
+        );
+        // The paper's own Δ for H/L = 0.1, ν = 0.3, χ = 5/6, μ = 1 is 0.002857.
+        assert!((ph.groups.delta - 0.002857).abs() < 1e-6);
+    }
+
+    #[test]
+    fn symmetry_of_load_sets() {
+        let a = Load::Point {
+            x: 0.5,
+            y: 0.2,
+            force: 1.0,
+        };
+        let b = Load::Point {
+            x: -0.5,
+            y: 0.2,
+            force: 1.0,
+        };
+        assert!(loads_symmetric(&[a, b], true));
+        assert!(!loads_symmetric(&[a, b], false));
+        assert!(!loads_symmetric(&[a], true));
+        let p = Load::Patch {
+            x: [-1.0, 0.0],
+            y: [-0.5, 0.5],
+            pressure: 2.0,
+        };
+        let q = Load::Patch {
+            x: [0.0, 1.0],
+            y: [-0.5, 0.5],
+            pressure: 2.0,
+        };
+        assert!(loads_symmetric(&[p, q], true) && loads_symmetric(&[p, q], false));
+    }
+}

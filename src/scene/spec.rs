@@ -1,0 +1,209 @@
+//! The scene file as written: serde types of its sections, with their defaults.
+
+use serde::Deserialize;
+
+use crate::foundation::FoundationKind;
+use crate::method::{Contact, MethodKind};
+use crate::model::{ConstraintPoints, SymmetryMode};
+
+/// `[plate]` in SI units.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PlateSpec {
+    /// Full side along x, m.
+    pub length: f64,
+    /// Full side along y, m.
+    pub width: f64,
+    /// Thickness H, m.
+    pub thickness: f64,
+    /// E_p, Pa.
+    pub youngs_modulus: f64,
+    /// ν_p.
+    pub poissons_ratio: f64,
+    /// χ, default 5/6.
+    #[serde(default)]
+    pub shear_correction: Option<f64>,
+}
+
+/// `[foundation]` in SI units.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FoundationSpec {
+    /// "winkler" or "half-space".
+    pub model: FoundationKind,
+    /// Winkler subgrade modulus K, N/m³.
+    #[serde(default)]
+    pub modulus: Option<f64>,
+    /// Half-space E_s, Pa.
+    #[serde(default)]
+    pub youngs_modulus: Option<f64>,
+    /// Half-space ν_s.
+    #[serde(default)]
+    pub poissons_ratio: Option<f64>,
+}
+
+/// `[dimensionless]`: the paper's groups (eq. 4.1).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DimensionlessSpec {
+    /// "winkler" or "half-space".
+    pub foundation: FoundationKind,
+    /// Γ_w or Γ_h.
+    pub gamma: f64,
+    /// Δ.
+    pub delta: f64,
+    /// μ = width / length.
+    pub mu: f64,
+    /// ν_p.
+    pub nu: f64,
+}
+
+/// A coordinate: a number (point loads) or a range [lo, hi] (patch loads).
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(untagged)]
+pub enum Coord {
+    /// A single value.
+    Value(f64),
+    /// A closed interval.
+    Range([f64; 2]),
+}
+
+/// Kind of a load entry.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum LoadKind {
+    /// Concentrated force at (x, y).
+    Point,
+    /// Uniform pressure over the rectangle x = [x0, x1], y = [y0, y1].
+    Patch,
+    /// Uniform pressure over the whole plate (self-weight, surcharge).
+    Uniform,
+}
+
+/// One `[[load]]` entry.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LoadSpec {
+    /// point | patch | uniform.
+    pub kind: LoadKind,
+    /// x (point) or [x0, x1] (patch); m, or s in a dimensionless scene.
+    #[serde(default)]
+    pub x: Option<Coord>,
+    /// y (point) or [y0, y1] (patch); m, or t in a dimensionless scene.
+    #[serde(default)]
+    pub y: Option<Coord>,
+    /// Point force, N downward (relative in a dimensionless scene).
+    #[serde(default)]
+    pub force: Option<f64>,
+    /// Pressure, Pa downward (relative in a dimensionless scene).
+    #[serde(default)]
+    pub pressure: Option<f64>,
+}
+
+/// `[mesh]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MeshSpec {
+    /// Elements [nx, ny] over the whole plate.
+    #[serde(default = "default_elements")]
+    pub elements: Vec<i64>,
+    /// "auto" or "none".
+    #[serde(default = "default_symmetry")]
+    pub symmetry: SymmetryMode,
+}
+
+fn default_elements() -> Vec<i64> {
+    vec![16, 16]
+}
+fn default_symmetry() -> SymmetryMode {
+    SymmetryMode::Auto
+}
+
+impl Default for MeshSpec {
+    fn default() -> Self {
+        Self {
+            elements: default_elements(),
+            symmetry: default_symmetry(),
+        }
+    }
+}
+
+/// `[solver]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SolverSpec {
+    /// "bonded" or "unbonded" (default).
+    #[serde(default = "default_contact")]
+    pub contact: Contact,
+    /// "penalty" (default) or "qp".
+    #[serde(default = "default_method")]
+    pub method: MethodKind,
+    /// Dimensionless penalty ε̄ (eq. 4.1f), default 1e-5 as in the paper.
+    #[serde(default = "default_penalty")]
+    pub penalty: f64,
+    /// "nodal" (default) or "gauss".
+    #[serde(default = "default_constraint")]
+    pub constraint: ConstraintPoints,
+    /// Cap on penalty iterations, default 50.
+    #[serde(default = "default_max_iterations")]
+    pub max_iterations: i64,
+    /// Memory the solver may use, GiB; default 3/4 of the machine's memory.
+    #[serde(default)]
+    pub memory_limit_gib: Option<f64>,
+}
+
+fn default_contact() -> Contact {
+    Contact::Unbonded
+}
+fn default_method() -> MethodKind {
+    MethodKind::Penalty
+}
+fn default_penalty() -> f64 {
+    1e-5
+}
+fn default_constraint() -> ConstraintPoints {
+    ConstraintPoints::Nodal
+}
+fn default_max_iterations() -> i64 {
+    50
+}
+
+impl Default for SolverSpec {
+    fn default() -> Self {
+        Self {
+            contact: default_contact(),
+            method: default_method(),
+            penalty: default_penalty(),
+            constraint: default_constraint(),
+            max_iterations: default_max_iterations(),
+            memory_limit_gib: None,
+        }
+    }
+}
+
+/// A scene file as written.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SceneFile {
+    /// Free text shown in reports.
+    #[serde(default)]
+    pub title: Option<String>,
+    /// Physical plate.
+    #[serde(default)]
+    pub plate: Option<PlateSpec>,
+    /// Physical foundation.
+    #[serde(default)]
+    pub foundation: Option<FoundationSpec>,
+    /// Dimensionless groups (instead of `plate` and `foundation`).
+    #[serde(default)]
+    pub dimensionless: Option<DimensionlessSpec>,
+    /// Loads.
+    #[serde(default)]
+    pub load: Vec<LoadSpec>,
+    /// Mesh.
+    #[serde(default)]
+    pub mesh: MeshSpec,
+    /// Solver settings.
+    #[serde(default)]
+    pub solver: SolverSpec,
+}
