@@ -7,7 +7,7 @@ use clap::{Parser, Subcommand};
 use liftoff::method::{Contact, MethodKind};
 use liftoff::model::{ConstraintPoints, SymmetryMode};
 use liftoff::output;
-use liftoff::scene::SceneFile;
+use liftoff::scene::{PenaltySpec, SceneFile};
 use liftoff::{Error, Problem};
 
 /// Exit codes, one per kind of failure (docs/ERRORS.md).
@@ -53,7 +53,7 @@ enum Command {
 /// Options shared by `solve` and `compare` that override the scene file.
 fn apply_overrides(
     file: &mut SceneFile,
-    penalty: Option<f64>,
+    penalty: Option<PenaltySpec>,
     constraint: Option<ConstraintPoints>,
     mesh: Option<[i64; 2]>,
 ) {
@@ -78,9 +78,9 @@ struct SolveArgs {
     /// Method for unbonded contact (overrides [solver] method).
     #[arg(long, value_enum)]
     method: Option<MethodKind>,
-    /// Dimensionless penalty ε̄ (overrides [solver] penalty).
-    #[arg(long)]
-    penalty: Option<f64>,
+    /// Dimensionless penalty ε̄: auto, or a fixed value such as 1e-5 (overrides [solver] penalty).
+    #[arg(long, value_parser = parse_penalty)]
+    penalty: Option<PenaltySpec>,
     /// Constraint points (overrides [solver] constraint).
     #[arg(long, value_enum)]
     constraint: Option<ConstraintPoints>,
@@ -102,9 +102,9 @@ struct SolveArgs {
 struct CompareArgs {
     /// Scene file (TOML), or `example:NAME` for a bundled scene.
     scene: String,
-    /// Dimensionless penalty ε̄ (overrides [solver] penalty).
-    #[arg(long)]
-    penalty: Option<f64>,
+    /// Dimensionless penalty ε̄: auto, or a fixed value such as 1e-5 (overrides [solver] penalty).
+    #[arg(long, value_parser = parse_penalty)]
+    penalty: Option<PenaltySpec>,
     /// Constraint points (overrides [solver] constraint).
     #[arg(long, value_enum)]
     constraint: Option<ConstraintPoints>,
@@ -175,6 +175,16 @@ struct PaperArgs {
     /// Also solve on meshes 2, 4, … up to this many times finer than the paper's.
     #[arg(long, default_value_t = 1)]
     refine: usize,
+}
+
+fn parse_penalty(s: &str) -> Result<PenaltySpec, String> {
+    match s.trim() {
+        "auto" => Ok(PenaltySpec::Word("auto".into())),
+        v => v
+            .parse::<f64>()
+            .map(PenaltySpec::Value)
+            .map_err(|_| format!("expected auto or a number such as 1e-5, got `{s}`")),
+    }
 }
 
 fn parse_mesh(s: &str) -> Result<[i64; 2], String> {

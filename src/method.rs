@@ -32,22 +32,36 @@ crate::names!(MethodKind, Penalty => "penalty", Qp => "qp");
 /// Settings of the penalty iteration.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PenaltySettings {
-    /// ε̄ (dimensionless, eq. 4.1f); the paper uses 1e-5.
+    /// ε̄ (dimensionless, eq. 4.1f); the paper uses 1e-5. With `auto`, the first ε̄ tried.
     pub epsilon: f64,
-    /// Cap on linear solves.
+    /// Lower ε̄ (continuation from the last penalised set) while a stage ends without a
+    /// solution; false keeps ε̄ fixed, as in the paper.
+    pub auto: bool,
+    /// Cap on linear solves per ε̄.
     pub max_iterations: usize,
 }
 
 impl Default for PenaltySettings {
+    /// Automatic ε̄ from the paper's 1e-5, at most 50 solves per ε̄.
     fn default() -> Self {
         Self {
             epsilon: 1e-5,
+            auto: true,
             max_iterations: 50,
         }
     }
 }
 
 impl PenaltySettings {
+    /// A fixed ε̄, as in the paper.
+    pub fn fixed(epsilon: f64) -> Self {
+        Self {
+            epsilon,
+            auto: false,
+            ..Self::default()
+        }
+    }
+
     /// Check the settings; the error names the scene field.
     pub fn validate(&self) -> Result<()> {
         let e = self.epsilon;

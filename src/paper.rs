@@ -502,10 +502,7 @@ impl Case {
 
 /// The paper's penalty iteration: ε̄ = [`PENALTY`].
 fn paper_penalty() -> Method {
-    Method::Penalty(PenaltySettings {
-        epsilon: PENALTY,
-        ..PenaltySettings::default()
-    })
+    Method::Penalty(PenaltySettings::fixed(PENALTY))
 }
 
 fn foundation_label(f: FoundationKind) -> &'static str {

@@ -128,8 +128,8 @@ pub fn eps_sweep(
             let r = solve::solve(
                 &ops,
                 &Method::Penalty(PenaltySettings {
-                    epsilon: eps,
                     max_iterations,
+                    ..PenaltySettings::fixed(eps)
                 }),
             );
             let time_s = t.elapsed().as_secs_f64();
@@ -391,8 +391,8 @@ pub fn tradeoff(
         for &eps in penalties {
             progress(&format!("penalty at {n}, ε̄ = {eps:.0e}"));
             let method = Method::Penalty(PenaltySettings {
-                epsilon: eps,
                 max_iterations,
+                ..PenaltySettings::fixed(eps)
             });
             points.push(run(&method, eps));
         }

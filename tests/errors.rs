@@ -52,7 +52,7 @@ fn every_catalogue_entry_has_its_exit_code_and_message() {
         Case { id: "E19 net upward load", scene: edit("force = 2.0e5", "force = -2.0e5"), args: vec![], code: 3, message: "net load is upward" },
         Case { id: "E20 resultant out of reach", scene: paper("paper-halfspace", "x = 0.0 ", "x = 1.0 "), args: vec!["--symmetry", "none"], code: 3, message: "tip over" },
         Case { id: "E22 iteration cap", scene: Some(format!("{}[solver]\nmax_iterations = 2\n", liftoff::examples::scene("paper-winkler").unwrap_or_default().replace("[solver]\ncontact = \"unbonded\"\nmethod = \"penalty\"\npenalty = 1e-5\nconstraint = \"nodal\"\n", ""))), args: vec![], code: 4, message: "still changing after 2 iterations" },
-        Case { id: "E23 penalty too weak", scene: paper("paper-halfspace", "gamma = 0.25e-3", "gamma = 1e-9"), args: vec![], code: 4, message: "--penalty" },
+        Case { id: "E23 penalty too weak", scene: paper("paper-halfspace", "gamma = 0.25e-3", "gamma = 1e-9"), args: vec!["--penalty", "1e-5"], code: 4, message: "--penalty" },
         Case { id: "E25 equilibrium lost", scene: paper("paper-winkler", "gamma = 0.25e-3", "gamma = 1e8"), args: vec![], code: 4, message: "reaction misses the load" },
         Case { id: "E29 unreadable scene", scene: None, args: vec![], code: 5, message: "cannot read scene file" },
     ];

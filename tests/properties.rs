@@ -65,10 +65,7 @@ fn solve(
     let mut p = Problem::from_toml(text)?;
     p.method = match (contact, method) {
         (Contact::Bonded, _) => Method::Bonded,
-        (Contact::Unbonded, MethodKind::Penalty) => Method::Penalty(PenaltySettings {
-            epsilon: eps,
-            ..PenaltySettings::default()
-        }),
+        (Contact::Unbonded, MethodKind::Penalty) => Method::Penalty(PenaltySettings::fixed(eps)),
         (Contact::Unbonded, MethodKind::Qp) => Method::qp(),
     };
     analyse(&p)

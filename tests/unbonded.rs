@@ -14,14 +14,7 @@ fn ops_of(text: &str) -> (Problem, Operators) {
 }
 
 fn solve_both(ops: &Operators, eps: f64) -> (liftoff::Solution, liftoff::Solution) {
-    let pen = penalty::solve(
-        ops,
-        &liftoff::PenaltySettings {
-            epsilon: eps,
-            max_iterations: 50,
-        },
-    )
-    .expect("penalty");
+    let pen = penalty::solve(ops, &liftoff::PenaltySettings::fixed(eps)).expect("penalty");
     let q = qp::solve(ops, &liftoff::QpSettings::default()).expect("qp");
     assert!(pen.status.converged(), "penalty: {}", pen.status.describe());
     assert!(q.status.converged(), "qp: {}", q.status.describe());
@@ -52,14 +45,8 @@ fn penalty_agrees_with_qp_on_the_paper_cases() {
             // Penalty error is O(ε̄) (paper §3; DESIGN §3): check first-order decay between ε̄
             // and ε̄/10 (ratio 10 in theory; 3–20 allows for a boundary node that changes set
             // between the two ε̄, and the QP tolerance), and that the paper's ε̄ = 1e-5 is within 1e-2 in V.
-            let fine = penalty::solve(
-                &ops,
-                &liftoff::PenaltySettings {
-                    epsilon: eps / 10.0,
-                    max_iterations: 50,
-                },
-            )
-            .expect("penalty");
+            let fine = penalty::solve(&ops, &liftoff::PenaltySettings::fixed(eps / 10.0))
+                .expect("penalty");
             let ds_fine = max_abs_diff(&fine.sigma, &q.sigma) / scale;
             let ratio = ds / ds_fine;
             eprintln!("{found} μ={mu} Γ={gamma:.2e}: steps {}, Δσ {ds:.2e}, ΔV {dv:.2e}, Δσ(ε̄/10) {ds_fine:.2e}", pen.iterations);

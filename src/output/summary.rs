@@ -7,7 +7,7 @@ use crate::error::{Error, Result};
 use crate::method::Method;
 use crate::model::{Model, Physical};
 use crate::post::{Complementarity, Extent, Report, Resultant};
-use crate::solve::{Iteration, Solution};
+use crate::solve::{Iteration, PenaltyStage, Solution};
 use crate::Operators;
 
 /// Dimensionless groups and penalty.
@@ -100,6 +100,9 @@ pub struct Summary {
     pub complementarity: Complementarity,
     /// Iteration history of the penalty method.
     pub history: Vec<Iteration>,
+    /// The penalty method's stages, one per ε̄ tried (one for a fixed ε̄; empty for other
+    /// methods); the last is the ε̄ reported in `dimensionless.penalty`.
+    pub penalty_stages: Vec<PenaltyStage>,
     /// Modelling notes.
     pub notes: Vec<String>,
 }
@@ -155,6 +158,7 @@ impl Summary {
             resultant: report.resultant,
             complementarity: report.complementarity,
             history: sol.history.clone(),
+            penalty_stages: sol.info.penalty_stages.clone(),
             notes: ops.notes.clone(),
         }
     }

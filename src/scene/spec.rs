@@ -100,6 +100,22 @@ pub struct LoadSpec {
     pub pressure: Option<f64>,
 }
 
+/// `[solver] penalty`: `"auto"` or a fixed ε̄.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(untagged)]
+pub enum PenaltySpec {
+    /// A fixed ε̄.
+    Value(f64),
+    /// A word; only `"auto"` is valid.
+    Word(String),
+}
+
+impl Default for PenaltySpec {
+    fn default() -> Self {
+        PenaltySpec::Word("auto".into())
+    }
+}
+
 /// `[mesh]`.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -138,9 +154,10 @@ pub struct SolverSpec {
     /// "penalty" (default) or "qp".
     #[serde(default = "default_method")]
     pub method: MethodKind,
-    /// Dimensionless penalty ε̄ (eq. 4.1f), default 1e-5 as in the paper.
-    #[serde(default = "default_penalty")]
-    pub penalty: f64,
+    /// Dimensionless penalty ε̄ (eq. 4.1f): `"auto"` (default: from the paper's 1e-5 down to
+    /// what the tension criteria need) or a fixed number (1e-5 reproduces the paper).
+    #[serde(default)]
+    pub penalty: PenaltySpec,
     /// "nodal" (default) or "gauss".
     #[serde(default = "default_constraint")]
     pub constraint: ConstraintPoints,
@@ -158,9 +175,6 @@ fn default_contact() -> Contact {
 fn default_method() -> MethodKind {
     MethodKind::Penalty
 }
-fn default_penalty() -> f64 {
-    1e-5
-}
 fn default_constraint() -> ConstraintPoints {
     ConstraintPoints::Nodal
 }
@@ -173,7 +187,7 @@ impl Default for SolverSpec {
         Self {
             contact: default_contact(),
             method: default_method(),
-            penalty: default_penalty(),
+            penalty: PenaltySpec::default(),
             constraint: default_constraint(),
             max_iterations: default_max_iterations(),
             memory_limit_gib: None,

@@ -1,7 +1,7 @@
 //! Validation of a scene file into a [`Problem`]: one function per section, each naming the
 //! field and the fix in its errors.
 
-use super::spec::{Coord, LoadKind, LoadSpec, MeshSpec, SolverSpec};
+use super::spec::{Coord, LoadKind, LoadSpec, MeshSpec, PenaltySpec, SolverSpec};
 use super::{Problem, SceneFile};
 use crate::budget::default_memory_limit;
 use crate::error::{Error, Result};
@@ -372,11 +372,17 @@ fn elements(spec: &MeshSpec) -> Result<[usize; 2]> {
 
 /// `[solver]`: the method with its settings, and the memory limit in bytes.
 fn solver(s: &SolverSpec) -> Result<(Method, f64)> {
-    PenaltySettings {
-        epsilon: s.penalty,
-        ..PenaltySettings::default()
-    }
-    .validate()?;
+    let penalty = match &s.penalty {
+        PenaltySpec::Value(e) => PenaltySettings::fixed(*e),
+        PenaltySpec::Word(w) if w.trim() == "auto" => PenaltySettings::default(),
+        PenaltySpec::Word(w) => {
+            return Err(Error::invalid(
+                "solver.penalty",
+                format!("`{w}` is neither \"auto\" nor a number; give \"auto\" or an ε̄ in (0, 1) such as 1e-5"),
+            ))
+        }
+    };
+    penalty.validate()?;
     if !(1..=10_000).contains(&s.max_iterations) {
         return Err(Error::invalid(
             "solver.max_iterations",
@@ -384,8 +390,8 @@ fn solver(s: &SolverSpec) -> Result<(Method, f64)> {
         ));
     }
     let penalty = PenaltySettings {
-        epsilon: s.penalty,
         max_iterations: s.max_iterations as usize,
+        ..penalty
     };
     let method = match s.contact {
         Contact::Bonded => Method::Bonded,

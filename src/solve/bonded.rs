@@ -106,7 +106,7 @@ fn solve_springs(ops: &Operators, t: &[f64]) -> Result<Solution> {
                 total: t0.elapsed().as_secs_f64(),
                 ..Timings::default()
             },
-            qp: None,
+            ..SolveInfo::default()
         },
     })
 }
@@ -219,7 +219,7 @@ fn solve_schur(ops: &Operators) -> Result<Solution> {
                 total: t0.elapsed().as_secs_f64(),
                 ..Timings::default()
             },
-            qp: None,
+            ..SolveInfo::default()
         },
     })
 }

@@ -92,6 +92,8 @@ impl Status {
 pub struct Iteration {
     /// Step number, from 1.
     pub step: usize,
+    /// ε̄ of the step.
+    pub epsilon: f64,
     /// Constraint points in the penalised (lifted) set after this step.
     pub penalised: usize,
     /// Points that entered the set in this step.
@@ -168,6 +170,17 @@ impl QpDiagnostics {
     }
 }
 
+/// One ε̄ of the penalty iteration (one stage of the automatic choice).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct PenaltyStage {
+    /// ε̄ of the stage.
+    pub epsilon: f64,
+    /// Linear solves at this ε̄.
+    pub steps: usize,
+    /// How the stage ended ([`Status::kind`]).
+    pub outcome: &'static str,
+}
+
 /// How a solve went: timings and the external solver's diagnostics.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct SolveInfo {
@@ -175,6 +188,8 @@ pub struct SolveInfo {
     pub timings: Timings,
     /// clarabel's diagnostics (QP only).
     pub qp: Option<QpDiagnostics>,
+    /// The stages of the penalty iteration, one per ε̄ (penalty only).
+    pub penalty_stages: Vec<PenaltyStage>,
 }
 
 /// What every method returns.

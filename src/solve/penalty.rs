@@ -25,7 +25,7 @@ use faer::Mat;
 use super::bonded::finite;
 use super::bonded::{diagonal_positions, lumped_coupling, saddle_solve, SchurSystem};
 use super::linalg::{dense_cholesky, faer_view, sparse_solve, SparseCholesky, SparseFactor};
-use super::{discrete_gap, Iteration, Solution, SolveInfo, Status, Timings};
+use super::{discrete_gap, Iteration, PenaltyStage, Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
 use crate::method::{Method, PenaltySettings};
@@ -324,26 +324,45 @@ fn penalty_entries(
     out
 }
 
-/// Run the penalty iteration on the shared operators.
-pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
-    let t0 = Instant::now();
-    let mut backend = Backend::new(ops)?;
-    let t_setup = t0.elapsed().as_secs_f64();
-    let rows = constraint_rows(ops);
-    let n_c = ops.constraints.g.rows();
-    let mut penalised = vec![false; n_c];
+/// Smallest ε̄ the automatic choice goes down to: below it the penalised system loses the
+/// digits the tension criteria need (the penalty springs are 1e14 times softer than the soil).
+pub const MIN_AUTO_EPSILON: f64 = 1e-14;
+
+/// Most continuation stages of the automatic choice of ε̄.
+pub const MAX_AUTO_STAGES: usize = 8;
+
+/// What one ε̄ of the iteration ended with.
+struct StageEnd {
+    status: Status,
+    u: Vec<f64>,
+    sigma: Vec<f64>,
+    alpha: Vec<f64>,
+    penalised: Vec<bool>,
+}
+
+/// Iterate at one ε̄ from the penalised set `start` until the set repeats, cycles or `cap`
+/// steps are taken; steps are appended to `history`.
+#[allow(clippy::too_many_arguments)]
+fn stage(
+    ops: &Operators,
+    backend: &mut Backend,
+    rows: &[Vec<(usize, f64)>],
+    start: Vec<bool>,
+    epsilon: f64,
+    cap: usize,
+    history: &mut Vec<Iteration>,
+    t_solves: &mut f64,
+) -> Result<StageEnd> {
+    let n_c = start.len();
+    let mut penalised = start;
     let mut seen: Vec<Vec<bool>> = vec![penalised.clone()];
-    let mut history = Vec::new();
-    let mut status = Status::IterationLimit {
-        limit: settings.max_iterations,
-    };
+    let mut status = Status::IterationLimit { limit: cap };
     let mut last = None;
-    let mut t_solves = 0.0;
-    for step in 1..=settings.max_iterations {
-        let extra = penalty_entries(ops, &rows, &penalised, settings.epsilon);
+    for _ in 0..cap {
+        let extra = penalty_entries(ops, rows, &penalised, epsilon);
         let ts = Instant::now();
         let (u, sigma, alpha) = backend.solve(ops, &extra)?;
-        t_solves += ts.elapsed().as_secs_f64();
+        *t_solves += ts.elapsed().as_secs_f64();
         finite(&u, "penalty iteration")?;
         finite(&sigma, "penalty iteration")?;
         let gs = ops.g_times(&sigma);
@@ -360,7 +379,8 @@ pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
             .count();
         let count = next.iter().filter(|&&b| b).count();
         history.push(Iteration {
-            step,
+            step: history.len() + 1,
+            epsilon,
             penalised: count,
             entered,
             left,
@@ -380,6 +400,7 @@ pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
             status = Status::Cycling {
                 period: seen.len() - pos,
             };
+            penalised = next;
             break;
         }
         seen.push(next.clone());
@@ -388,46 +409,114 @@ pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
     let (u, sigma, alpha) =
         last.ok_or_else(|| Error::numerical("penalty iteration", "no iteration was run"))?;
     if status == Status::Converged {
-        // Tension left at lifted points, as a fraction of the compressive resultant: O(ε̄) when
-        // the penalty is adequate; finite when the springs hold the plate down (an infeasible
-        // discrete problem) or are too stiff compared with the plate.
-        let gs = ops.g_times(&sigma);
-        let w = &ops.constraints.weights;
-        let pull: f64 = gs.iter().zip(w).map(|(g, w)| (-g).max(0.0) * w).sum();
-        let push: f64 = gs
-            .iter()
-            .zip(w)
-            .map(|(g, w)| g.max(0.0) * w)
-            .sum::<f64>()
-            .max(f64::MIN_POSITIVE);
-        let peak = gs
-            .iter()
-            .cloned()
-            .fold(0.0_f64, f64::max)
-            .max(f64::MIN_POSITIVE);
-        let tension = -gs.iter().cloned().fold(0.0_f64, f64::min);
-        let ratio = tension / peak;
-        let force_ratio = pull / push;
-        if ratio > TENSION_TOLERANCE || force_ratio > TENSION_FORCE_TOLERANCE {
-            // The tension falls like ε̄: aim a hundred times below the tolerance.
-            let shrink = (1e-2 * TENSION_TOLERANCE / ratio)
-                .min(1e-2 * TENSION_FORCE_TOLERANCE / force_ratio)
-                .min(0.1);
-            status = Status::PenaltyTooWeak {
-                tension_ratio: ratio,
-                tension_share: force_ratio,
-                suggested_penalty: settings.epsilon * shrink,
-            };
-        }
+        status = tension_check(ops, &sigma, epsilon);
     }
-    let gap = discrete_gap(ops, &u, &sigma);
-    Ok(Solution {
-        method: Method::Penalty(*settings),
+    Ok(StageEnd {
+        status,
         u,
         sigma,
+        alpha,
+        penalised,
+    })
+}
+
+/// A settled penalised set is a solution only if the tension left at lifted points is within
+/// [`TENSION_TOLERANCE`] of the peak pressure and [`TENSION_FORCE_TOLERANCE`] of the load: O(ε̄)
+/// when the penalty is adequate; finite when the springs hold the plate down (an infeasible
+/// discrete problem) or are too stiff compared with the plate.
+fn tension_check(ops: &Operators, sigma: &[f64], epsilon: f64) -> Status {
+    let gs = ops.g_times(sigma);
+    let w = &ops.constraints.weights;
+    let pull: f64 = gs.iter().zip(w).map(|(g, w)| (-g).max(0.0) * w).sum();
+    let push: f64 = gs
+        .iter()
+        .zip(w)
+        .map(|(g, w)| g.max(0.0) * w)
+        .sum::<f64>()
+        .max(f64::MIN_POSITIVE);
+    let peak = gs
+        .iter()
+        .cloned()
+        .fold(0.0_f64, f64::max)
+        .max(f64::MIN_POSITIVE);
+    let tension = -gs.iter().cloned().fold(0.0_f64, f64::min);
+    let ratio = tension / peak;
+    let force_ratio = pull / push;
+    if ratio > TENSION_TOLERANCE || force_ratio > TENSION_FORCE_TOLERANCE {
+        // The tension falls like ε̄: aim a hundred times below the tolerance.
+        let shrink = (1e-2 * TENSION_TOLERANCE / ratio)
+            .min(1e-2 * TENSION_FORCE_TOLERANCE / force_ratio)
+            .min(0.1);
+        Status::PenaltyTooWeak {
+            tension_ratio: ratio,
+            tension_share: force_ratio,
+            suggested_penalty: epsilon * shrink,
+        }
+    } else {
+        Status::Converged
+    }
+}
+
+/// Run the penalty iteration on the shared operators. With a fixed ε̄ this is the paper's
+/// iteration. With `auto`, it starts at `epsilon` and, while a stage settles with lifted points
+/// that keep more tension than the criteria allow, continues at the smaller ε̄ they suggest
+/// from the last penalised set, on the same backend: the symbolic factorisation (and the last
+/// numeric factor, for Woodbury updates) is reused across stages.
+pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
+    let t0 = Instant::now();
+    let mut backend = Backend::new(ops)?;
+    let t_setup = t0.elapsed().as_secs_f64();
+    let rows = constraint_rows(ops);
+    let n_c = ops.constraints.g.rows();
+    let mut history = Vec::new();
+    let mut stages = Vec::new();
+    let mut t_solves = 0.0;
+    let mut epsilon = settings.epsilon;
+    let mut start = vec![false; n_c];
+    let end = loop {
+        let from = history.len();
+        let end = stage(
+            ops,
+            &mut backend,
+            &rows,
+            start,
+            epsilon,
+            settings.max_iterations,
+            &mut history,
+            &mut t_solves,
+        )?;
+        stages.push(PenaltyStage {
+            epsilon,
+            steps: history.len() - from,
+            outcome: end.status.kind(),
+        });
+        // Only a settled set whose lifted points keep tension asks for a smaller ε̄; a cycle
+        // or the step cap is reported as it is.
+        let next = match end.status {
+            Status::PenaltyTooWeak {
+                suggested_penalty, ..
+            } => Some(suggested_penalty),
+            _ => None,
+        };
+        match next {
+            Some(e) if settings.auto && e >= MIN_AUTO_EPSILON && stages.len() < MAX_AUTO_STAGES => {
+                epsilon = e;
+                start = end.penalised.clone();
+            }
+            _ => break end,
+        }
+    };
+    let gap = discrete_gap(ops, &end.u, &end.sigma);
+    Ok(Solution {
+        method: Method::Penalty(PenaltySettings {
+            epsilon,
+            ..*settings
+        }),
+        u: end.u,
+        sigma: end.sigma,
         gap,
-        rigid: alpha,
-        status,
+        rigid: end.alpha,
+        status: end.status,
         iterations: history.len(),
         history,
         info: SolveInfo {
@@ -438,6 +527,7 @@ pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
                 ..Timings::default()
             },
             qp: None,
+            penalty_stages: stages,
         },
     })
 }

@@ -138,6 +138,7 @@ pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
                 objective: sol.obj_val,
                 duality_gap: (sol.obj_val - sol.obj_val_dual).abs(),
             }),
+            ..SolveInfo::default()
         },
     })
 }
