@@ -16,7 +16,7 @@ use std::time::Instant;
 use faer::Mat;
 
 use super::linalg::{
-    dense_cholesky, schur_complement, sparse_solve, DenseLlt, PlateInverse, SparseCholesky,
+    dense_cholesky, schur_complement, sparse_solve, PlateInverse, SparseCholesky, SpdSolve,
 };
 use super::{discrete_gap, Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
@@ -167,7 +167,7 @@ impl SchurSystem {
 
 /// Solve [S −C; −Cᵀ 0][σ; α] = [h; −Rᵀf] given a factor of S.
 pub fn saddle_solve(
-    llt: &DenseLlt,
+    llt: &impl SpdSolve,
     h: &[f64],
     c: &[Vec<f64>],
     rf: &[f64],

@@ -243,9 +243,14 @@ fn dense_par(n: usize) -> Par {
     }
 }
 
-impl DenseLlt {
-    /// Solve A X = B in place.
-    pub fn solve_in_place(&self, rhs: MatMut<'_, f64>) {
+/// Something that solves A X = B in place for a fixed A.
+pub trait SpdSolve {
+    /// Overwrite `rhs` with A⁻¹ rhs.
+    fn solve_in_place(&self, rhs: MatMut<'_, f64>);
+}
+
+impl SpdSolve for DenseLlt {
+    fn solve_in_place(&self, rhs: MatMut<'_, f64>) {
         let mut stack = MemBuffer::new(llt::solve::solve_in_place_scratch::<f64>(
             self.l.nrows(),
             rhs.ncols(),

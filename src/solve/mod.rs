@@ -6,6 +6,7 @@
 
 pub mod bonded;
 pub mod linalg;
+pub mod low_rank;
 pub mod penalty;
 pub mod qp;
 

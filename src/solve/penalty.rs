@@ -13,7 +13,8 @@
 //! Winkler with nodal constraints keeps the sparse SPD form K + B (T + Σ/ε̄)⁻¹ Bᵀ (only
 //! diagonal values change; the symbolic Cholesky is reused); Winkler with Gauss constraints
 //! solves the sparse saddle system [K B; Bᵀ −(T + Σ/ε̄)] by LU (pattern fixed, values change);
-//! the half-space adds Σ/ε̄ to the Schur complement formed once and factors it densely.
+//! the half-space adds Σ/ε̄ to the Schur complement formed once, factors it densely once and
+//! solves later steps by low-rank updates of that factor ([`super::low_rank`]).
 
 use std::collections::HashMap;
 use std::time::Instant;
@@ -24,7 +25,8 @@ use faer::Mat;
 
 use super::bonded::finite;
 use super::bonded::{diagonal_positions, lumped_coupling, saddle_solve, SchurSystem};
-use super::linalg::{dense_cholesky, faer_view, sparse_solve, SparseCholesky, SparseFactor};
+use super::linalg::{faer_view, sparse_solve, SparseCholesky, SparseFactor};
+use super::low_rank::LowRankSchur;
 use super::{discrete_gap, Iteration, PenaltyStage, Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
@@ -62,7 +64,7 @@ enum Backend {
         t: Vec<f64>,
         symbolic: SymbolicLu<usize>,
     },
-    Schur(Box<SchurSystem>),
+    Schur(Box<SchurSystem>, LowRankSchur),
 }
 
 impl Backend {
@@ -130,16 +132,35 @@ impl Backend {
                     symbolic,
                 })
             }
-            (Compliance::Dense(_), _) => Ok(Backend::Schur(Box::new(SchurSystem::new(ops)?))),
+            (Compliance::Dense(_), _) => Ok(Backend::Schur(
+                Box::new(SchurSystem::new(ops)?),
+                LowRankSchur::new(),
+            )),
         }
     }
 
-    /// Solve with extra compliance `extra` (sparse triplets (i, j, value) over σ indices).
+    /// Solve with the penalty compliance of the `penalised` constraint points at ε̄ = `epsilon`.
     fn solve(
         &mut self,
         ops: &Operators,
-        extra: &[(usize, usize, f64)],
+        rows: &[Vec<(usize, f64)>],
+        penalised: &[bool],
+        epsilon: f64,
     ) -> Result<(Vec<f64>, Vec<f64>, Vec<f64>)> {
+        if let Backend::Schur(sys, low_rank) = self {
+            let scale = ops.foundation_constant / epsilon;
+            let weights: Vec<f64> = penalised
+                .iter()
+                .zip(&ops.constraints.weights)
+                .map(|(&p, &w)| if p { w * scale } else { 0.0 })
+                .collect();
+            let solver = low_rank.prepare(&sys.s, rows, &weights)?;
+            let (sigma, alpha) = saddle_solve(&solver, &sys.h, &sys.c, &sys.rf)?;
+            let u = sys.displacements(ops, &sigma, &alpha);
+            return Ok((u, sigma, alpha));
+        }
+        let extra = penalty_entries(ops, rows, penalised, epsilon);
+        let extra = &extra[..];
         match self {
             Backend::Springs {
                 k,
@@ -228,16 +249,10 @@ impl Backend {
                 let sigma = (n..total).map(|i| rhs[(i, 0)]).collect();
                 Ok((u, sigma, Vec::new()))
             }
-            Backend::Schur(sys) => {
-                let mut s = sys.s.clone();
-                for &(i, j, v) in extra {
-                    s[(i, j)] += v;
-                }
-                let llt = dense_cholesky(&s, "penalised Schur complement")?;
-                let (sigma, alpha) = saddle_solve(&llt, &sys.h, &sys.c, &sys.rf)?;
-                let u = sys.displacements(ops, &sigma, &alpha);
-                Ok((u, sigma, alpha))
-            }
+            Backend::Schur(..) => Err(Error::numerical(
+                "penalty",
+                "the Schur backend is solved above",
+            )),
         }
     }
 }
@@ -359,9 +374,8 @@ fn stage(
     let mut status = Status::IterationLimit { limit: cap };
     let mut last = None;
     for _ in 0..cap {
-        let extra = penalty_entries(ops, rows, &penalised, epsilon);
         let ts = Instant::now();
-        let (u, sigma, alpha) = backend.solve(ops, &extra)?;
+        let (u, sigma, alpha) = backend.solve(ops, rows, &penalised, epsilon)?;
         *t_solves += ts.elapsed().as_secs_f64();
         finite(&u, "penalty iteration")?;
         finite(&sigma, "penalty iteration")?;
