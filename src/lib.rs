@@ -31,6 +31,7 @@ pub mod error;
 pub mod examples;
 pub mod foundation;
 pub mod mesh;
+pub mod metrics;
 pub mod operators;
 pub mod plate;
 pub mod quadrature;

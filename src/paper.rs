@@ -37,6 +37,7 @@ use serde::Serialize;
 use crate::analysis::analyse;
 use crate::error::{Error, Result};
 use crate::foundation::FoundationKind;
+use crate::metrics::{rel_l2 as rel_rms, rel_max};
 use crate::output::plot::{caption_size, ensure_font, plot_error, FONT};
 use crate::output::plot::{contour, tick_format, txt};
 use crate::output::Staged;
@@ -664,30 +665,6 @@ fn overlap(a: &FullField, b: &FullField) -> f64 {
         1.0
     } else {
         both as f64 / any as f64
-    }
-}
-
-fn rel_max(a: &[f64], b: &[f64]) -> f64 {
-    let d = a
-        .iter()
-        .zip(b)
-        .map(|(x, y)| (x - y).abs())
-        .fold(0.0, f64::max);
-    let m = b.iter().map(|x| x.abs()).fold(0.0, f64::max);
-    if m > 0.0 {
-        d / m
-    } else {
-        d
-    }
-}
-
-fn rel_rms(a: &[f64], b: &[f64]) -> f64 {
-    let d: f64 = a.iter().zip(b).map(|(x, y)| (x - y) * (x - y)).sum();
-    let m: f64 = b.iter().map(|x| x * x).sum();
-    if m > 0.0 {
-        (d / m).sqrt()
-    } else {
-        d.sqrt()
     }
 }
 
