@@ -33,6 +33,7 @@ pub mod examples;
 pub mod foundation;
 pub mod mesh;
 pub mod method;
+pub mod metrics;
 pub mod model;
 pub mod operators;
 pub mod output;

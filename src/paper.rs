@@ -30,8 +30,7 @@ use std::path::Path;
 use std::str::FromStr;
 use std::time::Instant;
 
-use plotters::coord::Shift;
-use plotters::prelude::*;
+use plotters::style::RGBColor;
 use serde::Serialize;
 
 use crate::analysis::analyse;
@@ -39,11 +38,12 @@ use crate::budget::default_memory_limit;
 use crate::error::{Error, Result};
 use crate::foundation::FoundationKind;
 use crate::method::{Contact, Method, MethodKind, PenaltySettings};
+use crate::metrics::{rel_l2 as rel_rms, rel_max};
 use crate::model::{ConstraintPoints, Model, SymmetryMode};
-use crate::output::plot::{caption_size, ensure_font, plot_error, FONT};
-use crate::output::plot::{contour, tick_format, txt};
+use crate::output::chart::style::SERIES;
+use crate::output::chart::{write_contact_regions, write_profile_comparison, Curve, Region};
 use crate::output::Staged;
-use crate::post::{Extent, FullField, Profile, Report, CONTACT_THRESHOLD};
+use crate::post::{Extent, FullField, Report, CONTACT_THRESHOLD};
 use crate::scene::{ModelBuilder, Problem};
 use crate::solve::Status;
 
@@ -674,30 +674,6 @@ fn overlap(a: &FullField, b: &FullField) -> f64 {
     }
 }
 
-fn rel_max(a: &[f64], b: &[f64]) -> f64 {
-    let d = a
-        .iter()
-        .zip(b)
-        .map(|(x, y)| (x - y).abs())
-        .fold(0.0, f64::max);
-    let m = b.iter().map(|x| x.abs()).fold(0.0, f64::max);
-    if m > 0.0 {
-        d / m
-    } else {
-        d
-    }
-}
-
-fn rel_rms(a: &[f64], b: &[f64]) -> f64 {
-    let d: f64 = a.iter().zip(b).map(|(x, y)| (x - y) * (x - y)).sum();
-    let m: f64 = b.iter().map(|x| x * x).sum();
-    if m > 0.0 {
-        (d / m).sqrt()
-    } else {
-        d.sqrt()
-    }
-}
-
 /// Solve the paper's cases, draw Figs. 3–7 into `out` (SVG and PNG), and write `paper.json` and
 /// `paper.md`. Every file is staged and moved into `out` only when all were written. `progress`
 /// receives one line per solve.
@@ -1053,38 +1029,11 @@ fn loaded_areas(load2: LoadCondition2, foundation: FoundationKind) -> Vec<[(f64,
 }
 
 // ---------------------------------------------------------------------------------------------
-// Charts
+// Charts (drawn by crate::output::chart; here only what goes into them)
 
-/// Colours of Γ_1, Γ_2, Γ_3.
-const GAMMA_COLOURS: [RGBColor; 3] = [
-    RGBColor(31, 119, 180),
-    RGBColor(255, 127, 14),
-    RGBColor(44, 160, 44),
-];
-
-/// One curve set of a profile chart: the five profiles of one solve.
-struct Curve<'a> {
-    label: String,
-    colour: RGBColor,
-    dashed: bool,
-    profiles: &'a [Profile],
-}
-
-type DrawResult<T> = std::result::Result<T, String>;
-
-/// Padded range of `values` including 0.
-fn range_with_zero(values: impl Iterator<Item = f64>) -> (f64, f64) {
-    let (mut lo, mut hi) = (0.0_f64, 0.0_f64);
-    for v in values.filter(|v| v.is_finite()) {
-        lo = lo.min(v);
-        hi = hi.max(v);
-    }
-    let span = hi - lo;
-    if span <= 0.0 {
-        return (-1.0, 1.0);
-    }
-    (lo - 0.05 * span, hi + 0.05 * span)
-}
+/// Colours of Γ_1, Γ_2, Γ_3: blue, orange, green of the shared series palette (red is the
+/// bonded curve of Fig. 7).
+const GAMMA_COLOURS: [RGBColor; 3] = [SERIES[0], SERIES[3], SERIES[2]];
 
 /// The lines drawn for a plate: centre lines, edges and the diagonal (the symmetric duplicates
 /// of a square plate are left out).
@@ -1106,22 +1055,7 @@ fn lines_for(mu: f64) -> Vec<(&'static str, &'static str)> {
     }
 }
 
-/// Points (coord ≥ 0) of line `name` of a curve set, as (coord, value).
-fn half_line(profiles: &[Profile], name: &str, sigma: bool) -> Vec<(f64, f64)> {
-    profiles
-        .iter()
-        .find(|p| p.line == name)
-        .map(|p| {
-            p.points
-                .iter()
-                .filter(|q| q.coord >= -1e-12)
-                .map(|q| (q.coord, if sigma { q.sigma } else { q.v }))
-                .filter(|(c, v)| c.is_finite() && v.is_finite())
-                .collect()
-        })
-        .unwrap_or_default()
-}
-
+/// Figs. 3–5 and 7: V and σ along the half lines of [`lines_for`], one curve per solve.
 fn write_profiles(
     svg: &Path,
     png: &Path,
@@ -1129,273 +1063,21 @@ fn write_profiles(
     mu: f64,
     curves: &[Curve<'_>],
 ) -> Result<()> {
-    ensure_font(svg)?;
-    let lines = lines_for(mu);
-    let size = (300 * lines.len() as u32 + 60, 760);
-    let mut text = String::new();
-    {
-        let root = SVGBackend::with_string(&mut text, size).into_drawing_area();
-        draw_profiles(&root, title, &lines, curves).map_err(|e| plot_error(svg, e))?;
-        root.present().map_err(|e| plot_error(svg, e))?;
-    }
-    std::fs::write(svg, text).map_err(|source| Error::Io {
-        path: svg.display().to_string(),
-        source,
-    })?;
-    let root = BitMapBackend::new(png, size).into_drawing_area();
-    draw_profiles(&root, title, &lines, curves).map_err(|e| plot_error(png, e))?;
-    root.present().map_err(|e| plot_error(png, e))?;
-    Ok(())
+    write_profile_comparison(svg, png, title, &lines_for(mu), curves)
 }
 
-fn draw_profiles<DB: DrawingBackend>(
-    root: &DrawingArea<DB, Shift>,
-    title: &str,
-    lines: &[(&str, &str)],
-    curves: &[Curve<'_>],
-) -> DrawResult<()> {
-    root.fill(&WHITE).map_err(txt)?;
-    let body = root
-        .titled(title, (FONT, caption_size(title, root.dim_in_pixel().0)))
-        .map_err(txt)?;
-    let panels = body.split_evenly((2, lines.len()));
-    let values = |sigma: bool| {
-        let mut v = Vec::new();
-        for c in curves {
-            for (name, _) in lines {
-                v.extend(half_line(c.profiles, name, sigma).into_iter().map(|p| p.1));
-            }
-        }
-        v
-    };
-    let (v_lo, v_hi) = range_with_zero(values(false).into_iter());
-    let (s_lo, s_hi) = range_with_zero(values(true).into_iter());
-    let x_fmt = tick_format(0.0, 1.0);
-    let v_fmt = tick_format(v_lo, v_hi);
-    let s_fmt = tick_format(s_lo, s_hi);
-    for (row, sigma) in [(0usize, false), (1usize, true)] {
-        for (col, (name, label)) in lines.iter().enumerate() {
-            let Some(area) = panels.get(row * lines.len() + col) else {
-                return Err("could not split the drawing area".into());
-            };
-            let (lo, hi) = if sigma { (s_lo, s_hi) } else { (v_hi, v_lo) };
-            let mut chart = ChartBuilder::on(area)
-                .margin(8)
-                .caption(*label, (FONT, 15))
-                .x_label_area_size(36)
-                .y_label_area_size(if col == 0 { 62 } else { 48 })
-                .build_cartesian_2d(0.0..1.0, lo..hi)
-                .map_err(txt)?;
-            let x_desc = if *name == "diagonal" {
-                "fraction of the half-diagonal"
-            } else if name.starts_with("edge-y") || *name == "y-axis" {
-                "t"
-            } else {
-                "s"
-            };
-            let mut mesh = chart.configure_mesh();
-            mesh.x_desc(x_desc)
-                .x_label_formatter(&x_fmt)
-                .label_style((FONT, 12))
-                .axis_desc_style((FONT, 13))
-                .light_line_style(RGBColor(235, 235, 235))
-                .max_light_lines(2)
-                .x_labels(6)
-                .y_labels(8);
-            if sigma {
-                mesh.y_label_formatter(&s_fmt);
-            } else {
-                mesh.y_label_formatter(&v_fmt);
-            }
-            if col == 0 {
-                mesh.y_desc(if sigma {
-                    "σ = μL²r/P"
-                } else {
-                    "V = Dw/(PL²), downward"
-                });
-            }
-            mesh.draw().map_err(txt)?;
-            chart
-                .draw_series(LineSeries::new(
-                    [(0.0, 0.0), (1.0, 0.0)],
-                    BLACK.mix(0.5).stroke_width(1),
-                ))
-                .map_err(txt)?;
-            for c in curves {
-                let pts = half_line(c.profiles, name, sigma);
-                let colour = c.colour;
-                let dashed = c.dashed;
-                let anno = if dashed {
-                    chart
-                        .draw_series(DashedLineSeries::new(pts, 9, 6, colour.stroke_width(2)))
-                        .map_err(txt)?
-                } else {
-                    chart
-                        .draw_series(LineSeries::new(pts, colour.stroke_width(2)))
-                        .map_err(txt)?
-                };
-                if row == 1 && col == 0 {
-                    anno.label(c.label.clone()).legend(move |(x, y)| {
-                        if dashed {
-                            PathElement::new(
-                                [(x, y), (x + 8, y), (x + 14, y), (x + 22, y)],
-                                colour.stroke_width(2),
-                            )
-                        } else {
-                            PathElement::new([(x, y), (x + 22, y)], colour.stroke_width(2))
-                        }
-                    });
-                }
-            }
-            if row == 1 && col == 0 && !curves.is_empty() {
-                chart
-                    .configure_series_labels()
-                    .position(SeriesLabelPosition::UpperRight)
-                    .label_font((FONT, 12))
-                    .background_style(WHITE.mix(0.9))
-                    .border_style(BLACK.mix(0.5))
-                    .draw()
-                    .map_err(txt)?;
-            }
-        }
-    }
-    Ok(())
-}
-
+/// Fig. 6: the contact boundaries of the plate [−1, 1] × [−μ, μ] (in units of L) over the
+/// loaded areas.
 fn write_regions(
     svg: &Path,
     png: &Path,
     title: &str,
     mu: f64,
     loaded: &[[(f64, f64); 2]],
-    regions: &[(String, RGBColor, &FullField)],
+    regions: &[Region<'_>],
 ) -> Result<()> {
-    ensure_font(svg)?;
-    let size = (900, 480);
-    let mut text = String::new();
-    {
-        let root = SVGBackend::with_string(&mut text, size).into_drawing_area();
-        draw_regions(&root, title, mu, loaded, regions).map_err(|e| plot_error(svg, e))?;
-        root.present().map_err(|e| plot_error(svg, e))?;
-    }
-    std::fs::write(svg, text).map_err(|source| Error::Io {
-        path: svg.display().to_string(),
-        source,
-    })?;
-    let root = BitMapBackend::new(png, size).into_drawing_area();
-    draw_regions(&root, title, mu, loaded, regions).map_err(|e| plot_error(png, e))?;
-    root.present().map_err(|e| plot_error(png, e))?;
-    Ok(())
-}
-
-fn draw_regions<DB: DrawingBackend>(
-    root: &DrawingArea<DB, Shift>,
-    title: &str,
-    mu: f64,
-    loaded: &[[(f64, f64); 2]],
-    regions: &[(String, RGBColor, &FullField)],
-) -> DrawResult<()> {
-    root.fill(&WHITE).map_err(txt)?;
-    let body = root
-        .titled(title, (FONT, caption_size(title, root.dim_in_pixel().0)))
-        .map_err(txt)?;
-    let (w, h) = body.dim_in_pixel();
-    let legend_w = 230_u32.min(w / 3);
-    let (map_area, legend_area) = body.split_horizontally(w.saturating_sub(legend_w));
-    // Equal scales on x and y: the plate is 2 × 2μ in units of L.
-    let (mw, _) = map_area.dim_in_pixel();
-    let (ylab, xlab, margin) = (60_i32, 45_i32, 15_i32);
-    let avail_w = (mw as i32 - ylab - 2 * margin).max(50) as f64;
-    let avail_h = (h as i32 - xlab - 2 * margin).max(50) as f64;
-    let px = (avail_w / 2.0).min(avail_h / (2.0 * mu));
-    let extra_w = ((avail_w - 2.0 * px) / 2.0).max(0.0) as i32;
-    let extra_h = ((avail_h - 2.0 * mu * px) / 2.0).max(0.0) as i32;
-    let mut chart = ChartBuilder::on(&map_area)
-        .margin_left(margin + extra_w)
-        .margin_right(margin + extra_w)
-        .margin_top(margin + extra_h)
-        .margin_bottom(margin + extra_h)
-        .x_label_area_size(xlab)
-        .y_label_area_size(ylab)
-        .build_cartesian_2d(-1.0..1.0, -mu..mu)
-        .map_err(txt)?;
-    let fmt = tick_format(-1.0, 1.0);
-    chart
-        .configure_mesh()
-        .disable_mesh()
-        .x_desc("x / L")
-        .y_desc("y / L")
-        .x_label_formatter(&fmt)
-        .y_label_formatter(&fmt)
-        .label_style((FONT, 13))
-        .axis_desc_style((FONT, 14))
-        .draw()
-        .map_err(txt)?;
-    let grey = RGBColor(205, 205, 205);
-    chart
-        .draw_series(
-            loaded
-                .iter()
-                .map(|r| Rectangle::new([r[0], r[1]], grey.filled())),
-        )
-        .map_err(txt)?;
-    for (_, colour, field) in regions {
-        let colour = *colour;
-        let segs = contour(field, CONTACT_THRESHOLD * peak(field));
-        chart
-            .draw_series(
-                segs.into_iter()
-                    .map(move |s| PathElement::new(s, colour.stroke_width(3))),
-            )
-            .map_err(txt)?;
-    }
-    chart
-        .draw_series(std::iter::once(PathElement::new(
-            [(-1.0, -mu), (1.0, -mu), (1.0, mu), (-1.0, mu), (-1.0, -mu)],
-            BLACK.stroke_width(1),
-        )))
-        .map_err(txt)?;
-
-    // Legend, drawn by hand beside the map.
-    let style = TextStyle::from((FONT, 14).into_font());
-    let (x0, mut y) = (8_i32, margin + extra_h + 10);
-    legend_area
-        .draw(&Rectangle::new(
-            [(x0, y - 7), (x0 + 26, y + 7)],
-            grey.filled(),
-        ))
-        .map_err(txt)?;
-    legend_area
-        .draw_text("loaded area", &style, (x0 + 34, y - 8))
-        .map_err(txt)?;
-    y += 26;
-    legend_area
-        .draw_text("contact boundary:", &style, (x0, y - 8))
-        .map_err(txt)?;
-    for (label, colour, _) in regions {
-        y += 24;
-        legend_area
-            .draw(&PathElement::new(
-                [(x0, y), (x0 + 26, y)],
-                colour.stroke_width(3),
-            ))
-            .map_err(txt)?;
-        legend_area
-            .draw_text(label, &style, (x0 + 34, y - 8))
-            .map_err(txt)?;
-    }
-    y += 30;
-    for line in [
-        "contact inside each line;",
-        "the plate has lifted",
-        "outside it",
-    ] {
-        legend_area
-            .draw_text(line, &style, (x0, y - 8))
-            .map_err(txt)?;
-        y += 18;
-    }
-    Ok(())
+    let plate = [(-1.0, -mu), (1.0, mu)];
+    write_contact_regions(svg, png, title, plate, loaded, regions)
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -12,6 +12,7 @@ use crate::budget;
 use crate::error::{Error, Result};
 use crate::foundation::FoundationKind;
 use crate::method::{Method, MethodKind, PenaltySettings};
+use crate::metrics::{loglog_fit, max_abs_diff, pareto_front, rel_l2};
 use crate::model::{ConstraintPoints, Load, Model};
 use crate::operators::Operators;
 use crate::post;
@@ -25,19 +26,6 @@ fn fields(ops: &Operators, model: &Model, sol: &Solution) -> (Vec<f64>, Vec<f64>
         ops.node_w(&sol.u),
         sol.sigma.iter().map(|s| mu * s).collect(),
     )
-}
-
-fn max_abs_diff(a: &[f64], b: &[f64]) -> f64 {
-    a.iter()
-        .zip(b)
-        .map(|(x, y)| (x - y).abs())
-        .fold(0.0, f64::max)
-}
-
-fn rel_l2(a: &[f64], reference: &[f64]) -> f64 {
-    let num: f64 = a.iter().zip(reference).map(|(x, y)| (x - y).powi(2)).sum();
-    let den: f64 = reference.iter().map(|y| y * y).sum();
-    (num / den.max(f64::MIN_POSITIVE)).sqrt()
 }
 
 /// One row of `eps_sweep.csv`.
@@ -216,11 +204,7 @@ pub fn eps_sweep(
             fit.iter().map(|p| p.0).fold(f64::INFINITY, f64::min),
             fit.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max),
         ];
-        slopes.push((
-            kind.name(),
-            crate::output::charts::loglog_fit(&fit).map(|(s, _)| s),
-            range,
-        ));
+        slopes.push((kind.name(), loglog_fit(&fit).map(|(s, _)| s), range));
     }
     Ok(Sweep {
         rows,
@@ -404,7 +388,7 @@ pub fn tradeoff(
         .iter()
         .map(|&i| (points[i].time_s, points[i].error))
         .collect();
-    for k in crate::output::charts::pareto_front(&xy) {
+    for k in pareto_front(&xy) {
         points[valid[k]].pareto = true;
     }
     Ok(Tradeoff { points, reference })

@@ -4,8 +4,7 @@
 //! renames them into place only when all were written, so a failed run never leaves a
 //! half-written file or a half-updated directory behind.
 
-pub mod charts;
-pub mod plot;
+pub mod chart;
 pub mod studies;
 pub mod summary;
 pub mod tables;
@@ -96,9 +95,9 @@ pub fn write_all(dir: &Path, report: &Report, summary: &Summary) -> Result<Vec<P
     vtk::write_vtu(&p, &report.field, &report.elements)?;
     let title = format!("{} — {}", summary.title, summary.headline());
     let p = st.path("profiles.svg");
-    plot::write_profiles_svg(&p, &report.profiles, &title)?;
+    chart::write_profiles_svg(&p, &report.profiles, &title)?;
     let svg = st.path("contact.svg");
     let png = st.path("contact.png");
-    plot::write_contact_map(&svg, &png, &report.field, &title)?;
+    chart::write_contact_map(&svg, &png, &report.field, &title)?;
     st.commit()
 }

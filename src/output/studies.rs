@@ -3,7 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
-use super::charts::{self, Series};
+use super::chart::{self, Series};
 use super::Staged;
 use crate::error::{Error, Result};
 use crate::study::{StabilityRow, Sweep, Tradeoff};
@@ -54,7 +54,7 @@ pub fn write_sweep(dir: &Path, sweep: &Sweep, title: &str) -> Result<Vec<PathBuf
         });
     }
     let p = st.path("eps_sweep.svg");
-    charts::write_loglog_svg(
+    chart::write_loglog_svg(
         &p,
         title,
         "penalty ε̄",
@@ -109,7 +109,7 @@ pub fn write_tradeoff(dir: &Path, t: &Tradeoff, title: &str) -> Result<Vec<PathB
         t.reference
     )];
     let p = st.path("tradeoff.svg");
-    charts::write_loglog_svg(
+    chart::write_loglog_svg(
         &p,
         title,
         "wall time (s): assembly + solve",
@@ -171,7 +171,7 @@ pub fn write_stability(dir: &Path, rows: &[StabilityRow], title: &str) -> Result
         let row_labels: Vec<String> = row_keys.iter().map(|(f, s)| format!("{f}: {s}")).collect();
         let col_labels: Vec<String> = (1..=cols).map(|c| c.to_string()).collect();
         let p = st.path(&format!("stability-{method}.svg"));
-        charts::write_category_map_svg(
+        chart::write_category_map_svg(
             &p,
             &format!("{title} — {method} (cell: value (iterations))"),
             "sweep step",

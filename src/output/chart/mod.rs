@@ -1,0 +1,232 @@
+//! Charts (SVG, and PNG where asked) of solves, studies and the paper's figures.
+//!
+//! * `profile.rs`: V and σ along the plate's lines — [`write_profiles_svg`] for a solve, and
+//!   the paper's Figs. 3–5 and 7;
+//! * `contact.rs`: plan views of the plate — [`write_contact_map`] for a solve, and the paper's
+//!   Fig. 6 (contact boundaries of several solves);
+//! * `loglog.rs`: [`write_loglog_svg`], series with notes (ε̄ sweep, speed against accuracy);
+//! * `category.rs`: [`write_category_map_svg`], run outcomes over a parameter grid (stability);
+//! * `style.rs`: the one colour and line table; `axis.rs`: ranges and tick labels; this file:
+//!   the font, titles, file writing and text boxes they share.
+//!
+//! Text is laid out with an embedded copy of DejaVu Sans (`assets/DejaVuSans.ttf`, Bitstream
+//! Vera licence, see `assets/DejaVuSans-LICENSE.txt`), registered once with plotters as
+//! `"sans-serif"`, so the charts render identically on machines without system fonts.
+
+mod axis;
+mod category;
+mod contact;
+mod loglog;
+mod profile;
+pub(crate) mod style;
+
+use std::path::Path;
+use std::sync::OnceLock;
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+use plotters::style::FontStyle;
+
+use crate::error::{Error, Result};
+
+pub use category::write_category_map_svg;
+pub use contact::write_contact_map;
+pub(crate) use contact::{write_contact_regions, Region};
+pub use loglog::{write_loglog_svg, Series};
+pub use profile::write_profiles_svg;
+pub(crate) use profile::{write_profile_comparison, Curve};
+
+/// The embedded font.
+static FONT_BYTES: &[u8] = include_bytes!("../../../assets/DejaVuSans.ttf");
+
+/// Font family name under which the embedded font is registered.
+const FONT: &str = "sans-serif";
+
+/// Register the embedded font with plotters once; later calls return the first outcome.
+fn ensure_font(path: &Path) -> Result<()> {
+    static REGISTERED: OnceLock<bool> = OnceLock::new();
+    let ok = *REGISTERED.get_or_init(|| {
+        plotters::style::register_font(FONT, FontStyle::Normal, FONT_BYTES).is_ok()
+    });
+    if ok {
+        Ok(())
+    } else {
+        Err(Error::Io {
+            path: path.display().to_string(),
+            source: std::io::Error::other("the embedded font DejaVuSans.ttf could not be loaded"),
+        })
+    }
+}
+
+/// Wrap a plotting-library failure as an I/O error on `path`.
+fn plot_error(path: &Path, e: impl std::fmt::Display) -> Error {
+    Error::Io {
+        path: path.display().to_string(),
+        source: std::io::Error::other(e.to_string()),
+    }
+}
+
+/// A drawing failure, as text (the backend error types differ between SVG and bitmap).
+type DrawResult<T> = std::result::Result<T, String>;
+
+/// Convert a plotters error into text.
+fn txt<E: std::fmt::Display>(e: E) -> String {
+    e.to_string()
+}
+
+/// A chart that can be drawn on any plotters backend, so that its SVG and PNG are drawn by the
+/// same code.
+trait Picture {
+    /// Picture size, pixels.
+    fn size(&self) -> (u32, u32);
+    /// Draw the whole picture on `root`.
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<()>;
+}
+
+/// Draw `picture` as an SVG file at `path`.
+fn write_svg(path: &Path, picture: &impl Picture) -> Result<()> {
+    ensure_font(path)?;
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, picture.size()).into_drawing_area();
+        picture.draw(&root).map_err(|e| plot_error(path, e))?;
+        root.present().map_err(|e| plot_error(path, e))?;
+    }
+    std::fs::write(path, svg).map_err(|source| Error::Io {
+        path: path.display().to_string(),
+        source,
+    })
+}
+
+/// Draw `picture` as a PNG file at `path` (which must end in `.png`: the encoder is chosen by
+/// the extension).
+fn write_png(path: &Path, picture: &impl Picture) -> Result<()> {
+    ensure_font(path)?;
+    let root = BitMapBackend::new(path, picture.size()).into_drawing_area();
+    picture.draw(&root).map_err(|e| plot_error(path, e))?;
+    root.present().map_err(|e| plot_error(path, e))
+}
+
+/// Caption font size that fits `title` on one line of a `width`-pixel chart (DejaVu Sans
+/// averages about 0.56 em per character), between 10 and 24 px.
+fn caption_size(title: &str, width: u32) -> u32 {
+    let chars = title.chars().count().max(1) as f64;
+    (0.92 * f64::from(width) / (0.56 * chars)).clamp(10.0, 24.0) as u32
+}
+
+/// Fill `root` white, write `title` across its top and return the area below the title.
+fn titled<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    title: &str,
+) -> DrawResult<DrawingArea<DB, Shift>> {
+    root.fill(&WHITE).map_err(txt)?;
+    root.titled(title, (FONT, caption_size(title, root.dim_in_pixel().0)))
+        .map_err(txt)
+}
+
+/// Width of `text` in the embedded font at `size` px (estimated if the font fails).
+fn text_width(text: &str, size: f64) -> i32 {
+    (FONT, size).into_font().box_size(text).map_or(
+        (0.6 * size * text.chars().count() as f64) as i32,
+        |(w, _)| w as i32,
+    )
+}
+
+/// Inner padding of legend and note boxes, pixels.
+const BOX_PAD: i32 = 8;
+
+/// A framed box of text lines (notes, or a legend when each line gets a swatch).
+struct TextBox<'a> {
+    /// The lines, top to bottom.
+    lines: &'a [String],
+    /// Font size, pixels.
+    font: u32,
+    /// Height of one line, pixels.
+    line_h: i32,
+    /// Room reserved left of each line for a swatch, pixels (0: none).
+    swatch_w: i32,
+}
+
+impl TextBox<'_> {
+    /// Width and height of the box, pixels.
+    fn size(&self) -> (i32, i32) {
+        let text_w = self
+            .lines
+            .iter()
+            .map(|l| text_width(l, f64::from(self.font)))
+            .max()
+            .unwrap_or(0);
+        (
+            text_w + self.swatch_w + 2 * BOX_PAD,
+            self.line_h * self.lines.len() as i32 + 2 * BOX_PAD,
+        )
+    }
+
+    /// Draw the box with its top-left corner at `at`; `swatch` is called with each line's index
+    /// and its left-centre point when `swatch_w` > 0.
+    fn draw<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        at: (i32, i32),
+        mut swatch: impl FnMut(usize, (i32, i32)) -> DrawResult<()>,
+    ) -> DrawResult<()> {
+        let (w, h) = self.size();
+        let (x0, y0) = at;
+        let corners = [(x0, y0), (x0 + w, y0 + h)];
+        root.draw(&Rectangle::new(corners, style::BOX_FILL.filled()))
+            .map_err(txt)?;
+        root.draw(&Rectangle::new(corners, style::BOX_BORDER))
+            .map_err(txt)?;
+        let text =
+            TextStyle::from((FONT, self.font).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
+        for (k, line) in self.lines.iter().enumerate() {
+            let cy = y0 + BOX_PAD + self.line_h * k as i32 + self.line_h / 2;
+            let x = x0 + BOX_PAD;
+            if self.swatch_w > 0 {
+                swatch(k, (x, cy))?;
+            }
+            root.draw_text(line, &text, (x + self.swatch_w, cy))
+                .map_err(txt)?;
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn caption_size_shrinks_long_titles_within_bounds() {
+        assert_eq!(caption_size("short", 900), 24);
+        // 100 characters on 800 px: 0.92 · 800 / 56 = 13.1 px.
+        assert_eq!(caption_size(&"x".repeat(100), 800), 13);
+        assert_eq!(caption_size(&"x".repeat(1000), 800), 10);
+        assert_eq!(caption_size("", 800), 24);
+    }
+
+    #[test]
+    fn text_box_grows_with_lines_and_text() {
+        ensure_font(Path::new("test")).expect("font");
+        let one = ["a note".to_string()];
+        let two = [
+            "a note".to_string(),
+            "a much longer second note".to_string(),
+        ];
+        let size = |lines: &[String], swatch_w| {
+            TextBox {
+                lines,
+                font: 14,
+                line_h: 20,
+                swatch_w,
+            }
+            .size()
+        };
+        let (w1, h1) = size(&one, 0);
+        let (w2, h2) = size(&two, 0);
+        assert_eq!((h1, h2), (20 + 2 * BOX_PAD, 40 + 2 * BOX_PAD));
+        assert!(w2 > w1 && w1 > 2 * BOX_PAD, "{w1} {w2}");
+        assert_eq!(size(&one, 40).0, w1 + 40);
+    }
+}

@@ -1,0 +1,461 @@
+//! Profile charts: V = D w / (P L²) (top row, axis pointing down: positive V is a downward
+//! deflection) and σ = μ L² r / P (bottom row) along the plate's lines, with zero lines.
+//!
+//! One chart serves two pictures:
+//!
+//! * [`write_profiles_svg`], the `profiles.svg` of a solve: one column over the whole lines
+//!   (coordinate −1 to 1), one curve per line;
+//! * [`write_profile_comparison`], the paper's Figs. 3–5 and 7: one column per line over its
+//!   half (coordinate 0 to 1, the plate being symmetric), one curve per solve.
+//!
+//! Both rows share their value range over all columns (so panels compare by eye); the legend
+//! sits in the σ panel of the first column. A single column is drawn large (800 × 900), several
+//! columns as small multiples (300 pixels per column, 760 high).
+
+use std::path::Path;
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+use super::axis::{padded_range, tick_format};
+use super::style::{self, DESC_FONT, LABEL_FONT, LINE_WIDTH};
+use super::{titled, txt, write_png, write_svg, DrawResult, Picture, FONT};
+use crate::error::Result;
+use crate::post::{Profile, ProfilePoint};
+
+/// Legend text of a profile line on a whole-line chart.
+fn line_label(line: &str) -> String {
+    match line {
+        "x-axis" => "x-axis (t = 0)".to_string(),
+        "y-axis" => "y-axis (s = 0)".to_string(),
+        "edge-x" => "edge-x (t = 1)".to_string(),
+        "edge-y" => "edge-y (s = 1)".to_string(),
+        other => other.to_string(),
+    }
+}
+
+/// The coordinate along a line, as an axis description.
+fn line_coordinate(line: &str) -> &'static str {
+    match line {
+        "diagonal" => "fraction of the half-diagonal",
+        "y-axis" | "edge-y" => "t",
+        _ => "s",
+    }
+}
+
+/// One curve: a line's points in one colour.
+struct Line<'a> {
+    label: String,
+    colour: RGBColor,
+    dashed: bool,
+    points: &'a [ProfilePoint],
+}
+
+/// One column of panels (V above σ).
+struct Column<'a> {
+    /// Caption above each of its panels.
+    caption: Option<String>,
+    /// Description of the x axis.
+    x_desc: String,
+    lines: Vec<Line<'a>>,
+}
+
+/// Sizes and fonts of one of the two looks.
+struct Look {
+    size: (u32, u32),
+    margin: u32,
+    caption_font: u32,
+    x_area: u32,
+    /// Width of the y label area of the first column and of the others (no description).
+    y_area: (u32, u32),
+    label_font: u32,
+    desc_font: u32,
+    light_lines: usize,
+    x_labels: usize,
+    y_labels: usize,
+}
+
+/// The profile chart: columns of V and σ panels over the coordinate range `x`.
+struct ProfileChart<'a> {
+    title: &'a str,
+    x: (f64, f64),
+    columns: Vec<Column<'a>>,
+}
+
+/// V and σ axis descriptions (on the first column).
+const V_DESC: &str = "V = D w / (P L²), downward";
+const SIGMA_DESC: &str = "σ = μ L² r / P";
+
+impl ProfileChart<'_> {
+    fn look(&self) -> Look {
+        let n = self.columns.len() as u32;
+        if n <= 1 {
+            Look {
+                size: (800, 900),
+                margin: 12,
+                caption_font: 16,
+                x_area: 45,
+                y_area: (80, 80),
+                label_font: LABEL_FONT,
+                desc_font: DESC_FONT,
+                light_lines: 4,
+                x_labels: 11,
+                y_labels: 11,
+            }
+        } else {
+            Look {
+                size: (300 * n + 60, 760),
+                margin: 8,
+                caption_font: 15,
+                x_area: 36,
+                y_area: (62, 48),
+                label_font: 12,
+                desc_font: 13,
+                light_lines: 2,
+                x_labels: 6,
+                y_labels: 8,
+            }
+        }
+    }
+
+    /// Finite (coord, value) points of `line` inside the coordinate range.
+    fn points(&self, line: &Line<'_>, sigma: bool) -> Vec<(f64, f64)> {
+        let (x0, x1) = self.x;
+        line.points
+            .iter()
+            .filter(|p| p.coord >= x0 - 1e-12 && p.coord <= x1 + 1e-12)
+            .map(|p| (p.coord, if sigma { p.sigma } else { p.v }))
+            .filter(|(c, v)| c.is_finite() && v.is_finite())
+            .collect()
+    }
+
+    /// Value range of a row over every column, zero included.
+    fn range(&self, sigma: bool) -> (f64, f64) {
+        let values: Vec<f64> = self
+            .columns
+            .iter()
+            .flat_map(|c| c.lines.iter())
+            .flat_map(|l| self.points(l, sigma))
+            .map(|p| p.1)
+            .collect();
+        padded_range(values.into_iter(), Some(0.0))
+    }
+}
+
+impl Picture for ProfileChart<'_> {
+    fn size(&self) -> (u32, u32) {
+        self.look().size
+    }
+
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<()> {
+        let body = titled(root, self.title)?;
+        let look = self.look();
+        let n = self.columns.len();
+        if n == 0 {
+            return Ok(());
+        }
+        let panels = body.split_evenly((2, n));
+        let (v_lo, v_hi) = self.range(false);
+        let (s_lo, s_hi) = self.range(true);
+        let (x0, x1) = self.x;
+        let x_fmt = tick_format(x0, x1);
+        let v_fmt = tick_format(v_lo, v_hi);
+        let s_fmt = tick_format(s_lo, s_hi);
+        for (row, sigma) in [(0, false), (1, true)] {
+            for (col, column) in self.columns.iter().enumerate() {
+                let Some(area) = panels.get(row * n + col) else {
+                    return Err("could not split the drawing area".into());
+                };
+                // V is drawn downward: its range runs from the largest V at the bottom.
+                let (lo, hi) = if sigma { (s_lo, s_hi) } else { (v_hi, v_lo) };
+                let mut builder = ChartBuilder::on(area);
+                builder.margin(look.margin);
+                if let Some(caption) = &column.caption {
+                    builder.caption(caption, (FONT, look.caption_font));
+                }
+                let y_area = if col == 0 {
+                    look.y_area.0
+                } else {
+                    look.y_area.1
+                };
+                let mut chart = builder
+                    .x_label_area_size(look.x_area)
+                    .y_label_area_size(y_area)
+                    .build_cartesian_2d(x0..x1, lo..hi)
+                    .map_err(txt)?;
+                let mut mesh = chart.configure_mesh();
+                mesh.x_desc(column.x_desc.as_str())
+                    .x_label_formatter(&x_fmt)
+                    .y_label_formatter(if sigma { &s_fmt } else { &v_fmt })
+                    .label_style((FONT, look.label_font))
+                    .axis_desc_style((FONT, look.desc_font))
+                    .bold_line_style(style::GRID_MAJOR)
+                    .light_line_style(style::GRID_MINOR)
+                    .max_light_lines(look.light_lines)
+                    .x_labels(look.x_labels)
+                    .y_labels(look.y_labels);
+                if col == 0 {
+                    mesh.y_desc(if sigma { SIGMA_DESC } else { V_DESC });
+                }
+                mesh.draw().map_err(txt)?;
+                chart
+                    .draw_series(LineSeries::new(
+                        [(x0, 0.0), (x1, 0.0)],
+                        style::REFERENCE.stroke_width(1),
+                    ))
+                    .map_err(txt)?;
+                let legend = row == 1 && col == 0;
+                for line in &column.lines {
+                    let pts = self.points(line, sigma);
+                    let stroke = line.colour.stroke_width(LINE_WIDTH);
+                    let drawn = if line.dashed {
+                        let (dash, gap) = style::DASH;
+                        chart
+                            .draw_series(DashedLineSeries::new(pts, dash, gap, stroke))
+                            .map_err(txt)?
+                    } else {
+                        chart
+                            .draw_series(LineSeries::new(pts, stroke))
+                            .map_err(txt)?
+                    };
+                    if legend {
+                        // A 24-pixel sample of two strokes: a gap between them if dashed.
+                        let gap = if line.dashed { 6 } else { 0 };
+                        drawn.label(line.label.as_str()).legend(move |(x, y)| {
+                            EmptyElement::at((x, y))
+                                + PathElement::new([(0, 0), (9, 0)], stroke)
+                                + PathElement::new([(9 + gap, 0), (24, 0)], stroke)
+                        });
+                    }
+                }
+                if legend && !column.lines.is_empty() {
+                    chart
+                        .configure_series_labels()
+                        .position(SeriesLabelPosition::UpperRight)
+                        .label_font((FONT, look.label_font))
+                        .background_style(style::BOX_FILL)
+                        .border_style(style::BOX_BORDER)
+                        .draw()
+                        .map_err(txt)?;
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Write the deflection and pressure profiles of one solve along the paper's lines as an SVG
+/// figure like the paper's Figs. 3–5.
+///
+/// The top panel shows V = D w / (P L²) against the line coordinate ∈ [−1, 1] with the V axis
+/// pointing down (positive V is a downward deflection), the bottom panel σ = μ L² r / P with a
+/// zero line; each [`Profile`] is one coloured series, named in the legend. Empty profiles (or
+/// an empty slice) give empty axes. Non-finite points are skipped.
+///
+/// # Errors
+/// [`crate::Error::Io`] if the file cannot be written or drawing fails.
+pub fn write_profiles_svg(path: &Path, profiles: &[Profile], title: &str) -> Result<()> {
+    let lines = profiles
+        .iter()
+        .enumerate()
+        .map(|(k, p)| Line {
+            label: line_label(p.line),
+            colour: style::series_colour(k),
+            dashed: false,
+            points: &p.points,
+        })
+        .collect();
+    let chart = ProfileChart {
+        title,
+        x: (-1.0, 1.0),
+        columns: vec![Column {
+            caption: None,
+            x_desc: "s, t or diagonal fraction".to_string(),
+            lines,
+        }],
+    };
+    write_svg(path, &chart)
+}
+
+/// One set of curves of a comparison chart: the profiles of one solve, in one colour.
+pub(crate) struct Curve<'a> {
+    /// Legend text.
+    pub label: String,
+    /// Line colour.
+    pub colour: RGBColor,
+    /// Dashed instead of solid.
+    pub dashed: bool,
+    /// The solve's profiles (by line name; lines not among them are left out).
+    pub profiles: &'a [Profile],
+}
+
+/// Write a comparison of several solves along several lines, as SVG (`svg`) and PNG (`png`):
+/// one column per entry of `lines` — (line name, caption) — over the half line (coordinate 0 to
+/// 1), one curve per entry of `curves`.
+///
+/// # Errors
+/// [`crate::Error::Io`] if a file cannot be written or drawing fails.
+pub(crate) fn write_profile_comparison(
+    svg: &Path,
+    png: &Path,
+    title: &str,
+    lines: &[(&str, &str)],
+    curves: &[Curve<'_>],
+) -> Result<()> {
+    let columns = lines
+        .iter()
+        .map(|&(name, caption)| Column {
+            caption: Some(caption.to_string()),
+            x_desc: line_coordinate(name).to_string(),
+            lines: curves
+                .iter()
+                .map(|c| Line {
+                    label: c.label.clone(),
+                    colour: c.colour,
+                    dashed: c.dashed,
+                    points: c
+                        .profiles
+                        .iter()
+                        .find(|p| p.line == name)
+                        .map_or(&[][..], |p| &p.points),
+                })
+                .collect(),
+        })
+        .collect();
+    let chart = ProfileChart {
+        title,
+        x: (0.0, 1.0),
+        columns,
+    };
+    write_svg(svg, &chart)?;
+    write_png(png, &chart)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn profiles() -> Vec<Profile> {
+        let names = ["x-axis", "y-axis", "edge-x", "edge-y", "diagonal"];
+        names
+            .iter()
+            .enumerate()
+            .map(|(k, &line)| Profile {
+                line,
+                points: (0..21)
+                    .map(|m| {
+                        let c = -1.0 + m as f64 / 10.0;
+                        ProfilePoint {
+                            coord: c,
+                            s: c,
+                            t: 0.0,
+                            v: 0.1 * (1.0 - c * c) - 0.01 * k as f64,
+                            sigma: (1.0 - c * c - 0.2 * k as f64).max(0.0),
+                        }
+                    })
+                    .collect(),
+            })
+            .collect()
+    }
+
+    #[test]
+    fn profiles_svg_is_written() {
+        let dir = tempfile::tempdir().expect("tempdir");
+        let path = dir.path().join("profiles.svg");
+        write_profiles_svg(&path, &profiles(), "Profiles test title").expect("write");
+        let text = std::fs::read_to_string(&path).expect("read");
+        assert!(text.contains("<svg"));
+        assert!(text.contains("Profiles test title"));
+        assert!(text.contains("edge-y (s = 1)"));
+    }
+
+    #[test]
+    fn profiles_svg_handles_degenerate_input() {
+        let dir = tempfile::tempdir().expect("tempdir");
+        let empty = dir.path().join("empty.svg");
+        write_profiles_svg(&empty, &[], "empty").expect("no profiles");
+        assert!(std::fs::metadata(&empty).expect("meta").len() > 0);
+
+        let flat = vec![
+            Profile {
+                line: "x-axis",
+                points: vec![],
+            },
+            Profile {
+                line: "y-axis",
+                points: (0..5)
+                    .map(|m| ProfilePoint {
+                        coord: -1.0 + 0.5 * m as f64,
+                        s: 0.0,
+                        t: 0.0,
+                        v: 0.0,
+                        sigma: 0.0,
+                    })
+                    .collect(),
+            },
+        ];
+        let path = dir.path().join("flat.svg");
+        write_profiles_svg(&path, &flat, "flat").expect("flat profiles");
+        assert!(std::fs::read_to_string(&path)
+            .expect("read")
+            .contains("<svg"));
+    }
+
+    #[test]
+    fn comparison_is_written_as_svg_and_png() {
+        let dir = tempfile::tempdir().expect("tempdir");
+        let (svg, png) = (dir.path().join("c.svg"), dir.path().join("c.png"));
+        let a = profiles();
+        let b: Vec<Profile> = a[..2].to_vec();
+        let curves = [
+            Curve {
+                label: "first solve".into(),
+                colour: style::SERIES[0],
+                dashed: false,
+                profiles: &a,
+            },
+            Curve {
+                label: "second solve".into(),
+                colour: style::SERIES[1],
+                dashed: true,
+                profiles: &b,
+            },
+        ];
+        let lines = [("x-axis", "centre line"), ("diagonal", "diagonal s = t")];
+        write_profile_comparison(&svg, &png, "Comparison title", &lines, &curves).expect("write");
+        let text = std::fs::read_to_string(&svg).expect("read svg");
+        for needle in [
+            "Comparison title",
+            "centre line",
+            "second solve",
+            "fraction of the half-diagonal",
+        ] {
+            assert!(text.contains(needle), "comparison SVG lacks {needle:?}");
+        }
+        let bytes = std::fs::read(&png).expect("read png");
+        assert!(bytes.starts_with(&[0x89, b'P', b'N', b'G']));
+        // No lines at all: the title only.
+        write_profile_comparison(&svg, &png, "nothing", &[], &curves).expect("no lines");
+    }
+
+    #[test]
+    fn half_lines_keep_coordinates_from_zero() {
+        let p = profiles();
+        let chart = ProfileChart {
+            title: "",
+            x: (0.0, 1.0),
+            columns: Vec::new(),
+        };
+        let line = Line {
+            label: String::new(),
+            colour: style::SERIES[0],
+            dashed: false,
+            points: &p[0].points,
+        };
+        let pts = chart.points(&line, true);
+        // Coordinates −1, −0.9, …, 1: the eleven from 0 on.
+        assert_eq!(pts.len(), 11);
+        assert!(pts.iter().all(|&(c, _)| (0.0..=1.0).contains(&c)));
+        assert_eq!(pts[0], (0.0, 1.0), "σ at the centre of the x-axis profile");
+    }
+}
