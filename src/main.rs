@@ -1,4 +1,6 @@
-//! `liftoff` command line: parse arguments, call the library, print.
+//! `liftoff` command line: parse arguments, call the library, print. One function per
+//! subcommand; the library checks every option and formats every table, and this file adds
+//! what only a command line knows: exit codes, flag names and `hint:` lines that name flags.
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -6,8 +8,9 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 use liftoff::method::{Contact, MethodKind};
 use liftoff::model::{ConstraintPoints, SymmetryMode};
-use liftoff::output;
+use liftoff::output::{self, tables};
 use liftoff::scene::{PenaltySpec, SceneFile};
+use liftoff::study::{self, ConstraintVariants, EpsSweepOptions, TradeoffOptions};
 use liftoff::{Error, Problem};
 
 /// Exit codes, one per kind of failure (docs/ERRORS.md).
@@ -51,20 +54,30 @@ enum Command {
 }
 
 /// Options shared by `solve` and `compare` that override the scene file.
-fn apply_overrides(
-    file: &mut SceneFile,
+#[derive(clap::Args)]
+struct Overrides {
+    /// Dimensionless penalty ε̄: auto, or a fixed value such as 1e-5 (overrides [solver] penalty).
+    #[arg(long, value_parser = parse_penalty)]
     penalty: Option<PenaltySpec>,
+    /// Constraint points (overrides [solver] constraint).
+    #[arg(long, value_enum)]
     constraint: Option<ConstraintPoints>,
+    /// Elements over the whole plate, NX,NY (overrides [mesh] elements).
+    #[arg(long, value_parser = parse_mesh)]
     mesh: Option<[i64; 2]>,
-) {
-    if let Some(p) = penalty {
-        file.solver.penalty = p;
-    }
-    if let Some(c) = constraint {
-        file.solver.constraint = c;
-    }
-    if let Some(m) = mesh {
-        file.mesh.elements = m.to_vec();
+}
+
+impl Overrides {
+    fn apply(&self, file: &mut SceneFile) {
+        if let Some(p) = self.penalty.clone() {
+            file.solver.penalty = p;
+        }
+        if let Some(c) = self.constraint {
+            file.solver.constraint = c;
+        }
+        if let Some(m) = self.mesh {
+            file.mesh.elements = m.to_vec();
+        }
     }
 }
 
@@ -78,15 +91,8 @@ struct SolveArgs {
     /// Method for unbonded contact (overrides [solver] method).
     #[arg(long, value_enum)]
     method: Option<MethodKind>,
-    /// Dimensionless penalty ε̄: auto, or a fixed value such as 1e-5 (overrides [solver] penalty).
-    #[arg(long, value_parser = parse_penalty)]
-    penalty: Option<PenaltySpec>,
-    /// Constraint points (overrides [solver] constraint).
-    #[arg(long, value_enum)]
-    constraint: Option<ConstraintPoints>,
-    /// Elements over the whole plate, NX,NY (overrides [mesh] elements).
-    #[arg(long, value_parser = parse_mesh)]
-    mesh: Option<[i64; 2]>,
+    #[command(flatten)]
+    overrides: Overrides,
     /// Symmetry reduction (overrides [mesh] symmetry).
     #[arg(long, value_enum)]
     symmetry: Option<SymmetryMode>,
@@ -102,41 +108,38 @@ struct SolveArgs {
 struct CompareArgs {
     /// Scene file (TOML), or `example:NAME` for a bundled scene.
     scene: String,
-    /// Dimensionless penalty ε̄: auto, or a fixed value such as 1e-5 (overrides [solver] penalty).
-    #[arg(long, value_parser = parse_penalty)]
-    penalty: Option<PenaltySpec>,
-    /// Constraint points (overrides [solver] constraint).
-    #[arg(long, value_enum)]
-    constraint: Option<ConstraintPoints>,
-    /// Elements over the whole plate, NX,NY (overrides [mesh] elements).
-    #[arg(long, value_parser = parse_mesh)]
-    mesh: Option<[i64; 2]>,
+    #[command(flatten)]
+    overrides: Overrides,
     /// Directory for compare.json (default: the current directory).
     #[arg(long, default_value = ".")]
     out: PathBuf,
 }
 
+/// The flags are the fields of [`EpsSweepOptions`], with its defaults.
 #[derive(clap::Args)]
 struct EpsSweepArgs {
     /// Scene file (TOML), or `example:NAME`.
     scene: String,
     /// Largest ε̄.
-    #[arg(long, default_value_t = 1e-1)]
+    #[arg(long, default_value_t = EpsSweepOptions::default().from)]
     from: f64,
     /// Smallest ε̄.
-    #[arg(long, default_value_t = 1e-12)]
+    #[arg(long, default_value_t = EpsSweepOptions::default().to)]
     to: f64,
     /// Number of ε̄ values (log-spaced).
-    #[arg(long, default_value_t = 12)]
+    #[arg(long, default_value_t = EpsSweepOptions::default().points)]
     points: usize,
     /// Constraint variants: nodal, gauss or both.
-    #[arg(long, default_value = "nodal")]
-    constraints: String,
+    #[arg(long, value_enum, hide_possible_values = true,
+          default_value_t = EpsSweepOptions::default().constraints)]
+    constraints: ConstraintVariants,
     /// Directory for eps_sweep.csv and eps_sweep.svg.
     #[arg(long, default_value = ".")]
     out: PathBuf,
 }
 
+/// The flags are the fields of [`TradeoffOptions`]; the defaults are its defaults, spelled as
+/// `--help` shows them (a test checks they agree).
 #[derive(clap::Args)]
 struct TradeoffArgs {
     /// Scene file (TOML), or `example:NAME`.
@@ -220,111 +223,141 @@ fn main() -> ExitCode {
     }
 }
 
+/// What the binary reports on failure: `error: {message}` on stderr and the exit code.
 struct Failure {
     message: String,
     code: u8,
 }
 
+impl Failure {
+    fn new(code: u8, message: impl Into<String>) -> Self {
+        let message = message.into();
+        Failure { message, code }
+    }
+
+    /// A library error about a scene: the message starts with where the scene came from.
+    fn in_scene(spec: &str, e: Error) -> Self {
+        let mut f = Failure::from(e);
+        f.message = format!("{spec}: {}", f.message);
+        f
+    }
+
+    /// A library error from an options struct whose fields are this subcommand's flags
+    /// (`points` → `--points`): the message names the flag.
+    fn option(e: Error) -> Self {
+        match e {
+            Error::Invalid { field, message } => Failure::new(
+                exit::BAD_INPUT,
+                format!("--{} {message}", field.replace('_', "-")),
+            ),
+            e => Failure::from(e),
+        }
+    }
+}
+
 impl From<Error> for Failure {
     fn from(e: Error) -> Self {
-        let code = match &e {
+        let (code, hint) = match &e {
             Error::Parse(_)
             | Error::Invalid { .. }
             | Error::TooLarge { .. }
-            | Error::Unsupported(_) => exit::BAD_INPUT,
-            Error::Infeasible(_) => exit::INFEASIBLE,
-            Error::Numerical { .. } => exit::SOLVER,
-            Error::Io { .. } => exit::IO,
+            | Error::Unsupported(_) => (exit::BAD_INPUT, ""),
+            Error::Infeasible(_) => (
+                exit::INFEASIBLE,
+                "\nhint: bonded contact (--contact bonded) lets the foundation pull",
+            ),
+            Error::Numerical { .. } => (exit::SOLVER, "\nhint: --method qp, or a coarser --mesh"),
+            Error::Io { .. } => (exit::IO, ""),
         };
-        let hint = match &e {
-            Error::Infeasible(_) => {
-                "\nhint: bonded contact (--contact bonded) lets the foundation pull"
-            }
-            Error::Numerical { .. } => "\nhint: --method qp, or a coarser --mesh",
-            _ => "",
-        };
-        Failure {
-            message: format!("{e}{hint}"),
-            code,
-        }
+        Failure::new(code, format!("{e}{hint}"))
     }
+}
+
+fn no_example(name: &str) -> Failure {
+    Failure::new(
+        exit::BAD_INPUT,
+        format!("no bundled example `{name}`; run `liftoff example` for the list"),
+    )
 }
 
 fn example(name: Option<&str>) -> Result<(), Failure> {
-    match name {
-        None => {
-            println!("Bundled scenes (print one with `liftoff example NAME`, solve it with `liftoff solve example:NAME`):");
-            for (n, d, _) in liftoff::examples::SCENES {
-                println!("  {n:<22} {d}");
-            }
-            Ok(())
+    let Some(n) = name else {
+        println!("Bundled scenes (print one with `liftoff example NAME`, solve it with `liftoff solve example:NAME`):");
+        for (n, d, _) in liftoff::examples::SCENES {
+            println!("  {n:<22} {d}");
         }
-        Some(n) => match liftoff::examples::scene(n) {
-            Some(text) => {
-                print!("{text}");
-                Ok(())
-            }
-            None => Err(Failure {
-                message: format!("no bundled example `{n}`; run `liftoff example` for the list"),
-                code: exit::BAD_INPUT,
-            }),
-        },
-    }
+        return Ok(());
+    };
+    print!(
+        "{}",
+        liftoff::examples::scene(n).ok_or_else(|| no_example(n))?
+    );
+    Ok(())
 }
 
-fn read_scene(spec: &str) -> Result<(String, SceneFile), Failure> {
-    let text = if let Some(name) = spec.strip_prefix("example:") {
-        liftoff::examples::scene(name)
-            .ok_or_else(|| Failure {
-                message: format!("no bundled example `{name}`; run `liftoff example` for the list"),
-                code: exit::BAD_INPUT,
-            })?
-            .to_string()
-    } else {
-        std::fs::read_to_string(spec).map_err(|e| Failure {
-            message: format!("cannot read scene file {spec}: {e}"),
-            code: exit::IO,
-        })?
+/// A scene file, or `example:NAME` for a bundled one, parsed but not yet validated.
+fn read_scene(spec: &str) -> Result<SceneFile, Failure> {
+    let text = match spec.strip_prefix("example:") {
+        Some(name) => liftoff::examples::scene(name)
+            .ok_or_else(|| no_example(name))?
+            .to_string(),
+        None => std::fs::read_to_string(spec)
+            .map_err(|e| Failure::new(exit::IO, format!("cannot read scene file {spec}: {e}")))?,
     };
-    let file = SceneFile::parse(&text).map_err(|e| Failure {
-        message: format!("{spec}: {e}"),
-        code: exit::BAD_INPUT,
-    })?;
-    Ok((text, file))
+    SceneFile::parse(&text).map_err(|e| Failure::new(exit::BAD_INPUT, format!("{spec}: {e}")))
+}
+
+/// Read a scene, apply the command line's overrides, validate.
+fn load_problem(spec: &str, edit: impl FnOnce(&mut SceneFile)) -> Result<Problem, Failure> {
+    let mut file = read_scene(spec)?;
+    edit(&mut file);
+    file.validate().map_err(|e| Failure::in_scene(spec, e))
+}
+
+/// Run a library study under a progress bar of `len` steps; each progress line is one step.
+fn with_progress<T>(len: usize, run: impl FnOnce(&mut dyn FnMut(&str)) -> T) -> T {
+    let pb = indicatif::ProgressBar::new(len as u64);
+    if let Ok(style) =
+        indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} {elapsed_precise} {msg}")
+    {
+        pb.set_style(style);
+    }
+    let result = run(&mut |m: &str| {
+        pb.set_message(m.to_string());
+        pb.inc(1);
+    });
+    pb.finish_and_clear();
+    result
 }
 
 fn solve(args: SolveArgs) -> Result<(), Failure> {
-    let (_, mut file) = read_scene(&args.scene)?;
-    if let Some(c) = args.contact {
-        file.solver.contact = c;
-    }
-    if let Some(m) = args.method {
-        file.solver.method = m;
-    }
-    apply_overrides(&mut file, args.penalty, args.constraint, args.mesh);
-    if let Some(s) = args.symmetry {
-        file.mesh.symmetry = s;
-    }
-    let problem = file.validate().map_err(|e| with_scene(&args.scene, e))?;
+    let problem = load_problem(&args.scene, |file| {
+        if let Some(c) = args.contact {
+            file.solver.contact = c;
+        }
+        if let Some(m) = args.method {
+            file.solver.method = m;
+        }
+        args.overrides.apply(file);
+        if let Some(s) = args.symmetry {
+            file.mesh.symmetry = s;
+        }
+    })?;
     if let Some(dir) = &args.out {
         output::prepare_dir(dir)?;
     }
     let analysis = liftoff::analyse(&problem)?;
     let summary = &analysis.summary;
     // A result that did not converge is not a solution: no files are written for it.
-    let mut written = Vec::new();
-    if let (Some(dir), true) = (&args.out, summary.converged) {
-        written = output::write_all(dir, &analysis.report, summary)?;
-    }
+    let written = match (&args.out, summary.converged) {
+        (Some(dir), true) => output::write_all(dir, &analysis.report, summary)?.len(),
+        _ => 0,
+    };
     if args.json {
         println!("{}", summary.to_json()?);
     } else {
-        print_table(&problem, summary);
-        if let Some(dir) = &args.out {
-            println!("  files      : {} in {}", written.len(), dir.display());
-        }
-        println!();
-        println!("{SIGN_CONVENTION}");
+        let files = args.out.as_deref().map(|dir| (written, dir));
+        print!("{}", tables::solve_table(summary, files));
     }
     if !summary.converged {
         let hint = match analysis.solution.status {
@@ -333,280 +366,93 @@ fn solve(args: SolveArgs) -> Result<(), Failure> {
             } => format!("\nhint: rerun with --penalty {suggested_penalty:.0e} or --method qp"),
             _ => "\nhint: --method qp solves the same operators as a convex QP".into(),
         };
-        return Err(Failure {
-            message: format!(
-                "the {} method did not converge ({}); the numbers above are not a solution and no files were written{hint}",
-                summary.method, summary.status
-            ),
-            code: exit::SOLVER,
-        });
+        return Err(Failure::new(exit::SOLVER, format!(
+            "the {} method did not converge ({}); the numbers above are not a solution and no files were written{hint}",
+            summary.method, summary.status
+        )));
     }
     Ok(())
 }
 
 fn compare(args: CompareArgs) -> Result<(), Failure> {
-    let (_, mut file) = read_scene(&args.scene)?;
-    apply_overrides(&mut file, args.penalty, args.constraint, args.mesh);
-    let problem = file.validate().map_err(|e| with_scene(&args.scene, e))?;
+    let problem = load_problem(&args.scene, |file| args.overrides.apply(file))?;
     output::prepare_dir(&args.out)?;
     let c = liftoff::compare::compare(&problem)?;
-    let json = serde_json::to_string_pretty(&c).map_err(|e| Failure {
-        message: format!("cannot serialise compare.json: {e}"),
-        code: exit::IO,
-    })?;
+    let json = serde_json::to_string_pretty(&c)
+        .map_err(|e| Failure::new(exit::IO, format!("cannot serialise compare.json: {e}")))?;
     let mut st = output::Staged::new(&args.out)?;
     st.write_text("compare.json", &json)?;
     st.commit()?;
-    let (p, q) = (&c.penalty, &c.qp);
-    println!("liftoff compare — {}", p.title);
-    println!(
-        "  model: {} {} × {} elements ({} pressure nodes), {} foundation, ε̄ = {:e}, {} constraints, assembled once in {:.3} s",
-        p.symmetry, p.model_elements[0], p.model_elements[1], p.nodes, p.foundation, p.dimensionless.penalty.unwrap_or(f64::NAN), p.constraint, c.assemble_s
+    print!(
+        "{}",
+        tables::compare_table(&c, &args.out.join("compare.json"))
     );
-    println!("  {:<22} {:>16} {:>16}", "", "penalty", "qp");
-    let status = |x: &output::Summary| {
-        if x.converged {
-            "converged".to_string()
-        } else {
-            "NOT converged".to_string()
-        }
-    };
-    type Cell = fn(&output::Summary) -> String;
-    let rows: [(&str, Cell); 10] = [
-        ("iterations", |x| x.iterations.to_string()),
-        ("solve time (s)", |x| format!("{:.4}", x.time_s.solve)),
-        ("V_max", |x| format!("{:.6e}", x.V_max)),
-        ("contact fraction", |x| format!("{:.4}", x.contact_fraction)),
-        ("contact radius", |x| format!("{:.4}", x.contact_radius)),
-        ("extent x", |x| format!("{:.4}", x.contact_extent.x)),
-        ("extent y", |x| format!("{:.4}", x.contact_extent.y)),
-        ("extent diagonal", |x| {
-            format!("{:.4}", x.contact_extent.diagonal)
-        }),
-        ("min σ", |x| {
-            format!("{:.2e}", x.complementarity.min_pressure)
-        }),
-        ("max |σ·gap|", |x| {
-            format!("{:.2e}", x.complementarity.max_product)
-        }),
-    ];
-    println!("  {:<22} {:>16} {:>16}", "status", status(p), status(q));
-    for (name, cell) in rows {
-        println!("  {name:<22} {:>16} {:>16}", cell(p), cell(q));
-    }
-    let d = &c.differences;
-    println!(
-        "  max |Δσ| = {:.3e} ({:.2e} of max σ), max |ΔV| = {:.3e} ({:.2e} of max V), contact differs at {} node(s)",
-        d.max_abs_sigma, d.rel_sigma, d.max_abs_v, d.rel_v, d.contact_nodes_differing
-    );
-    println!("  written: {}", args.out.join("compare.json").display());
-    if !p.converged || !q.converged {
-        return Err(Failure {
-            message: "a method did not converge; see the status row".into(),
-            code: exit::SOLVER,
-        });
+    if !c.penalty.converged || !c.qp.converged {
+        let message = "a method did not converge; see the status row";
+        return Err(Failure::new(exit::SOLVER, message));
     }
     Ok(())
 }
 
-fn progress_bar(len: u64) -> indicatif::ProgressBar {
-    let pb = indicatif::ProgressBar::new(len);
-    if let Ok(style) =
-        indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} {elapsed_precise} {msg}")
-    {
-        pb.set_style(style);
-    }
-    pb
-}
-
-fn load_problem(spec: &str) -> Result<Problem, Failure> {
-    let (_, file) = read_scene(spec)?;
-    file.validate().map_err(|e| with_scene(spec, e))
-}
-
 fn eps_sweep(args: EpsSweepArgs) -> Result<(), Failure> {
-    let bad = |m: String| Failure {
-        message: m,
-        code: exit::BAD_INPUT,
+    let options = EpsSweepOptions {
+        from: args.from,
+        to: args.to,
+        points: args.points,
+        constraints: args.constraints,
     };
-    if !(args.from.is_finite()
-        && args.to.is_finite()
-        && args.from > 0.0
-        && args.to > 0.0
-        && args.from < 1.0)
-    {
-        return Err(bad(format!(
-            "--from and --to must be positive ε̄ values below 1, got {} and {}",
-            args.from, args.to
-        )));
-    }
-    if args.points < 2 || args.points > 200 {
-        return Err(bad(format!(
-            "--points must lie in 2..=200, got {}",
-            args.points
-        )));
-    }
-    let constraints = match args.constraints.as_str() {
-        "nodal" => vec![ConstraintPoints::Nodal],
-        "gauss" => vec![ConstraintPoints::Gauss],
-        "both" => vec![ConstraintPoints::Nodal, ConstraintPoints::Gauss],
-        other => {
-            return Err(bad(format!(
-                "--constraints takes nodal, gauss or both, got `{other}`"
-            )))
-        }
-    };
-    let problem = load_problem(&args.scene)?;
+    options.validate().map_err(Failure::option)?;
+    let problem = load_problem(&args.scene, |_| {})?;
     output::prepare_dir(&args.out)?;
-    let eps = liftoff::study::log_space(args.from, args.to, args.points);
-    let pb = progress_bar((constraints.len() * (eps.len() + 1)) as u64);
-    let window = [args.to.min(args.from), args.from.max(args.to)];
-    let sweep = liftoff::study::eps_sweep(&problem, &eps, &constraints, window, &mut |m: &str| {
-        pb.set_message(m.to_string());
-        pb.inc(1);
-    })?;
-    pb.finish_and_clear();
-    output::studies::write_sweep(
-        &args.out,
-        &sweep,
-        &format!("{} — penalty against QP", problem.model.title),
-    )?;
-    println!("liftoff eps-sweep — {}", problem.model.title);
-    println!(
-        "  {:<6} {:>9} {:>5} {:>17} {:>11} {:>11} {:>11} {:>9}",
-        "points", "ε̄", "steps", "status", "L2 err σ", "L2 err V", "min σ", "time (s)"
-    );
-    for r in &sweep.rows {
-        println!(
-            "  {:<6} {:>9.1e} {:>5} {:>17} {:>11.3e} {:>11.3e} {:>11.2e} {:>9.4}",
-            r.constraint,
-            r.eps,
-            r.iterations,
-            r.status,
-            r.rel_l2_sigma,
-            r.rel_l2_v,
-            r.min_pressure,
-            r.time_s
-        );
-    }
-    for (k, s, range) in &sweep.slopes {
-        match s {
-            Some(s) => println!(
-                "  {k}: fitted slope {s:.3} over ε̄ ∈ [{:.0e}, {:.0e}], down to where the error flattens (first order: 1)",
-                range[0], range[1]
-            ),
-            None => println!("  {k}: too few settled points to fit a slope"),
-        }
-    }
-    println!(
-        "  written: eps_sweep.csv, eps_sweep.svg in {}",
-        args.out.display()
-    );
+    let sweep = with_progress(options.progress_steps(), |p| options.run(&problem, p))?;
+    let title = &problem.model.title;
+    let chart_title = format!("{title} — penalty against QP");
+    output::studies::write_sweep(&args.out, &sweep, &chart_title)?;
+    print!("{}", tables::eps_sweep_table(title, &sweep, &args.out));
     Ok(())
 }
 
 fn tradeoff(args: TradeoffArgs) -> Result<(), Failure> {
-    let bad = |m: String| Failure {
-        message: m,
-        code: exit::BAD_INPUT,
+    let options = TradeoffOptions {
+        meshes: args.meshes,
+        penalties: args.penalties,
     };
-    if args.meshes.is_empty() || args.meshes.iter().any(|n| !(2..=2048).contains(n)) {
-        return Err(bad(
-            "--meshes takes element counts between 2 and 2048".into()
-        ));
-    }
-    if args.penalties.iter().any(|&e| !(e > 0.0 && e < 1.0)) {
-        return Err(bad("--penalties takes ε̄ values in (0, 1)".into()));
-    }
-    let problem = load_problem(&args.scene)?;
+    options.validate().map_err(Failure::option)?;
+    let problem = load_problem(&args.scene, |_| {})?;
     output::prepare_dir(&args.out)?;
-    let pb = progress_bar((1 + args.meshes.len() * (1 + args.penalties.len())) as u64);
-    let t = liftoff::study::tradeoff(&problem, &args.meshes, &args.penalties, &mut |m: &str| {
-        pb.set_message(m.to_string());
-        pb.inc(1);
-    })?;
-    pb.finish_and_clear();
-    output::studies::write_tradeoff(
-        &args.out,
-        &t,
-        &format!("{} — speed against accuracy", problem.model.title),
-    )?;
-    println!("liftoff tradeoff — {}", problem.model.title);
-    println!("  reference: {}", t.reference);
-    println!(
-        "  {:<8} {:>5} {:>9} {:>10} {:>11} {:>17} {:>7}",
-        "method", "mesh", "ε̄", "time (s)", "error V", "status", "Pareto"
-    );
-    for p in &t.points {
-        println!(
-            "  {:<8} {:>5} {:>9.0e} {:>10.4} {:>11.3e} {:>17} {:>7}",
-            p.method,
-            p.mesh,
-            p.eps,
-            p.time_s,
-            p.error,
-            p.status,
-            if p.pareto { "*" } else { "" }
-        );
-    }
-    println!(
-        "  written: tradeoff.csv, tradeoff.svg in {}",
-        args.out.display()
-    );
+    let t = with_progress(options.progress_steps(), |p| options.run(&problem, p))?;
+    let title = &problem.model.title;
+    let chart_title = format!("{title} — speed against accuracy");
+    output::studies::write_tradeoff(&args.out, &t, &chart_title)?;
+    print!("{}", tables::tradeoff_table(title, &t, &args.out));
     Ok(())
 }
 
 fn stability(args: StabilityArgs) -> Result<(), Failure> {
     let scenes = if args.scenes.is_empty() {
         vec![
-            "example:paper-winkler".to_string(),
-            "example:paper-halfspace".to_string(),
+            "example:paper-winkler".into(),
+            "example:paper-halfspace".into(),
         ]
     } else {
-        args.scenes.clone()
+        args.scenes
     };
-    let mut bases = Vec::new();
-    for s in &scenes {
-        bases.push(load_problem(s)?);
-    }
+    let bases = scenes
+        .iter()
+        .map(|s| load_problem(s, |_| {}))
+        .collect::<Result<Vec<_>, _>>()?;
     output::prepare_dir(&args.out)?;
-    let plan = liftoff::study::stability_plan(&bases);
-    let pb = progress_bar(plan.len() as u64);
-    let mut rows = Vec::new();
-    for case in &plan {
-        pb.set_message(format!(
-            "{} {} = {:.2e} ({})",
-            case.base.model.groups.foundation.name(),
-            case.param.name(),
-            case.value,
-            case.method.name()
-        ));
-        rows.push(liftoff::study::stability_run(case));
-        pb.inc(1);
-    }
-    pb.finish_and_clear();
+    let plan = study::stability_plan(&bases);
+    let rows = with_progress(plan.len(), |p| study::stability_sweep(&plan, p));
     output::studies::write_stability(&args.out, &rows, "liftoff stability")?;
-    println!("liftoff stability — {} runs", rows.len());
-    let mut failures = 0;
-    for r in &rows {
-        if r.outcome != "converged" {
-            failures += 1;
-            println!(
-                "  {:<10} {:<8} {:<7} {:>9.2e}: {} — {}",
-                r.foundation, r.sweep, r.method, r.value, r.outcome, r.detail
-            );
-        }
-    }
-    println!("  {} of {} runs did not converge (listed above); written: stability.csv, stability-penalty.svg, stability-qp.svg in {}", failures, rows.len(), args.out.display());
+    print!("{}", tables::stability_table(&rows, &args.out));
     Ok(())
 }
 
 fn paper(args: PaperArgs) -> Result<(), Failure> {
-    let load2: liftoff::paper::LoadCondition2 =
-        args.load2.parse().map_err(|e: Error| Failure::from(e))?;
     let options = liftoff::paper::PaperOptions {
         method: args.method,
-        load2,
+        load2: args.load2.parse()?,
         refine: args.refine,
     };
     let report = liftoff::paper::run(&options, &args.out, &mut |line: &str| eprintln!("{line}"))?;
@@ -619,109 +465,35 @@ fn paper(args: PaperArgs) -> Result<(), Failure> {
     Ok(())
 }
 
-fn with_scene(path: &str, e: Error) -> Failure {
-    let mut f = Failure::from(e);
-    f.message = format!("{path}: {}", f.message);
-    f
-}
+#[cfg(test)]
+mod tests {
+    use super::*;
 
-const SIGN_CONVENTION: &str = "Sign convention: deflection w and loads are positive downward (into the soil), pressure is positive in compression, and a positive gap means the plate has lifted off the soil.";
+    /// The defaults `tradeoff --help` shows are the library's.
+    #[test]
+    fn tradeoff_flag_defaults_are_the_library_defaults() {
+        let cli = Cli::try_parse_from(["liftoff", "tradeoff", "example:paper-winkler"]);
+        let Ok(Cli {
+            command: Command::Tradeoff(args),
+        }) = cli
+        else {
+            panic!("`liftoff tradeoff SCENE` parses as tradeoff");
+        };
+        let d = TradeoffOptions::default();
+        assert_eq!(args.meshes, d.meshes, "--meshes default");
+        assert_eq!(args.penalties, d.penalties, "--penalties default");
+    }
 
-fn print_table(problem: &Problem, s: &output::Summary) {
-    let g = &s.dimensionless;
-    println!("liftoff — {}", s.title);
-    println!(
-        "  foundation : {} (Γ = {:.4e}, Δ = {:.4e}, μ = {:.4}, ν = {})",
-        s.foundation, g.gamma, g.delta, g.mu, g.nu
-    );
-    println!(
-        "  model      : {} model, {} × {} of {} × {} elements, {} nodes, {} dofs",
-        s.symmetry,
-        s.model_elements[0],
-        s.model_elements[1],
-        s.elements[0],
-        s.elements[1],
-        s.nodes,
-        s.dofs
-    );
-    for n in &s.notes {
-        println!("  note       : {n}");
-    }
-    let method = if s.contact == "bonded" {
-        "bonded, direct solve".to_string()
-    } else {
-        format!("unbonded, {} ({} constraints)", s.method, s.constraint)
-    };
-    println!("  contact    : {method}");
-    println!("  status     : {} after {} step(s)", s.status, s.iterations);
-    if !s.solver_info.is_empty() {
-        let get = |k: &str| s.solver_info.get(k).copied().unwrap_or(f64::NAN);
-        println!(
-            "  clarabel   : primal residual {:.1e}, dual residual {:.1e}, duality gap {:.1e}",
-            get("primal_residual"),
-            get("dual_residual"),
-            get("duality_gap")
-        );
-    }
-    if !s.history.is_empty() {
-        println!("  penalty iterations (constraint points in the penalised, lifted set):");
-        for it in &s.history {
-            println!(
-                "    step {:>3}: {:>6} penalised, {:>6} entered, {:>6} left, min σ {:.3e}",
-                it.step,
-                it.penalised,
-                it.entered,
-                it.left,
-                it.min_pressure * g.mu
-            );
+    /// An option error names the flag, in the wording the library gives.
+    #[test]
+    fn option_errors_name_the_flag() {
+        let e = EpsSweepOptions {
+            points: 1,
+            ..Default::default()
         }
+        .validate();
+        let f = Failure::option(e.err().unwrap_or(Error::Parse("no error".into())));
+        assert_eq!(f.message, "--points must lie in 2..=200, got 1");
+        assert_eq!(f.code, exit::BAD_INPUT);
     }
-    println!(
-        "  time       : assemble {:.3} s, solve {:.3} s, total {:.3} s",
-        s.time_s.assemble, s.time_s.solve, s.time_s.total
-    );
-    match problem.model.physical {
-        Some(_) => {
-            println!("  w_max      : {:.3} mm (downward)", s.w_max * 1e3);
-            println!("  pressure   : max {:.1} kPa", s.pressure_max / 1e3);
-            println!(
-                "  moments    : mx {:.1} … {:.1} kN·m/m, my {:.1} … {:.1} kN·m/m (positive: tension on the soil side)",
-                s.moments.mx[0] / 1e3,
-                s.moments.mx[1] / 1e3,
-                s.moments.my[0] / 1e3,
-                s.moments.my[1] / 1e3
-            );
-            let r = &s.resultant;
-            println!(
-                "  resultant  : load {:.2} kN, reaction {:.2} kN (relative error {:.1e})",
-                r.load / 1e3,
-                r.reaction / 1e3,
-                r.relative_error
-            );
-        }
-        None => {
-            let r = &s.resultant;
-            println!(
-                "  resultant  : load {:.6} P, reaction {:.6} P (relative error {:.1e})",
-                r.load, r.reaction, r.relative_error
-            );
-        }
-    }
-    println!(
-        "  V          : max {:.5e}, centre {:.5e}, corner {:.5e}  (V = D w / (P L²))",
-        s.V_max, s.V_center, s.V_corner
-    );
-    println!(
-        "  contact    : {:.1} % of the plate, radius {:.3} L, extent x {:.3}, y {:.3}, diagonal {:.3}",
-        100.0 * s.contact_fraction,
-        s.contact_radius,
-        s.contact_extent.x,
-        s.contact_extent.y,
-        s.contact_extent.diagonal
-    );
-    let c = &s.complementarity;
-    println!(
-        "  residuals  : min σ {:.2e}, min gap {:.2e}, max |σ·gap| {:.2e}",
-        c.min_pressure, c.min_gap, c.max_product
-    );
 }

@@ -1,9 +1,14 @@
-//! CSV tables: nodes, element resultants, profiles.
+//! Tables: the CSV files of a solve (nodes, element resultants, profiles) and the text tables
+//! the commands print (solve, compare, eps-sweep, tradeoff, stability). The text tables are
+//! returned as strings, each line ending in a newline; printing is the caller's.
 
 use std::path::Path;
 
+use crate::compare::Comparison;
 use crate::error::{Error, Result};
+use crate::output::Summary;
 use crate::post::{ElementField, FullField, Profile};
+use crate::study::{StabilityRow, Sweep, Tradeoff};
 
 fn csv_err(path: &Path, e: csv::Error) -> Error {
     Error::Io {
@@ -81,4 +86,340 @@ pub fn write_profiles(path: &Path, profiles: &[Profile]) -> Result<()> {
         path: path.display().to_string(),
         source: e,
     })
+}
+
+/// Lines of a text table, joined with a newline after each.
+fn text(lines: Vec<String>) -> String {
+    let mut out = String::new();
+    for l in lines {
+        out.push_str(&l);
+        out.push('\n');
+    }
+    out
+}
+
+/// The sign convention, printed under every solve table.
+pub const SIGN_CONVENTION: &str = "Sign convention: deflection w and loads are positive downward (into the soil), pressure is positive in compression, and a positive gap means the plate has lifted off the soil.";
+
+/// The table of `liftoff solve`: model, method, status, penalty history, timings, results in
+/// physical units (scenes given in SI) and dimensionless ones, residuals; then `files` (how
+/// many were written, and where) if any, and the sign convention.
+pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
+    let g = &s.dimensionless;
+    let mut l = vec![format!("liftoff — {}", s.title)];
+    l.push(format!(
+        "  foundation : {} (Γ = {:.4e}, Δ = {:.4e}, μ = {:.4}, ν = {})",
+        s.foundation, g.gamma, g.delta, g.mu, g.nu
+    ));
+    l.push(format!(
+        "  model      : {} model, {} × {} of {} × {} elements, {} nodes, {} dofs",
+        s.symmetry,
+        s.model_elements[0],
+        s.model_elements[1],
+        s.elements[0],
+        s.elements[1],
+        s.nodes,
+        s.dofs
+    ));
+    for n in &s.notes {
+        l.push(format!("  note       : {n}"));
+    }
+    let method = if s.contact == "bonded" {
+        "bonded, direct solve".to_string()
+    } else {
+        format!("unbonded, {} ({} constraints)", s.method, s.constraint)
+    };
+    l.push(format!("  contact    : {method}"));
+    l.push(format!(
+        "  status     : {} after {} step(s)",
+        s.status, s.iterations
+    ));
+    if !s.solver_info.is_empty() {
+        let get = |k: &str| s.solver_info.get(k).copied().unwrap_or(f64::NAN);
+        l.push(format!(
+            "  clarabel   : primal residual {:.1e}, dual residual {:.1e}, duality gap {:.1e}",
+            get("primal_residual"),
+            get("dual_residual"),
+            get("duality_gap")
+        ));
+    }
+    if !s.history.is_empty() {
+        l.push("  penalty iterations (constraint points in the penalised, lifted set):".into());
+        for it in &s.history {
+            l.push(format!(
+                "    step {:>3}: {:>6} penalised, {:>6} entered, {:>6} left, min σ {:.3e}",
+                it.step,
+                it.penalised,
+                it.entered,
+                it.left,
+                it.min_pressure * g.mu
+            ));
+        }
+    }
+    l.push(format!(
+        "  time       : assemble {:.3} s, solve {:.3} s, total {:.3} s",
+        s.time_s.assemble, s.time_s.solve, s.time_s.total
+    ));
+    let r = &s.resultant;
+    if s.physical.is_some() {
+        l.push(format!("  w_max      : {:.3} mm (downward)", s.w_max * 1e3));
+        l.push(format!(
+            "  pressure   : max {:.1} kPa",
+            s.pressure_max / 1e3
+        ));
+        l.push(format!(
+            "  moments    : mx {:.1} … {:.1} kN·m/m, my {:.1} … {:.1} kN·m/m (positive: tension on the soil side)",
+            s.moments.mx[0] / 1e3,
+            s.moments.mx[1] / 1e3,
+            s.moments.my[0] / 1e3,
+            s.moments.my[1] / 1e3
+        ));
+        l.push(format!(
+            "  resultant  : load {:.2} kN, reaction {:.2} kN (relative error {:.1e})",
+            r.load / 1e3,
+            r.reaction / 1e3,
+            r.relative_error
+        ));
+    } else {
+        l.push(format!(
+            "  resultant  : load {:.6} P, reaction {:.6} P (relative error {:.1e})",
+            r.load, r.reaction, r.relative_error
+        ));
+    }
+    l.push(format!(
+        "  V          : max {:.5e}, centre {:.5e}, corner {:.5e}  (V = D w / (P L²))",
+        s.V_max, s.V_center, s.V_corner
+    ));
+    l.push(format!(
+        "  contact    : {:.1} % of the plate, radius {:.3} L, extent x {:.3}, y {:.3}, diagonal {:.3}",
+        100.0 * s.contact_fraction,
+        s.contact_radius,
+        s.contact_extent.x,
+        s.contact_extent.y,
+        s.contact_extent.diagonal
+    ));
+    let c = &s.complementarity;
+    l.push(format!(
+        "  residuals  : min σ {:.2e}, min gap {:.2e}, max |σ·gap| {:.2e}",
+        c.min_pressure, c.min_gap, c.max_product
+    ));
+    if let Some((n, dir)) = files {
+        l.push(format!("  files      : {n} in {}", dir.display()));
+    }
+    l.push(String::new());
+    l.push(SIGN_CONVENTION.into());
+    text(l)
+}
+
+/// The table of `liftoff compare`: both methods side by side, their differences, and where
+/// compare.json was written.
+pub fn compare_table(c: &Comparison, written: &Path) -> String {
+    let (p, q) = (&c.penalty, &c.qp);
+    let mut l = vec![format!("liftoff compare — {}", p.title)];
+    l.push(format!(
+        "  model: {} {} × {} elements ({} pressure nodes), {} foundation, ε̄ = {:e}, {} constraints, assembled once in {:.3} s",
+        p.symmetry, p.model_elements[0], p.model_elements[1], p.nodes, p.foundation, p.dimensionless.penalty.unwrap_or(f64::NAN), p.constraint, c.assemble_s
+    ));
+    l.push(format!("  {:<22} {:>16} {:>16}", "", "penalty", "qp"));
+    type Cell = fn(&Summary) -> String;
+    let rows: [(&str, Cell); 11] = [
+        ("status", |x| {
+            if x.converged {
+                "converged"
+            } else {
+                "NOT converged"
+            }
+            .to_string()
+        }),
+        ("iterations", |x| x.iterations.to_string()),
+        ("solve time (s)", |x| format!("{:.4}", x.time_s.solve)),
+        ("V_max", |x| format!("{:.6e}", x.V_max)),
+        ("contact fraction", |x| format!("{:.4}", x.contact_fraction)),
+        ("contact radius", |x| format!("{:.4}", x.contact_radius)),
+        ("extent x", |x| format!("{:.4}", x.contact_extent.x)),
+        ("extent y", |x| format!("{:.4}", x.contact_extent.y)),
+        ("extent diagonal", |x| {
+            format!("{:.4}", x.contact_extent.diagonal)
+        }),
+        ("min σ", |x| {
+            format!("{:.2e}", x.complementarity.min_pressure)
+        }),
+        ("max |σ·gap|", |x| {
+            format!("{:.2e}", x.complementarity.max_product)
+        }),
+    ];
+    for (name, cell) in rows {
+        l.push(format!("  {name:<22} {:>16} {:>16}", cell(p), cell(q)));
+    }
+    let d = &c.differences;
+    l.push(format!(
+        "  max |Δσ| = {:.3e} ({:.2e} of max σ), max |ΔV| = {:.3e} ({:.2e} of max V), contact differs at {} node(s)",
+        d.max_abs_sigma, d.rel_sigma, d.max_abs_v, d.rel_v, d.contact_nodes_differing
+    ));
+    l.push(format!("  written: {}", written.display()));
+    text(l)
+}
+
+/// The table of `liftoff eps-sweep`: one row per (constraint kind, ε̄), the fitted slopes, and
+/// where the files went.
+pub fn eps_sweep_table(title: &str, sweep: &Sweep, dir: &Path) -> String {
+    let mut l = vec![format!("liftoff eps-sweep — {title}")];
+    l.push(format!(
+        "  {:<6} {:>9} {:>5} {:>17} {:>11} {:>11} {:>11} {:>9}",
+        "points", "ε̄", "steps", "status", "L2 err σ", "L2 err V", "min σ", "time (s)"
+    ));
+    for r in &sweep.rows {
+        l.push(format!(
+            "  {:<6} {:>9.1e} {:>5} {:>17} {:>11.3e} {:>11.3e} {:>11.2e} {:>9.4}",
+            r.constraint,
+            r.eps,
+            r.iterations,
+            r.status,
+            r.rel_l2_sigma,
+            r.rel_l2_v,
+            r.min_pressure,
+            r.time_s
+        ));
+    }
+    for (k, s, range) in &sweep.slopes {
+        l.push(match s {
+            Some(s) => format!(
+                "  {k}: fitted slope {s:.3} over ε̄ ∈ [{:.0e}, {:.0e}], down to where the error flattens (first order: 1)",
+                range[0], range[1]
+            ),
+            None => format!("  {k}: too few settled points to fit a slope"),
+        });
+    }
+    l.push(format!(
+        "  written: eps_sweep.csv, eps_sweep.svg in {}",
+        dir.display()
+    ));
+    text(l)
+}
+
+/// The table of `liftoff tradeoff`: the reference, one row per (method, mesh, ε̄) with a `*` on
+/// the Pareto front, and where the files went.
+pub fn tradeoff_table(title: &str, t: &Tradeoff, dir: &Path) -> String {
+    let mut l = vec![format!("liftoff tradeoff — {title}")];
+    l.push(format!("  reference: {}", t.reference));
+    l.push(format!(
+        "  {:<8} {:>5} {:>9} {:>10} {:>11} {:>17} {:>7}",
+        "method", "mesh", "ε̄", "time (s)", "error V", "status", "Pareto"
+    ));
+    for p in &t.points {
+        l.push(format!(
+            "  {:<8} {:>5} {:>9.0e} {:>10.4} {:>11.3e} {:>17} {:>7}",
+            p.method,
+            p.mesh,
+            p.eps,
+            p.time_s,
+            p.error,
+            p.status,
+            if p.pareto { "*" } else { "" }
+        ));
+    }
+    l.push(format!(
+        "  written: tradeoff.csv, tradeoff.svg in {}",
+        dir.display()
+    ));
+    text(l)
+}
+
+/// The table of `liftoff stability`: every run that did not converge, with its outcome and
+/// detail, then the count and where the files went.
+pub fn stability_table(rows: &[StabilityRow], dir: &Path) -> String {
+    let mut l = vec![format!("liftoff stability — {} runs", rows.len())];
+    let failed: Vec<&StabilityRow> = rows.iter().filter(|r| r.outcome != "converged").collect();
+    for r in &failed {
+        l.push(format!(
+            "  {:<10} {:<8} {:<7} {:>9.2e}: {} — {}",
+            r.foundation,
+            // The name, not the value: `Display` of the named enums ignores the width.
+            r.sweep.name(),
+            r.method,
+            r.value,
+            r.outcome,
+            r.detail
+        ));
+    }
+    l.push(format!(
+        "  {} of {} runs did not converge (listed above); written: stability.csv, stability-penalty.svg, stability-qp.svg in {}",
+        failed.len(),
+        rows.len(),
+        dir.display()
+    ));
+    text(l)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::study::{StabilityParam, TradeoffPoint};
+
+    fn row(sweep: StabilityParam, method: &'static str, value: f64, outcome: &str) -> StabilityRow {
+        StabilityRow {
+            sweep,
+            foundation: "winkler",
+            method,
+            value,
+            outcome: outcome.into(),
+            iterations: 3,
+            equilibrium: 0.0,
+            min_pressure: 0.0,
+            min_gap: 0.0,
+            contact_fraction: 0.5,
+            time_s: 0.1,
+            detail: "why".into(),
+        }
+    }
+
+    /// Only the runs that did not converge are listed, in columns padded to 10, 8 and 7
+    /// characters and a value right-aligned in 9 (expected text written out by hand).
+    #[test]
+    fn stability_table_lists_failures_in_aligned_columns() {
+        let rows = [
+            row(StabilityParam::Gamma, "penalty", 1e-6, "penalty-too-weak"),
+            row(StabilityParam::Mu, "qp", 0.5, "converged"),
+            row(StabilityParam::Mesh, "qp", 256.0, "too-large"),
+        ];
+        let want = "liftoff stability — 3 runs\n\
+            \x20 winkler    gamma    penalty   1.00e-6: penalty-too-weak — why\n\
+            \x20 winkler    mesh     qp         2.56e2: too-large — why\n\
+            \x20 2 of 3 runs did not converge (listed above); written: stability.csv, stability-penalty.svg, stability-qp.svg in out\n";
+        assert_eq!(
+            stability_table(&rows, Path::new("out")),
+            want,
+            "stability_table"
+        );
+    }
+
+    /// The QP has no ε̄ (NaN) and the Pareto column is a star or blank.
+    #[test]
+    fn tradeoff_table_marks_the_pareto_front() {
+        let point = |method, eps, pareto| TradeoffPoint {
+            method,
+            mesh: 8,
+            eps,
+            time_s: 0.25,
+            error: 0.125,
+            converged: true,
+            status: "converged".into(),
+            pareto,
+        };
+        let t = Tradeoff {
+            points: vec![point("qp", f64::NAN, true), point("penalty", 1e-5, false)],
+            reference: "QP on 16".into(),
+        };
+        let want = "liftoff tradeoff — T\n\
+            \x20 reference: QP on 16\n\
+            \x20 method    mesh        ε̄   time (s)     error V            status  Pareto\n\
+            \x20 qp           8       NaN     0.2500    1.250e-1         converged       *\n\
+            \x20 penalty      8      1e-5     0.2500    1.250e-1         converged        \n\
+            \x20 written: tradeoff.csv, tradeoff.svg in d\n";
+        assert_eq!(
+            tradeoff_table("T", &t, Path::new("d")),
+            want,
+            "tradeoff_table"
+        );
+    }
 }
