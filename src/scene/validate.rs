@@ -13,9 +13,8 @@ use crate::model::{Groups, Load, Model, Physical};
 pub const MAX_ELEMENTS_PER_SIDE: i64 = 4000;
 
 /// Range of the aspect ratio μ = width / length. Beyond it the plate is a strip (a beam) rather
-/// than a plate, and the element areas (∝ μ), the half-space kernel (∝ μ⁻¹ across the width)
-/// and the resultant bounds leave the range where the discretisation means anything: a
-/// μ of 5e-324 made every nodal area zero.
+/// than a plate, and at the extremes the geometry leaves double precision: μ = 5e-324 made every
+/// nodal area zero (reported as a load "outside [inf, −inf]"), μ = 1e308 broke the Cholesky.
 pub const ASPECT_RATIO_RANGE: [f64; 2] = [1e-3, 1e3];
 
 fn aspect_ratio(field: &str, mu: f64) -> Result<f64> {
