@@ -524,8 +524,10 @@ pub fn stability_run(case: &StabilityCase<'_>) -> StabilityRow {
     match case.param {
         StabilityParam::Gamma => model.groups.gamma = value,
         StabilityParam::Penalty => {
+            // The sweep studies a fixed ε̄, as in the paper.
             if let Method::Penalty(s) = &mut method {
                 s.epsilon = value;
+                s.auto = false;
             }
         }
         StabilityParam::Position => {

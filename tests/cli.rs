@@ -219,3 +219,359 @@ fn example_lists_and_prints_scenes() {
     let o = liftoff(&["example", "nope"]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+/// A CSV file written by a study: its header and its records.
+fn read_csv(path: &Path) -> (Vec<String>, Vec<csv::StringRecord>) {
+    let mut r = csv::Reader::from_path(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let header = r
+        .headers()
+        .unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+        .iter()
+        .map(String::from)
+        .collect();
+    let rows = r
+        .records()
+        .collect::<Result<Vec<_>, _>>()
+        .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    (header, rows)
+}
+
+/// The named column of a record.
+fn field<'a>(header: &[String], row: &'a csv::StringRecord, name: &str) -> &'a str {
+    let k = header
+        .iter()
+        .position(|h| h == name)
+        .unwrap_or_else(|| panic!("no column `{name}` in {header:?}"));
+    row.get(k).unwrap_or_default()
+}
+
+fn number(header: &[String], row: &csv::StringRecord, name: &str) -> f64 {
+    let s = field(header, row, name);
+    s.parse()
+        .unwrap_or_else(|_| panic!("column `{name}`: `{s}` is not a number"))
+}
+
+fn assert_svg(path: &Path) {
+    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    assert!(
+        text.len() > 1000 && text.contains("<svg") && text.trim_end().ends_with("</svg>"),
+        "{} is a complete SVG ({} bytes)",
+        path.display(),
+        text.len()
+    );
+}
+
+/// Least-squares slope of ln y against ln x.
+fn loglog_slope(points: &[(f64, f64)]) -> f64 {
+    let n = points.len() as f64;
+    let (lx, ly): (Vec<f64>, Vec<f64>) = points.iter().map(|(x, y)| (x.ln(), y.ln())).unzip();
+    let (mx, my) = (lx.iter().sum::<f64>() / n, ly.iter().sum::<f64>() / n);
+    let sxy: f64 = lx.iter().zip(&ly).map(|(x, y)| (x - mx) * (y - my)).sum();
+    let sxx: f64 = lx.iter().map(|x| (x - mx).powi(2)).sum();
+    sxy / sxx
+}
+
+/// `eps-sweep` end to end on the paper's Winkler plate, both constraint kinds, ε̄ from 1e-2 to
+/// 1e-8: one CSV row per (kind, ε̄) in order, the chart, and — fitted here from the CSV over the
+/// converged rows — an error in σ falling with slope 1 in ε̄ (the penalty's O(ε̄); measured
+/// 0.996 and 0.999), which the printed slopes agree with. Bad options exit 2 before anything is
+/// written.
+#[test]
+fn eps_sweep_writes_its_table_chart_and_first_order_slope() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let out = dir.path().join("sweep");
+    let o = liftoff(&[
+        "eps-sweep",
+        "example:paper-winkler",
+        "--from",
+        "1e-2",
+        "--to",
+        "1e-8",
+        "--points",
+        "7",
+        "--constraints",
+        "both",
+        "--out",
+        out.to_str().unwrap_or_default(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_svg(&out.join("eps_sweep.svg"));
+    let (header, rows) = read_csv(&out.join("eps_sweep.csv"));
+    assert_eq!(
+        header,
+        [
+            "constraint",
+            "eps",
+            "iterations",
+            "converged",
+            "status",
+            "max_abs_sigma_err",
+            "max_abs_v_err",
+            "rel_l2_sigma",
+            "rel_l2_v",
+            "min_pressure",
+            "time_s"
+        ]
+    );
+    assert_eq!(rows.len(), 14, "7 ε̄ × 2 constraint kinds");
+    let printed = stdout(&o);
+    for (k, kind) in ["nodal", "gauss"].into_iter().enumerate() {
+        let mine = &rows[7 * k..7 * (k + 1)];
+        let mut converged = Vec::new();
+        for (j, r) in mine.iter().enumerate() {
+            assert_eq!(field(&header, r, "constraint"), kind);
+            // Log-spaced, one decade apart.
+            let eps = number(&header, r, "eps");
+            let expected = 10f64.powi(-2 - j as i32);
+            assert!(
+                (eps / expected - 1.0).abs() < 1e-9,
+                "{kind}: ε̄ {eps} vs {expected}"
+            );
+            assert_eq!(
+                field(&header, r, "converged") == "true",
+                field(&header, r, "status") == "converged",
+                "{kind} ε̄ = {eps}"
+            );
+            if field(&header, r, "status") == "converged" {
+                converged.push((eps, number(&header, r, "rel_l2_sigma")));
+            }
+        }
+        assert!(
+            converged.len() >= 3,
+            "{kind}: at least three converged ε̄ to fit: {converged:?}"
+        );
+        let slope = loglog_slope(&converged);
+        assert!(
+            (slope - 1.0).abs() < 0.05,
+            "{kind}: slope {slope} over {converged:?}"
+        );
+        let line = printed
+            .lines()
+            .find(|l| l.trim_start().starts_with(&format!("{kind}: fitted slope")))
+            .unwrap_or_else(|| panic!("no fitted slope for {kind}:\n{printed}"));
+        let shown: f64 = line
+            .split("fitted slope ")
+            .nth(1)
+            .and_then(|s| s.split_whitespace().next())
+            .and_then(|s| s.parse().ok())
+            .unwrap_or_else(|| panic!("slope in `{line}`"));
+        assert!(
+            (shown - slope).abs() < 0.01,
+            "{kind}: printed slope {shown} vs {slope} fitted from the CSV"
+        );
+    }
+
+    for (args, needle) in [
+        (vec!["--points", "1"], "--points"),
+        (vec!["--constraints", "all"], "--constraints"),
+        (vec!["--from", "2"], "--from"),
+    ] {
+        let bad = dir.path().join("bad");
+        let mut a = vec!["eps-sweep", "example:paper-winkler", "--out"];
+        a.push(bad.to_str().unwrap_or_default());
+        a.extend(args);
+        let o = liftoff(&a);
+        assert_eq!(o.status.code(), Some(2), "{a:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains(needle), "{a:?}: {}", stderr(&o));
+        assert!(!bad.exists(), "{a:?}: nothing written");
+    }
+}
+
+/// `tradeoff` end to end on the paper's Winkler plate over 4, 8, 16 elements: one CSV row per
+/// mesh and method, the reference at twice the finest mesh, Pareto marks equal to the
+/// non-dominated converged rows recomputed from the CSV, the QP error falling with the mesh,
+/// and the chart. Bad options exit 2 before anything is written.
+#[test]
+fn tradeoff_writes_its_table_and_chart() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let out = dir.path().join("tradeoff");
+    let o = liftoff(&[
+        "tradeoff",
+        "example:paper-winkler",
+        "--meshes",
+        "4,8,16",
+        "--penalties",
+        "1e-2,1e-8",
+        "--out",
+        out.to_str().unwrap_or_default(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stdout(&o).contains("reference: QP on 32 elements per side (twice the finest mesh)"),
+        "{}",
+        stdout(&o)
+    );
+    assert_svg(&out.join("tradeoff.svg"));
+    let (header, rows) = read_csv(&out.join("tradeoff.csv"));
+    assert_eq!(
+        header,
+        [
+            "method",
+            "mesh",
+            "eps",
+            "time_s",
+            "error",
+            "converged",
+            "status",
+            "pareto"
+        ]
+    );
+    assert_eq!(rows.len(), 9, "3 meshes × (QP + 2 ε̄)");
+    struct Point {
+        time: f64,
+        error: f64,
+        ok: bool,
+        pareto: bool,
+    }
+    let points: Vec<Point> = rows
+        .iter()
+        .map(|r| {
+            let error = number(&header, r, "error");
+            Point {
+                time: number(&header, r, "time_s"),
+                error,
+                ok: field(&header, r, "converged") == "true" && error.is_finite() && error > 0.0,
+                pareto: field(&header, r, "pareto") == "true",
+            }
+        })
+        .collect();
+    for (i, p) in points.iter().enumerate() {
+        let dominated = points.iter().enumerate().any(|(j, q)| {
+            j != i
+                && q.ok
+                && q.time <= p.time
+                && q.error <= p.error
+                && (q.time < p.time || q.error < p.error)
+        });
+        assert_eq!(p.pareto, p.ok && !dominated, "row {i}: Pareto mark");
+        assert!(p.time > 0.0, "row {i}: time {}", p.time);
+    }
+    let qp: Vec<(f64, f64)> = rows
+        .iter()
+        .filter(|r| field(&header, r, "method") == "qp")
+        .map(|r| (number(&header, r, "mesh"), number(&header, r, "error")))
+        .collect();
+    assert_eq!(qp.iter().map(|p| p.0).collect::<Vec<_>>(), [4.0, 8.0, 16.0]);
+    assert!(
+        qp.windows(2).all(|w| w[1].1 < w[0].1),
+        "QP error falls with the mesh: {qp:?}"
+    );
+
+    for (args, needle) in [
+        (vec!["--meshes", "1,8"], "--meshes"),
+        (vec!["--penalties", "0"], "--penalties"),
+    ] {
+        let bad = dir.path().join("bad");
+        let mut a = vec!["tradeoff", "example:paper-winkler", "--out"];
+        a.push(bad.to_str().unwrap_or_default());
+        a.extend(args);
+        let o = liftoff(&a);
+        assert_eq!(o.status.code(), Some(2), "{a:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains(needle), "{a:?}: {}", stderr(&o));
+        assert!(!bad.exists(), "{a:?}: nothing written");
+    }
+}
+
+/// `stability` end to end over two small base scenes (the paper's plate on 8 × 8 elements with
+/// a 64 MiB memory limit, so the mesh sweep refuses its dense cases instead of running for
+/// minutes): one CSV row per planned run (136), known outcomes, the printed count of
+/// non-converged runs equal to the CSV's, the corner load infeasible on the half-space, and one
+/// map per method. A scene that cannot be read exits 5 with nothing written.
+#[test]
+fn stability_writes_one_row_per_run_and_the_maps() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let small = |name: &str, from: &str| {
+        let text = liftoff::examples::scene(name).unwrap_or_default();
+        assert!(text.contains(from) && text.contains("[solver]\n"), "{name}");
+        let p = dir.path().join(format!("{name}.toml"));
+        let text = text
+            .replace(from, "elements = [8, 8]")
+            .replace("[solver]\n", "[solver]\nmemory_limit_gib = 0.0625\n");
+        std::fs::write(&p, text).expect("write scene");
+        p.display().to_string()
+    };
+    let winkler = small("paper-winkler", "elements = [20, 20]");
+    let half_space = small("paper-halfspace", "elements = [16, 16]");
+    let out = dir.path().join("stability");
+    let o = liftoff(&[
+        "stability",
+        &winkler,
+        &half_space,
+        "--out",
+        out.to_str().unwrap_or_default(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let printed = stdout(&o);
+    assert!(
+        printed.starts_with("liftoff stability — 136 runs"),
+        "{printed}"
+    );
+    for f in ["stability-penalty.svg", "stability-qp.svg"] {
+        assert_svg(&out.join(f));
+    }
+    let (header, rows) = read_csv(&out.join("stability.csv"));
+    assert_eq!(
+        header,
+        [
+            "sweep",
+            "foundation",
+            "method",
+            "value",
+            "outcome",
+            "iterations",
+            "equilibrium",
+            "min_pressure",
+            "min_gap",
+            "contact_fraction",
+            "time_s",
+            "detail"
+        ]
+    );
+    assert_eq!(rows.len(), 136, "69 Winkler runs and 67 half-space runs");
+    let known = [
+        "converged",
+        "cycling",
+        "iteration-limit",
+        "penalty-too-weak",
+        "solver-failure",
+        "infeasible",
+        "too-large",
+        "numerical",
+    ];
+    let mut failed = 0;
+    for r in &rows {
+        let outcome = field(&header, r, "outcome");
+        assert!(known.contains(&outcome), "outcome `{outcome}`");
+        if outcome != "converged" {
+            failed += 1;
+        }
+        if field(&header, r, "sweep") == "position"
+            && field(&header, r, "foundation") == "half-space"
+            && number(&header, r, "value") == 1.0
+        {
+            assert_eq!(outcome, "infeasible", "the corner load on the half-space");
+        }
+    }
+    assert!(failed > 0 && failed < rows.len());
+    assert!(
+        printed.contains(&format!("{failed} of 136 runs did not converge")),
+        "{failed} non-converged rows in the CSV: {printed}"
+    );
+    // Each non-converged run is listed on its own line, outcome and detail after the colon.
+    let listed = printed
+        .lines()
+        .filter(|l| l.contains(": ") && l.contains(" — "))
+        .count();
+    assert_eq!(listed, failed, "{printed}");
+
+    let missing = dir.path().join("missing.toml");
+    let never = dir.path().join("never");
+    let o = liftoff(&[
+        "stability",
+        missing.to_str().unwrap_or_default(),
+        "--out",
+        never.to_str().unwrap_or_default(),
+    ]);
+    assert_eq!(o.status.code(), Some(5), "{}", stderr(&o));
+    assert!(!never.exists(), "nothing written");
+}

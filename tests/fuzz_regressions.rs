@@ -3,9 +3,9 @@
 //!
 //! Each case goes through the same pipeline as the fuzz target: `SceneFile::parse` → `validate`
 //! → (for meshes of at most 8 elements per side) `Operators::assemble` → `solve::solve`. None of
-//! them may panic; each checks the stage where it stops and, for errors, the kind of error and
-//! the field named. Meshes larger than 8 × 8 are validated but never solved, so the file stays
-//! fast.
+//! them may panic, and each pins where it stops: a parse error, a validation error naming its
+//! field, a solve error of a given kind, or a solution with a given status. Meshes larger than
+//! 8 × 8 are validated but never solved, so the file stays fast.
 
 use liftoff::scene::SceneFile;
 use liftoff::Error;
@@ -23,10 +23,10 @@ enum Outcome {
     Invalid(String, String),
     /// Valid, but the mesh is too large to solve here.
     ValidLarge,
-    /// Valid; assembling or solving returned an error.
+    /// Valid; the memory check, assembling or solving returned this error.
     SolveError(Error),
-    /// Valid and solved (converged or not).
-    Solved,
+    /// Valid and solved; the status kind of the solution.
+    Solved(&'static str),
 }
 
 fn run(text: &str) -> Outcome {
@@ -56,7 +56,7 @@ fn run(text: &str) -> Outcome {
     }
     let ops = liftoff::Operators::assemble(&problem.model);
     match liftoff::solve(&ops, &problem.method) {
-        Ok(_) => Outcome::Solved,
+        Ok(sol) => Outcome::Solved(sol.status.kind()),
         Err(e) => Outcome::SolveError(e),
     }
 }
@@ -68,12 +68,13 @@ enum Expect<'a> {
     ParseError,
     /// Rejected by `validate`, naming this field.
     Invalid(&'a str),
-    /// Valid; assembling and solving may return an error but must not panic.
-    Valid,
-    /// Valid and solved.
-    Solved,
-    /// Anything but a panic: for inputs whose current outcome is questionable (see the case).
-    NoPanic,
+    /// Valid, but larger than the meshes solved here.
+    ValidLarge,
+    /// Valid; the memory check, assembly or solve returns an error of this kind
+    /// ([`Error::kind`]: too-large, infeasible, numerical).
+    SolveError(&'a str),
+    /// Valid and solved, with a solution of this status kind ([`liftoff::Status::kind`]).
+    Solved(&'a str),
 }
 
 /// Runs every case and reports all mismatches at once, each under its case name.
@@ -87,9 +88,9 @@ fn check(cases: &[(&str, String, Expect)]) {
         let ok = match (expect, &got) {
             (Expect::ParseError, Outcome::Parse(_)) => true,
             (Expect::Invalid(field), Outcome::Invalid(f, _)) => f == field,
-            (Expect::Valid, Outcome::Solved | Outcome::SolveError(_) | Outcome::ValidLarge) => true,
-            (Expect::Solved, Outcome::Solved) => true,
-            (Expect::NoPanic, _) => true,
+            (Expect::ValidLarge, Outcome::ValidLarge) => true,
+            (Expect::SolveError(kind), Outcome::SolveError(e)) => e.kind() == *kind,
+            (Expect::Solved(kind), Outcome::Solved(k)) => k == kind,
             _ => false,
         };
         if !ok {
@@ -141,12 +142,12 @@ fn the_helpers_accept_a_valid_scene() {
         (
             "small dimensionless scene",
             dimensionless("[mesh]\nelements = [4, 4]"),
-            Expect::Solved,
+            Expect::Solved("converged"),
         ),
         (
             "small physical scene",
             physical(PLATE, WINKLER, POINT),
-            Expect::Solved,
+            Expect::Solved("converged"),
         ),
     ]);
 }
@@ -228,18 +229,17 @@ fn malformed_toml_is_a_parse_error() {
     check(&cases);
 }
 
+/// Found by fuzzing: the physical branch of `validate` checks each input, and their combination
+/// can still leave double precision (Γ = D / (K μ L⁴), Δ = H² / (6 χ (1 − ν) μ L²),
+/// D = E H³ / (12 (1 − ν²))). The derived groups must be refused as invalid, naming `plate` (the
+/// message names the group and the units to check), rather than reach the solver as Γ = 0 or ∞.
 #[test]
-fn physical_scenes_whose_groups_overflow_do_not_panic() {
-    // The physical branch of `validate` checks its inputs but not the groups it derives from
-    // them (Γ = D / (K μ L⁴), Δ = H² / (6 χ (1 − ν) μ L²)): these currently validate with
-    // Γ = Δ = 0 or Γ = inf and fail later in the solver with a numerical error. A finite,
-    // positive check on the derived groups would turn them into `Invalid`; either way they
-    // must not panic.
+fn physical_scenes_whose_groups_overflow_are_invalid() {
     let point_at_centre =
         "[[load]]\nkind = \"point\"\nx = 0.0\ny = 0.0\nforce = 1.0\n[mesh]\nelements = [2, 2]";
     check(&[
         (
-            "physical, sides 1e308: L⁴ overflows, Γ = Δ = 0",
+            "physical, sides 1e308: L⁴ overflows, Δ = 0",
             physical(
                 &PLATE
                     .replace("length = 6.0", "length = 1e308")
@@ -247,21 +247,21 @@ fn physical_scenes_whose_groups_overflow_do_not_panic() {
                 WINKLER,
                 point_at_centre,
             ),
-            Expect::NoPanic,
+            Expect::Invalid("plate"),
         ),
         (
-            "physical, thickness 1e-200: H² underflows, Γ = Δ = 0",
+            "physical, thickness 1e-200: H³ underflows, D = 0",
             physical(
                 &PLATE.replace("thickness = 0.25", "thickness = 1e-200"),
                 WINKLER,
                 POINT,
             ),
-            Expect::NoPanic,
+            Expect::Invalid("plate"),
         ),
         (
             "physical, modulus 5e-324: Γ = inf",
             physical(PLATE, "model = \"winkler\"\nmodulus = 5e-324", POINT),
-            Expect::NoPanic,
+            Expect::Invalid("plate"),
         ),
         (
             "physical half-space, youngs_modulus 5e-324: Γ = inf",
@@ -270,27 +270,36 @@ fn physical_scenes_whose_groups_overflow_do_not_panic() {
                 "model = \"half-space\"\nyoungs_modulus = 5e-324\npoissons_ratio = 0.3",
                 POINT,
             ),
-            Expect::NoPanic,
+            Expect::Invalid("plate"),
         ),
     ]);
 }
 
+/// Found by fuzzing: `[i64; 2]` read through toml's deserializer took the first two entries and
+/// ignored the rest, so `elements = [1, 1, 1]` was accepted as [1, 1]. The counts are now read
+/// as a list whose length `validate` checks; a list of mixed types is not a list of integers.
 #[test]
-fn trailing_array_elements_do_not_panic() {
-    // `[i64; 2]` read through toml's deserializer takes the first two entries and ignores the
-    // rest, so `elements = [1, 1, 1]` is currently accepted as [1, 1] (a range `x = [a, b, c]`,
-    // read through the untagged `Coord`, is rejected). Should become a parse error; until
-    // then this only checks that nothing panics.
+fn extra_element_counts_are_rejected() {
     check(&[
         (
             "elements = [1, 1, 1]",
             dimensionless("[mesh]\nelements = [1, 1, 1]"),
-            Expect::NoPanic,
+            Expect::Invalid("mesh.elements"),
+        ),
+        (
+            "elements = [8]",
+            dimensionless("[mesh]\nelements = [8]"),
+            Expect::Invalid("mesh.elements"),
+        ),
+        (
+            "elements = []",
+            dimensionless("[mesh]\nelements = []"),
+            Expect::Invalid("mesh.elements"),
         ),
         (
             "elements = [2, 2, \"x\", nan]",
             dimensionless("[mesh]\nelements = [2, 2, \"x\", nan]"),
-            Expect::NoPanic,
+            Expect::ParseError,
         ),
     ]);
 }
@@ -462,61 +471,85 @@ fn out_of_range_values_name_their_field() {
     check(&cases);
 }
 
+/// Valid but extreme scenes: each solves with a converged status, or stops with an error of a
+/// definite kind (never a panic, never a non-finite answer). Extreme stiffness ratios (Γ, Δ
+/// towards 0 or 1e308) are valid scenes that the linear algebra cannot resolve: they are refused
+/// by the solver as numerical failures, whose messages point at the stiffness ratio.
 #[test]
-fn odd_but_valid_scenes_do_not_panic() {
+fn odd_scenes_have_a_definite_outcome() {
     let long_title = format!("title = \"{}\"\n", "é".repeat(200_000));
-    let cases: Vec<(&str, String)> = vec![
-        ("1 × 1 mesh", dimensionless("[mesh]\nelements = [1, 1]")),
-        ("1 × 1 mesh, qp", dimensionless("[mesh]\nelements = [1, 1]\n[solver]\nmethod = \"qp\"")),
+    let small = |extra: &str| dimensionless(&format!("[mesh]\nelements = [2, 2]{extra}"));
+    let converged = Expect::Solved("converged");
+    let cases: Vec<(&str, String, Expect)> = vec![
+        ("1 × 1 mesh", dimensionless("[mesh]\nelements = [1, 1]"), converged),
+        ("1 × 1 mesh, qp", dimensionless("[mesh]\nelements = [1, 1]\n[solver]\nmethod = \"qp\""), converged),
         (
             "1 × 1 half-space, gauss",
             dimensionless("[mesh]\nelements = [1, 1]\n[solver]\nconstraint = \"gauss\"")
                 .replace("\"winkler\"", "\"half-space\""),
+            converged,
         ),
-        ("1 × 8 mesh, bonded", dimensionless("[mesh]\nelements = [1, 8]\n[solver]\ncontact = \"bonded\"")),
-        ("odd mesh, symmetric load", dimensionless("[mesh]\nelements = [3, 5]")),
-        ("symmetry none", dimensionless("[mesh]\nelements = [2, 2]\nsymmetry = \"none\"")),
-        ("point load on a corner", dimensionless("[mesh]\nelements = [2, 2]").replace("x = 0.0\ny = 0.0", "x = 1.0\ny = -1.0")),
+        ("1 × 8 mesh, bonded", dimensionless("[mesh]\nelements = [1, 8]\n[solver]\ncontact = \"bonded\""), converged),
+        ("odd mesh, symmetric load", dimensionless("[mesh]\nelements = [3, 5]"), converged),
+        ("symmetry none", small("\nsymmetry = \"none\""), converged),
+        // Lumped Winkler springs: a nodal pressure acts at its node, so a corner load rests on
+        // the corner node alone.
+        ("point load on a corner", small("").replace("x = 0.0\ny = 0.0", "x = 1.0\ny = -1.0"), converged),
         (
             "point load just outside the tolerance band is clamped",
-            dimensionless("[mesh]\nelements = [2, 2]").replace("x = 0.0", "x = 1.0000000001"),
+            small("").replace("x = 0.0", "x = 1.0000000001"),
+            converged,
         ),
-        ("negative zero coordinates", dimensionless("[mesh]\nelements = [2, 2]").replace("x = 0.0\ny = 0.0", "x = -0.0\ny = -0.0")),
-        ("upward net load", dimensionless("[mesh]\nelements = [2, 2]").replace("force = 1.0", "force = -1.0")),
-        ("huge force 1e308", dimensionless("[mesh]\nelements = [2, 2]").replace("force = 1.0", "force = 1e308")),
-        ("penalty = 5e-324", dimensionless("[mesh]\nelements = [2, 2]\n[solver]\npenalty = 5e-324")),
-        ("penalty just below 1", dimensionless("[mesh]\nelements = [2, 2]\n[solver]\npenalty = 0.9999999999999999")),
-        ("max_iterations = 10000", dimensionless("[mesh]\nelements = [2, 2]\n[solver]\nmax_iterations = 10000")),
-        ("memory_limit_gib = 1e308 (inf bytes)", dimensionless("[mesh]\nelements = [2, 2]\n[solver]\nmemory_limit_gib = 1e308")),
-        ("memory_limit_gib = 5e-324", dimensionless("[mesh]\nelements = [2, 2]\n[solver]\nmemory_limit_gib = 5e-324")),
-        ("gamma = 1e308", dimensionless("[mesh]\nelements = [2, 2]").replace("gamma = 0.25e-3", "gamma = 1e308")),
-        ("gamma = 5e-324", dimensionless("[mesh]\nelements = [2, 2]").replace("gamma = 0.25e-3", "gamma = 5e-324")),
-        ("delta = 1e308", dimensionless("[mesh]\nelements = [2, 2]").replace("delta = 0.002857", "delta = 1e308")),
-        ("delta = 5e-324", dimensionless("[mesh]\nelements = [2, 2]").replace("delta = 0.002857", "delta = 5e-324")),
-        ("mu = 1e308", dimensionless("[mesh]\nelements = [2, 2]").replace("mu = 1.0", "mu = 1e308")),
-        ("mu = 5e-324", dimensionless("[mesh]\nelements = [2, 3]").replace("mu = 1.0", "mu = 5e-324")),
-        ("nu = -0.9999999999999999", dimensionless("[mesh]\nelements = [2, 2]").replace("nu = 0.3", "nu = -0.9999999999999999")),
+        ("negative zero coordinates", small("").replace("x = 0.0\ny = 0.0", "x = -0.0\ny = -0.0"), converged),
+        // A foundation that cannot pull cannot hold an upward load.
+        ("upward net load", small("").replace("force = 1.0", "force = -1.0"), Expect::SolveError("infeasible")),
+        ("huge force 1e308: normalised to 4 P", small("").replace("force = 1.0", "force = 1e308"), converged),
+        ("penalty = 5e-324", small("\n[solver]\npenalty = 5e-324"), converged),
+        ("penalty just below 1", small("\n[solver]\npenalty = 0.9999999999999999"), converged),
+        ("max_iterations = 10000", small("\n[solver]\nmax_iterations = 10000"), converged),
+        ("memory_limit_gib = 1e308 (inf bytes)", small("\n[solver]\nmemory_limit_gib = 1e308"), converged),
+        ("memory_limit_gib = 5e-324", small("\n[solver]\nmemory_limit_gib = 5e-324"), Expect::SolveError("too-large")),
+        // Γ = 1e308: a foundation 1e308 times softer than the plate; the reaction cannot be
+        // resolved against the load, which the equilibrium check reports.
+        ("gamma = 1e308", small("").replace("gamma = 0.25e-3", "gamma = 1e308"), Expect::SolveError("numerical")),
+        ("gamma = 5e-324", small("").replace("gamma = 0.25e-3", "gamma = 5e-324"), Expect::SolveError("numerical")),
+        // Δ = 1e308: no shear stiffness; each node rests on its own spring, still well posed.
+        ("delta = 1e308", small("").replace("delta = 0.002857", "delta = 1e308"), converged),
+        // Δ = 5e-324: infinite shear stiffness, κ_s = 1 / (μ Δ) overflows.
+        ("delta = 5e-324", small("").replace("delta = 0.002857", "delta = 5e-324"), Expect::SolveError("numerical")),
+        // Aspect ratios beyond [1e-3, 1e3] are refused: μ = 5e-324 made every nodal area zero
+        // and was reported as a load "outside [inf, −inf]".
+        ("mu = 1e308", small("").replace("mu = 1.0", "mu = 1e308"), Expect::Invalid("dimensionless.mu")),
+        ("mu = 5e-324", dimensionless("[mesh]\nelements = [2, 3]").replace("mu = 1.0", "mu = 5e-324"), Expect::Invalid("dimensionless.mu")),
+        ("mu = 1e-3 is the smallest accepted", small("").replace("mu = 1.0", "mu = 1e-3"), converged),
+        (
+            "physical, width / length = 1e-4",
+            physical(&PLATE.replace("width = 4.0", "width = 6e-4").replace("thickness = 0.25", "thickness = 1e-4"), WINKLER, POINT),
+            Expect::Invalid("plate.width"),
+        ),
+        ("nu = -0.9999999999999999", small("").replace("nu = 0.3", "nu = -0.9999999999999999"), converged),
+        // The patch's resultant is finite (1e308 × 5e-324 × 2), but its pressure per unit of the
+        // total load overflows: refused, naming the pressure, instead of an infinite load vector.
         (
             "patch of width 5e-324 next to a point load",
-            dimensionless("[mesh]\nelements = [2, 2]\n[[load]]\nkind = \"patch\"\nx = [0.0, 5e-324]\ny = [-1.0, 1.0]\npressure = 1e308"),
+            small("\n[[load]]\nkind = \"patch\"\nx = [0.0, 5e-324]\ny = [-1.0, 1.0]\npressure = 1e308"),
+            Expect::Invalid("load[1].pressure"),
         ),
-        ("very long title", format!("{long_title}{}", dimensionless("[mesh]\nelements = [2, 2]"))),
+        ("very long title", format!("{long_title}{}", small("")), converged),
         (
             "many loads",
-            dimensionless(&format!(
-                "[mesh]\nelements = [2, 2]\n{}",
+            small(&format!(
+                "\n{}",
                 "[[load]]\nkind = \"point\"\nx = 0.25\ny = 0.25\nforce = 1.0\n".repeat(2000)
             )),
+            converged,
         ),
         (
             "physical, youngs_modulus = 1e308 (Γ ≈ 5e295, still finite)",
             physical(&PLATE.replace("youngs_modulus = 30e9", "youngs_modulus = 1e308"), WINKLER, POINT),
+            Expect::SolveError("numerical"),
         ),
-        ("large mesh is validated only", dimensionless("[mesh]\nelements = [4000, 4000]")),
+        ("large mesh is validated only", dimensionless("[mesh]\nelements = [4000, 4000]"), Expect::ValidLarge),
     ];
-    let cases: Vec<_> = cases
-        .into_iter()
-        .map(|(case, text)| (case, text, Expect::Valid))
-        .collect();
     check(&cases);
 }

@@ -1,45 +1,73 @@
-//! Property tests over random scenes (bounded case counts so the suite stays fast).
+//! Property tests over random scenes. Every test draws its cases from a fixed seed, so a failure
+//! is reproducible and a pass means the same thing on every run; case counts are bounded so the
+//! suite stays fast.
 
-use liftoff::method::{Contact, MethodKind};
-use liftoff::{analyse, Analysis};
-use liftoff::{Method, PenaltySettings, Problem};
+use std::cell::Cell;
+
+use liftoff::foundation::{nodal_areas, FoundationKind};
+use liftoff::model::{Model, SymmetryMode};
+use liftoff::solve::penalty::{TENSION_FORCE_TOLERANCE, TENSION_TOLERANCE};
+use liftoff::{analyse, Analysis, Error, Method, Operators, PenaltySettings, Problem, QpSettings};
+use liftoff::{Solution, Status};
 use proptest::prelude::*;
+use proptest::test_runner::{RngSeed, TestRunner};
+
+/// Seed of every random test in this file.
+const SEED: u64 = 20_240_611;
+
+fn config(cases: u32) -> ProptestConfig {
+    ProptestConfig {
+        cases,
+        failure_persistence: None,
+        rng_seed: RngSeed::Fixed(SEED),
+        ..ProptestConfig::default()
+    }
+}
 
 #[derive(Debug, Clone)]
 struct RandomScene {
-    foundation: &'static str,
+    foundation: FoundationKind,
     gamma: f64,
     mu: f64,
     n: usize,
+    /// Point loads (s, t, relative force).
     loads: Vec<(f64, f64, f64)>,
+    /// Relative uniform pressure (0: none).
     uniform: f64,
 }
 
 impl RandomScene {
-    fn toml(&self, mirror_s: bool) -> String {
-        let mut t = format!(
-            "[dimensionless]\nfoundation = \"{}\"\ngamma = {:e}\ndelta = 0.002857\nmu = {}\nnu = 0.3\n[mesh]\nelements = [{}, {}]\nsymmetry = \"none\"\n",
-            self.foundation, self.gamma, self.mu, self.n, self.n
-        );
-        for &(s, tt, f) in &self.loads {
-            let s = if mirror_s { -s } else { s };
-            t.push_str(&format!(
-                "[[load]]\nkind = \"point\"\nx = {s}\ny = {tt}\nforce = {f}\n"
-            ));
+    /// The whole-plate model (no symmetry reduction), loads mirrored about s = 0 if asked.
+    fn model(&self, mirror_s: bool) -> Model {
+        let mut b = Model::builder()
+            .dimensionless(self.foundation, self.gamma, 0.002857, self.mu, 0.3)
+            .elements(self.n, self.n)
+            .symmetry(SymmetryMode::None);
+        for &(s, t, f) in &self.loads {
+            b = b.point_load(if mirror_s { -s } else { s }, t, f);
         }
         if self.uniform > 0.0 {
-            t.push_str(&format!(
-                "[[load]]\nkind = \"uniform\"\npressure = {}\n",
-                self.uniform
-            ));
+            b = b.uniform_load(self.uniform);
         }
-        t
+        b.build()
+            .unwrap_or_else(|e| panic!("random scene rejected: {e}\n{self:?}"))
+    }
+
+    fn problem(&self, mirror_s: bool, method: Method) -> Problem {
+        Problem {
+            model: self.model(mirror_s),
+            method,
+            memory_limit: liftoff::budget::default_memory_limit(),
+        }
     }
 }
 
 fn scenes() -> impl Strategy<Value = RandomScene> {
     (
-        prop_oneof![Just("winkler"), Just("half-space")],
+        prop_oneof![
+            Just(FoundationKind::Winkler),
+            Just(FoundationKind::HalfSpace)
+        ],
         -4.0f64..-1.0,
         0.5f64..1.0,
         prop_oneof![Just(4usize), Just(6), Just(8)],
@@ -56,32 +84,38 @@ fn scenes() -> impl Strategy<Value = RandomScene> {
         })
 }
 
-fn solve(
-    text: &str,
-    contact: Contact,
-    method: MethodKind,
-    eps: f64,
-) -> Result<Analysis, liftoff::Error> {
-    let mut p = Problem::from_toml(text)?;
-    p.method = match (contact, method) {
-        (Contact::Bonded, _) => Method::Bonded,
-        (Contact::Unbonded, MethodKind::Penalty) => Method::Penalty(PenaltySettings::fixed(eps)),
-        (Contact::Unbonded, MethodKind::Qp) => Method::qp(),
-    };
-    analyse(&p)
+/// The paper's penalty iteration at a fixed ε̄ (the property tests study ε̄ itself).
+fn penalty(epsilon: f64) -> Method {
+    Method::Penalty(PenaltySettings::fixed(epsilon))
+}
+
+fn solve(sc: &RandomScene, mirror_s: bool, method: Method) -> Result<Analysis, TestCaseError> {
+    analyse(&sc.problem(mirror_s, method.clone()))
+        .map_err(|e| TestCaseError::fail(format!("{}: {e}", method.name())))
+}
+
+fn max_abs(v: &[f64]) -> f64 {
+    v.iter().fold(0.0_f64, |m, x| m.max(x.abs()))
+}
+
+fn max_abs_diff(a: &[f64], b: &[f64]) -> f64 {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max)
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 24, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(24))]
 
     /// Equilibrium in every solve: the reaction balances the load to round-off.
     #[test]
     fn every_solve_is_in_equilibrium(sc in scenes()) {
-        let text = sc.toml(false);
-        for (contact, method) in [(Contact::Bonded, MethodKind::Penalty), (Contact::Unbonded, MethodKind::Qp)] {
-            let a = solve(&text, contact, method, 1e-5).map_err(|e| TestCaseError::fail(format!("{contact} {method}: {e}")))?;
+        for method in [Method::Bonded, Method::qp()] {
+            let name = method.name();
+            let a = solve(&sc, false, method)?;
             // Round-off bound: the plate's κ_s/K contrast costs a few digits (tests/bonded.rs).
-            prop_assert!(a.summary.resultant.relative_error < 1e-8, "{contact} {method}: {:e}", a.summary.resultant.relative_error);
+            prop_assert!(a.summary.resultant.relative_error < 1e-8, "{name}: {:e}", a.summary.resultant.relative_error);
         }
     }
 
@@ -91,12 +125,14 @@ proptest! {
     /// tensile beyond the solver tolerance.
     #[test]
     fn mirrored_loads_give_mirrored_fields_and_no_tension(sc in scenes()) {
-        let a = solve(&sc.toml(false), Contact::Unbonded, MethodKind::Penalty, 1e-8).map_err(|e| TestCaseError::fail(e.to_string()))?;
-        let b = solve(&sc.toml(true), Contact::Unbonded, MethodKind::Penalty, 1e-8).map_err(|e| TestCaseError::fail(e.to_string()))?;
+        let a = solve(&sc, false, penalty(1e-8))?;
+        let b = solve(&sc, true, penalty(1e-8))?;
+        // The mirrored problem is the same discrete problem: same outcome.
+        prop_assert_eq!(a.solution.status.kind(), b.solution.status.kind());
         let (fa, fb) = (&a.report.field, &b.report.field);
         let nx = fa.nx;
-        let vmax = fa.v.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
-        let smax = fa.sigma.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+        let vmax = max_abs(&fa.v);
+        let smax = max_abs(&fa.sigma);
         for j in 0..=fa.ny {
             for i in 0..=nx {
                 let k = i + j * (nx + 1);
@@ -106,35 +142,212 @@ proptest! {
                 prop_assert!((fa.sigma[k] - fb.sigma[m]).abs() <= 1e-9 * smax, "σ at node ({i}, {j})");
             }
         }
-        let q = solve(&sc.toml(false), Contact::Unbonded, MethodKind::Qp, 1e-5).map_err(|e| TestCaseError::fail(e.to_string()))?;
+        let q = solve(&sc, false, Method::qp())?;
+        prop_assert!(q.solution.status.converged(), "QP: {}", q.solution.status.describe());
         let qs = &q.report.field.sigma;
-        let qmax = qs.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
         let min = qs.iter().cloned().fold(f64::INFINITY, f64::min);
-        prop_assert!(min >= -1e-8 * qmax, "QP tension {min:e}");
-    }
-
-    /// The two methods agree where the penalty is adequate (small ε̄; runs flagged
-    /// penalty-too-weak are skipped, they say so themselves).
-    #[test]
-    fn penalty_and_qp_agree(sc in scenes()) {
-        let text = sc.toml(false);
-        let q = solve(&text, Contact::Unbonded, MethodKind::Qp, 1e-8).map_err(|e| TestCaseError::fail(e.to_string()))?;
-        let p = solve(&text, Contact::Unbonded, MethodKind::Penalty, 1e-8).map_err(|e| TestCaseError::fail(e.to_string()))?;
-        prop_assume!(p.summary.converged);
-        let vmax = q.report.field.v.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
-        let dv = q.report.field.v.iter().zip(&p.report.field.v).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
-        // O(ε̄) with constants up to ~1e3 (tests/unbonded.rs): 1e-4 relative at ε̄ = 1e-8.
-        prop_assert!(dv <= 1e-4 * vmax, "ΔV {dv:e} of {vmax:e}");
+        prop_assert!(min >= -1e-8 * max_abs(qs), "QP tension {min:e}");
     }
 }
 
-proptest! {
-    #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, ..ProptestConfig::default() })]
+/// The QP reference of `penalty_and_qp_agree`: clarabel at 1e-13 instead of its default 1e-11
+/// (see there).
+fn reference_qp() -> Method {
+    Method::Qp(QpSettings {
+        tol_gap_abs: 1e-13,
+        tol_gap_rel: 1e-13,
+        tol_feas: 1e-13,
+        ..QpSettings::default()
+    })
+}
 
-    /// Random edits of a valid scene (any key, any value, including garbage) give a result or an
-    /// error, never a panic.
+/// Error allowed to the QP reference itself, relative to max |V|. An interior-point method
+/// resolves a weakly active node (true σ and gap both near zero) only to about the square root
+/// of its tolerance: both stay slightly positive. Over 2000 scenes of this strategy the QP at
+/// 1e-13 differs from the penalty's ε̄ → 0 limit (which satisfies σ·gap = 0 to 1e-12) by at
+/// most 7.2e-5 of max |V| (one node with σ = 8e-6 and gap = 3e-5 of their peaks); at clarabel's
+/// default 1e-11, by up to 4.9e-4 — the source of the earlier `ΔV 1.6e-7 of 9.8e-4` failure.
+const QP_FLOOR: f64 = 2e-4;
+
+/// Constant of the penalty error bound: |V_pen − V_qp| / max |V| ≤ K ε̄ g_max / (Γ max |V|).
+///
+/// At a lifted point the penalty leaves a spring ε̄ times as stiff as the foundation (compliance
+/// μΓ w / ε̄), so it pulls with σ ≈ −ε̄ g / Γ (dimensionless σ, gap g in V units). That spurious
+/// tension, on at most the whole plate, changes the reaction by at most ε̄ g_max / Γ of the
+/// load and V by about as much of max |V|: the error is first order in ε̄ with a constant
+/// g_max / (Γ max |V|) that the QP reference gives. Measured over 2000 scenes at ε̄ from 1e-5
+/// to 1e-8: K ≤ 2.2 (and ≤ 1.1 on all but one).
+const PENALTY_K: f64 = 4.0;
+
+/// The penalty's error bound for a scene whose QP reference has max |V| = `vmax` and largest
+/// nodal gap `gmax` (V units).
+fn penalty_bound(eps: f64, gamma: f64, gmax: f64, vmax: f64) -> f64 {
+    PENALTY_K * eps * gmax / (gamma * vmax) + QP_FLOOR
+}
+
+/// Tension left at the lifted points of a penalty solution, recomputed from σ: (|most negative
+/// σ| / peak σ, pulling force / pushing force) at the constraint points.
+fn tension(ops: &Operators, sol: &Solution) -> (f64, f64) {
+    let gs = ops.g_times(&sol.sigma);
+    let w = &ops.constraints.weights;
+    let peak = gs.iter().cloned().fold(0.0_f64, f64::max);
+    let most_negative = gs.iter().cloned().fold(0.0_f64, f64::min);
+    let pull: f64 = gs.iter().zip(w).map(|(g, w)| (-g).max(0.0) * w).sum();
+    let push: f64 = gs.iter().zip(w).map(|(g, w)| g.max(0.0) * w).sum();
+    (-most_negative / peak, pull / push)
+}
+
+/// What one scene of `penalty_and_qp_agree` exercised.
+#[derive(Default)]
+struct Tally {
+    runs: Cell<usize>,
+    converged: Cell<usize>,
+    too_weak: Cell<usize>,
+    cycling: Cell<usize>,
+    rate_checked: Cell<usize>,
+}
+
+fn bump(c: &Cell<usize>) {
+    c.set(c.get() + 1);
+}
+
+/// The penalty method agrees with the QP to its O(ε̄) bound wherever it converges, and says why
+/// wherever it does not — never a silent wrong answer. At the paper's ε̄ = 1e-5 and at 1e-6, on
+/// one assembly per scene:
+///
+/// * converged: |V_pen − V_qp| / max |V| within [`penalty_bound`]; where it converges at both
+///   ε̄, successive changes of V from ε̄ = 1e-5 to 1e-6 to 1e-7 shrink tenfold (first order);
+/// * penalty too weak: the tension left at lifted points, recomputed from σ, exceeds the
+///   documented tolerance; the suggested ε̄ is smaller, converges, and meets the bound;
+/// * cycling or the iteration cap: the status says "not converged"; the QP solves the scene.
+///
+/// The tally then checks that the fixed seed's cases exercise what they should: at least 90 %
+/// of the runs converge (97.6 % of 2000 scenes at 1e-5, 99.95 % at 1e-6), and at least one run
+/// is flagged penalty-too-weak, so neither branch can be skipped wholesale.
+#[test]
+fn penalty_and_qp_agree() {
+    let tally = Tally::default();
+    let mut runner = TestRunner::new(config(64));
+    let result = runner.run(&scenes(), |sc| {
+        let model = sc.model(false);
+        let ops = Operators::assemble(&model);
+        let q = liftoff::solve(&ops, &reference_qp()).map_err(|e| TestCaseError::fail(format!("QP: {e}")))?;
+        prop_assert!(q.status.converged(), "QP reference: {}", q.status.describe());
+        let vq = ops.node_w(&q.u);
+        let vmax = max_abs(&vq);
+        let areas = nodal_areas(&ops.mesh);
+        let gmax = q.gap.iter().zip(&areas).map(|(g, a)| g / a).fold(0.0, f64::max);
+        let gamma = model.groups.gamma;
+        let mut errors = Vec::new();
+        for eps in [1e-5, 1e-6] {
+            bump(&tally.runs);
+            let p = liftoff::solve(&ops, &penalty(eps)).map_err(|e| TestCaseError::fail(format!("penalty ε̄ = {eps:e}: {e}")))?;
+            let err = max_abs_diff(&ops.node_w(&p.u), &vq) / vmax;
+            let bound = penalty_bound(eps, gamma, gmax, vmax);
+            match &p.status {
+                Status::Converged => {
+                    bump(&tally.converged);
+                    prop_assert!(err <= bound, "ε̄ = {eps:e}: ΔV {err:.2e} of max |V| > bound {bound:.2e}");
+                    errors.push(err);
+                }
+                Status::PenaltyTooWeak { tension_ratio, tension_share, suggested_penalty } => {
+                    bump(&tally.too_weak);
+                    let (ratio, share) = tension(&ops, &p);
+                    prop_assert!(ratio > TENSION_TOLERANCE || share > TENSION_FORCE_TOLERANCE,
+                        "flagged too weak with tension {ratio:.2e} of the peak and {share:.2e} of the load");
+                    prop_assert!((ratio - tension_ratio).abs() <= 1e-9 * ratio && (share - tension_share).abs() <= 1e-9 * share,
+                        "reported tension {tension_ratio:e}, {tension_share:e}; recomputed {ratio:e}, {share:e}");
+                    prop_assert!(*suggested_penalty < eps, "suggested ε̄ {suggested_penalty:e} ≥ {eps:e}");
+                    let retry = liftoff::solve(&ops, &penalty(*suggested_penalty)).map_err(|e| TestCaseError::fail(e.to_string()))?;
+                    prop_assert!(retry.status.converged(), "at the suggested ε̄ = {suggested_penalty:e}: {}", retry.status.describe());
+                    let err = max_abs_diff(&ops.node_w(&retry.u), &vq) / vmax;
+                    let bound = penalty_bound(*suggested_penalty, gamma, gmax, vmax);
+                    prop_assert!(err <= bound, "at the suggested ε̄ = {suggested_penalty:e}: ΔV {err:.2e} > {bound:.2e}");
+                }
+                other => {
+                    bump(&tally.cycling);
+                    prop_assert!(other.describe().starts_with("not converged"), "{}", other.describe());
+                }
+            }
+        }
+        // First order, without the QP's floor: where the penalty converges at 1e-5 and 1e-6,
+        // the change of V from 1e-6 to 1e-7 is a tenth of that from 1e-5 to 1e-6. With the
+        // penalised set fixed, V(ε̄) = V* + a ε̄ + O(ε̄²), so the ratio is 10 (1 + O(ε̄)):
+        // measured 9.975 to 10.000; 9 to 11 allowed. Changes below 1e-7 of max |V| (scenes
+        // that barely lift) are left to round-off and skipped.
+        if let [_, _] = errors[..] {
+            let v = |eps: f64| -> Result<Vec<f64>, TestCaseError> {
+                let p = liftoff::solve(&ops, &penalty(eps)).map_err(|e| TestCaseError::fail(e.to_string()))?;
+                prop_assert!(p.status.converged(), "ε̄ = {eps:e}: {}", p.status.describe());
+                Ok(ops.node_w(&p.u))
+            };
+            let (v5, v6, v7) = (v(1e-5)?, v(1e-6)?, v(1e-7)?);
+            let (d1, d2) = (max_abs_diff(&v5, &v6), max_abs_diff(&v6, &v7));
+            if d2 > 1e-7 * vmax {
+                bump(&tally.rate_checked);
+                let rate = d1 / d2;
+                prop_assert!((9.0..11.0).contains(&rate), "ΔV 1e-5 → 1e-6: {d1:.2e}, 1e-6 → 1e-7: {d2:.2e}: ratio {rate:.2}");
+            }
+        }
+        Ok(())
+    });
+    if let Err(e) = result {
+        panic!("{e}");
+    }
+    let (runs, converged) = (tally.runs.get(), tally.converged.get());
+    eprintln!(
+        "penalty_and_qp_agree: {runs} runs, {converged} converged, {} too weak, {} cycling or capped, {} first-order checks",
+        tally.too_weak.get(),
+        tally.cycling.get(),
+        tally.rate_checked.get()
+    );
+    assert!(
+        converged as f64 >= 0.9 * runs as f64,
+        "only {converged} of {runs} runs converged"
+    );
+    assert!(
+        tally.too_weak.get() >= 1,
+        "the seed's cases no longer exercise a penalty-too-weak run"
+    );
+    assert!(
+        tally.rate_checked.get() >= 5,
+        "only {} scenes had errors large enough to check the rate",
+        tally.rate_checked.get()
+    );
+}
+
+/// Whether a validation error about an edited `key` may name `field`: the key itself
+/// (`plate.thickness`, `load[0].x`, `mesh.elements[1]`), or the group whose combination it
+/// enters (the derived groups Γ, Δ, D name `plate`; the load total names `load`; a side shorter
+/// than the thickness names `plate.thickness`, an aspect ratio out of range `plate.width`).
+fn may_name(key: &str, field: &str) -> bool {
+    let plate = [
+        "length",
+        "width",
+        "thickness",
+        "youngs_modulus",
+        "poissons_ratio",
+    ];
+    let foundation = ["model", "modulus"];
+    let load = ["kind", "x", "y", "force", "pressure"];
+    let last = field.rsplit('.').next().unwrap_or(field);
+    let leaf = last.split('[').next().unwrap_or(last);
+    leaf == key
+        || (field == "plate" && (plate.contains(&key) || foundation.contains(&key)))
+        || (field == "load" && load.contains(&key))
+        || (["plate.thickness", "plate.width"].contains(&field)
+            && ["length", "width"].contains(&key))
+}
+
+proptest! {
+    #![proptest_config(config(256))]
+
+    /// Random edits of a valid scene (any key, any value, including garbage) give a usable
+    /// problem or an error that points at the edit, never a panic: a parse error quotes the
+    /// edited line, a validation error names the edited key (or the group it enters), and an
+    /// accepted scene yields finite groups, loads summing to ±4 P and a valid method.
     #[test]
-    fn random_scene_edits_never_panic(
+    fn random_scene_edits_are_accepted_usable_or_rejected_at_the_edit(
         line in 0usize..20,
         value in prop_oneof![
             Just("nan".to_string()), Just("-inf".to_string()), Just("-1.0".to_string()), Just("0".to_string()),
@@ -145,11 +358,35 @@ proptest! {
         ],
     ) {
         let base = liftoff::examples::scene("footing").unwrap_or_default();
-        let lines: Vec<&str> = base.lines().filter(|l| l.contains(" = ")).collect();
-        let target = lines[line % lines.len()];
+        let lines: Vec<(usize, &str)> = base.lines().enumerate().filter(|(_, l)| l.contains(" = ")).collect();
+        prop_assert!(!lines.is_empty(), "the footing scene has key = value lines");
+        let (number, target) = lines[line % lines.len()];
         let key = target.split(" = ").next().unwrap_or("x");
-        let edited = base.replacen(target, &format!("{key} = {value}"), 1);
-        // Only parse and validate: solving is covered above, and a huge mesh would be refused.
-        let _ = Problem::from_toml(&edited);
+        let edited: String = base
+            .lines()
+            .enumerate()
+            .map(|(k, l)| if k == number { format!("{key} = {value}\n") } else { format!("{l}\n") })
+            .collect();
+        match Problem::from_toml(&edited) {
+            Ok(p) => {
+                let g = &p.model.groups;
+                for (name, v) in [("Γ", g.gamma), ("Δ", g.delta), ("μ", g.mu)] {
+                    prop_assert!(v.is_finite() && v > 0.0, "`{key} = {value}` accepted with {name} = {v:e}");
+                }
+                prop_assert!(g.nu > -1.0 && g.nu < 0.5, "`{key} = {value}` accepted with ν = {}", g.nu);
+                let r = p.model.resultant();
+                prop_assert!((r.abs() - 4.0).abs() <= 1e-9, "`{key} = {value}`: loads sum to {r}, not ±4 P");
+                prop_assert!(p.model.elements.iter().all(|n| (1..=4000).contains(n)), "`{key} = {value}`: elements {:?}", p.model.elements);
+                prop_assert!(p.method.validate().is_ok(), "`{key} = {value}`: method {:?}", p.method);
+            }
+            Err(Error::Parse(m)) => {
+                // toml reports 1-based lines.
+                prop_assert!(m.contains(&format!("line {}", number + 1)), "`{key} = {value}`: parse error elsewhere: {m}");
+            }
+            Err(Error::Invalid { field, message }) => {
+                prop_assert!(may_name(key, &field), "`{key} = {value}` rejected naming `{field}`: {message}");
+            }
+            Err(e) => prop_assert!(false, "`{key} = {value}`: validation returned a {} error: {e}", e.kind()),
+        }
     }
 }

@@ -12,6 +12,22 @@ use crate::model::{Groups, Load, Model, Physical};
 /// Upper limit on elements per side: beyond it even a Winkler model exceeds any sane memory.
 pub const MAX_ELEMENTS_PER_SIDE: i64 = 4000;
 
+/// Range of the aspect ratio μ = width / length. Beyond it the plate is a strip (a beam) rather
+/// than a plate, and at the extremes the geometry leaves double precision: μ = 5e-324 made every
+/// nodal area zero (reported as a load "outside [inf, −inf]"), μ = 1e308 broke the Cholesky.
+pub const ASPECT_RATIO_RANGE: [f64; 2] = [1e-3, 1e3];
+
+fn aspect_ratio(field: &str, mu: f64) -> Result<f64> {
+    let [lo, hi] = ASPECT_RATIO_RANGE;
+    if !(lo..=hi).contains(&mu) {
+        return Err(Error::invalid(
+            field,
+            format!("the plate's aspect ratio width / length = {mu:e} lies outside [{lo:e}, {hi:e}]: a plate that much longer than wide is a beam"),
+        ));
+    }
+    Ok(mu)
+}
+
 fn finite_positive(field: &str, v: f64, unit: &str) -> Result<f64> {
     if !v.is_finite() {
         return Err(Error::invalid(
@@ -85,7 +101,7 @@ fn groups(file: &SceneFile) -> Result<(Groups, Option<(f64, f64)>, [f64; 2])> {
                     ));
                 }
                 let l = 0.5 * length;
-                let mu = width / length;
+                let mu = aspect_ratio("plate.width", width / length)?;
                 let d = e * h.powi(3) / (12.0 * (1.0 - nu * nu));
                 let delta = h * h / (6.0 * chi * (1.0 - nu) * mu * l * l);
                 let gamma = match f.model {
@@ -149,7 +165,10 @@ fn groups(file: &SceneFile) -> Result<(Groups, Option<(f64, f64)>, [f64; 2])> {
             (None, None, Some(g)) => {
                 let gamma = finite_positive("dimensionless.gamma", g.gamma, "Γ")?;
                 let delta = finite_positive("dimensionless.delta", g.delta, "Δ")?;
-                let mu = finite_positive("dimensionless.mu", g.mu, "width/length")?;
+                let mu = aspect_ratio(
+                    "dimensionless.mu",
+                    finite_positive("dimensionless.mu", g.mu, "width/length")?,
+                )?;
                 let nu = poisson("dimensionless.nu", g.nu)?;
                 Ok((Groups { foundation: g.foundation, gamma, delta, mu, nu }, None, [1.0, mu]))
             }
@@ -331,10 +350,20 @@ fn loads(
     }
     // P = |resultant| / 4; express every load in units of P.
     let p_force = total.abs() / 4.0;
-    for l in &mut loads {
+    for (k, l) in loads.iter_mut().enumerate() {
         match l {
             Load::Point { force, .. } => *force /= p_force,
-            Load::Patch { pressure, .. } => *pressure *= area_scale / p_force,
+            Load::Patch { pressure, .. } => {
+                *pressure *= area_scale / p_force;
+                // A huge pressure on a vanishing patch has a finite resultant, but the pressure
+                // itself, in units of the resultant per unit area, can overflow.
+                if !pressure.is_finite() {
+                    return Err(Error::invalid(
+                        format!("load[{k}].pressure"),
+                        "the pressure overflows when expressed per unit of the total load: the patch is too small for its pressure (check its extent and units, Pa)",
+                    ));
+                }
+            }
         }
     }
 
