@@ -238,7 +238,8 @@ impl FullField {
     }
 
     /// The contact boundary: the zero level set of the bilinear would-be gap by marching
-    /// squares, one or two segments per element it crosses.
+    /// squares, one or two segments per element it crosses, each oriented with the contact side
+    /// on its left (so closed curves run counter-clockwise around contact).
     pub fn contact_boundary(&self) -> Vec<BoundarySegment> {
         let mut out = Vec::new();
         for j in 0..self.ny {
@@ -246,7 +247,8 @@ impl FullField {
                 let c = self.cell(i, j);
                 let f = c.map(|k| self.signed_gap[k]);
                 let ins = f.map(inside);
-                // Crossing on edge e (corners e and e + 1): φ is linear along it.
+                // Crossing on edge e (corners e and e + 1), where φ is linear, with its local
+                // coordinates (ξ, η) ∈ [0, 1]².
                 let cross = |e: usize| -> Option<BoundaryPoint> {
                     let (a, b) = (e, (e + 1) % 4);
                     if ins[a] == ins[b] {
@@ -255,12 +257,33 @@ impl FullField {
                     let t = (f[a] / (f[a] - f[b])).clamp(0.0, 1.0);
                     let (na, nb) = (c[a], c[b]);
                     let lerp = |v: &[f64]| v[na] + t * (v[nb] - v[na]);
+                    let local = match e {
+                        0 => (t, 0.0),
+                        1 => (1.0, t),
+                        2 => (1.0 - t, 1.0),
+                        _ => (0.0, 1.0 - t),
+                    };
                     Some(BoundaryPoint {
+                        local,
                         st: (lerp(&self.s), lerp(&self.t)),
                         xy: (lerp(&self.x), lerp(&self.y)),
                     })
                 };
                 let mut push = |p: BoundaryPoint, q: BoundaryPoint| {
+                    // Contact (φ < 0) lies to the left when φ decreases along the left normal
+                    // (−dη, dξ); orientation is the same in (ξ, η), (s, t) and (x, y).
+                    let (xi, eta) = (
+                        0.5 * (p.local.0 + q.local.0),
+                        0.5 * (p.local.1 + q.local.1),
+                    );
+                    let dxi = (f[1] - f[0]) * (1.0 - eta) + (f[2] - f[3]) * eta;
+                    let deta = (f[3] - f[0]) * (1.0 - xi) + (f[2] - f[1]) * xi;
+                    let (dx, dy) = (q.local.0 - p.local.0, q.local.1 - p.local.1);
+                    let (p, q) = if -dy * dxi + dx * deta <= 0.0 {
+                        (p, q)
+                    } else {
+                        (q, p)
+                    };
                     out.push(BoundarySegment {
                         element: i + j * self.nx,
                         st: [p.st, q.st],
@@ -380,6 +403,7 @@ impl FullField {
 
 #[derive(Debug, Clone, Copy)]
 struct BoundaryPoint {
+    local: (f64, f64),
     st: (f64, f64),
     xy: (f64, f64),
 }
