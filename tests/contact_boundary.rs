@@ -82,12 +82,20 @@ fn winkler_strip_edge_of_contact_converges_at_second_order() {
     for nx in [20, 40, 80, 160, 320, 640] {
         let h = 2.0 / nx as f64;
         let r = run(&strip_scene(gamma, delta, mu, nx));
-        assert!(r.solution.status.converged(), "nx = {nx}: {}", r.summary.status);
+        assert!(
+            r.solution.status.converged(),
+            "nx = {nx}: {}",
+            r.summary.status
+        );
         let f = &r.report.field;
         // The discrete solution is y-independent (ν = 0): the three rows of nodes agree.
         let n = f.nodes_x();
         let spread = (0..n)
-            .map(|i| (f.v[i] - f.v[i + n]).abs().max((f.v[i] - f.v[i + 2 * n]).abs()))
+            .map(|i| {
+                (f.v[i] - f.v[i + n])
+                    .abs()
+                    .max((f.v[i] - f.v[i + 2 * n]).abs())
+            })
             .fold(0.0, f64::max);
         assert!(
             spread < 1e-8 * max_abs(&f.v),
@@ -123,7 +131,10 @@ fn winkler_strip_edge_of_contact_converges_at_second_order() {
     let (rate, _) = loglog_fit(&new).expect("fit of the located radius");
     let (rate_old, _) = loglog_fit(&old).expect("fit of the node-resolved radius");
     eprintln!("strip: rate {rate:.2} located, {rate_old:.2} node-resolved");
-    assert!(rate > 1.5, "located contact radius converges at rate {rate:.2}");
+    assert!(
+        rate > 1.5,
+        "located contact radius converges at rate {rate:.2}"
+    );
     assert!(
         rate_old < 1.5,
         "node-resolved radius converges at rate {rate_old:.2}: expected first order"
@@ -263,8 +274,14 @@ fn contact_area_is_the_area_inside_the_interpolated_boundary() {
                 .sum::<f64>()
                 / 4.0;
             let deficit = (polygon / exact - 1.0).abs();
-            eprintln!("{found} {n}: polygon/exact − 1 = {:.2e}", polygon / exact - 1.0);
-            assert!(deficit < 0.02, "{found} {n}: polygon {polygon} vs exact {exact}");
+            eprintln!(
+                "{found} {n}: polygon/exact − 1 = {:.2e}",
+                polygon / exact - 1.0
+            );
+            assert!(
+                deficit < 0.02,
+                "{found} {n}: polygon {polygon} vs exact {exact}"
+            );
             deficits.push(deficit);
             // Every segment end lies on the zero of the interpolated field.
             let scale = max_abs(&f.signed_gap);
@@ -327,7 +344,11 @@ fn extents_and_profiles_end_at_the_located_boundary() {
             .iter()
             .find(|pt| (pt.coord - ext).abs() < 1e-12)
             .expect("the crossing is a profile point");
-        assert!(at.sigma.abs() < 1e-12, "{found}: σ = {} at the edge", at.sigma);
+        assert!(
+            at.sigma.abs() < 1e-12,
+            "{found}: σ = {} at the edge",
+            at.sigma
+        );
         let peak = max_abs(&f.sigma);
         for pt in &axis.points {
             let i = ((pt.s + 1.0) * 0.5 * f.nx as f64).round() as usize;
@@ -354,16 +375,26 @@ fn boundary_does_not_depend_on_the_symmetry_reduction() {
     for found in ["half-space", "winkler"] {
         let text = point_scene(found, 0.75e-3, 0.002857, 1.0, (0.0, 0.0), [12, 12], "");
         let quarter: Analysis = run(&text);
-        let whole = run(&text.replace("elements = [12, 12]", "elements = [12, 12]\nsymmetry = \"none\""));
+        let whole = run(&text.replace(
+            "elements = [12, 12]",
+            "elements = [12, 12]\nsymmetry = \"none\"",
+        ));
         assert_eq!(quarter.summary.model_elements, [6, 6]);
         assert_eq!(whole.summary.model_elements, [12, 12]);
         let (q, w) = (&quarter.report, &whole.report);
         for (name, a, b) in [
             ("fraction", q.contact_fraction, w.contact_fraction),
             ("extent x", q.contact_extent.x, w.contact_extent.x),
-            ("extent diagonal", q.contact_extent.diagonal, w.contact_extent.diagonal),
+            (
+                "extent diagonal",
+                q.contact_extent.diagonal,
+                w.contact_extent.diagonal,
+            ),
         ] {
-            assert!((a - b).abs() < 1e-6, "{found} {name}: quarter {a} vs whole {b}");
+            assert!(
+                (a - b).abs() < 1e-6,
+                "{found} {name}: quarter {a} vs whole {b}"
+            );
         }
         assert_eq!(q.boundary.len(), w.boundary.len(), "{found}: segments");
     }

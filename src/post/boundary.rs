@@ -94,7 +94,8 @@ pub fn self_compliance(ops: &Operators) -> f64 {
 pub fn pyramid_self_integral(hx: f64, hy: f64) -> f64 {
     // The node's four elements (offsets from the node's lower-left element) and the node's
     // local index in each (counter-clockwise from the lower-left corner).
-    const AROUND: [((isize, isize), usize); 4] = [((0, 0), 2), ((1, 0), 3), ((1, 1), 0), ((0, 1), 1)];
+    const AROUND: [((isize, isize), usize); 4] =
+        [((0, 0), 2), ((1, 0), 3), ((1, 1), 0), ((0, 1), 1)];
     const MIRROR_X: [usize; 4] = [1, 0, 3, 2];
     const MIRROR_Y: [usize; 4] = [3, 2, 1, 0];
     let mut sum = 0.0;
@@ -272,10 +273,7 @@ impl FullField {
                 let mut push = |p: BoundaryPoint, q: BoundaryPoint| {
                     // Contact (φ < 0) lies to the left when φ decreases along the left normal
                     // (−dη, dξ); orientation is the same in (ξ, η), (s, t) and (x, y).
-                    let (xi, eta) = (
-                        0.5 * (p.local.0 + q.local.0),
-                        0.5 * (p.local.1 + q.local.1),
-                    );
+                    let (xi, eta) = (0.5 * (p.local.0 + q.local.0), 0.5 * (p.local.1 + q.local.1));
                     let dxi = (f[1] - f[0]) * (1.0 - eta) + (f[2] - f[3]) * eta;
                     let deta = (f[3] - f[0]) * (1.0 - xi) + (f[2] - f[1]) * xi;
                     let (dx, dy) = (q.local.0 - p.local.0, q.local.1 - p.local.1);
@@ -437,7 +435,10 @@ mod tests {
     fn negative_fraction_of_linear_fields_is_the_polygon_area() {
         // f = x + y − ½: negative in the triangle below the anti-diagonal through (½, 0): 1/8.
         let f = [-0.5, 0.5, 1.5, 0.5];
-        assert!((negative_fraction(f) - 0.125).abs() < 1e-15, "corner triangle");
+        assert!(
+            (negative_fraction(f) - 0.125).abs() < 1e-15,
+            "corner triangle"
+        );
         // f = x − 0.3: a vertical strip of width 0.3.
         let f = [-0.3, 0.7, 0.7, -0.3];
         assert!((negative_fraction(f) - 0.3).abs() < 1e-15, "strip");
@@ -456,10 +457,7 @@ mod tests {
             let f = [-c, -c, 1.0 - c, -c];
             let exact: f64 = c * (1.0 - c.ln());
             let got = negative_fraction(f);
-            assert!(
-                (got - exact).abs() < 1e-14,
-                "xy < {c}: {got} vs {exact}"
-            );
+            assert!((got - exact).abs() < 1e-14, "xy < {c}: {got} vs {exact}");
         }
     }
 
