@@ -279,19 +279,15 @@ fn gauss_constraints_agree_between_methods() {
 
 /// The paper's headline number: square plate on a half-space, central point load,
 /// Γ_h = 0.25e-3, 8 × 8 quarter mesh: contact radius 0.44 (Svec, Kirchhoff plate: 0.50), reached
-/// in 4–6 penalty steps. A nodal contact boundary is only located to within one element
-/// (h = 1/8 of L here), so that is the tolerance; finer meshes must stay below Svec's value and
-/// converge (the radius changes less between 32 and 64 elements than between 16 and 32).
+/// in 4–6 penalty steps. The paper's radius is resolved to its mesh, so it carries an error of up
+/// to one of its elements (h = 1/8 of L) against the converged boundary; liftoff's located
+/// boundary converges (the radius changes less between 32 and 64 elements than between 16 and
+/// 32), so its value at 64 elements must lie within h of 0.44, and every mesh below Svec's value.
 #[test]
 fn paper_contact_radius_and_iteration_count() {
     let text = liftoff::examples::scene("paper-halfspace").expect("bundled scene");
     let a = run(text);
     let h = 1.0 / 8.0;
-    assert!(
-        (a.summary.contact_radius - 0.44).abs() < h,
-        "contact radius {} vs the paper's 0.44",
-        a.summary.contact_radius
-    );
     assert!(
         (4..=6).contains(&a.summary.iterations),
         "{} penalty steps vs the paper's 4–6",
@@ -304,11 +300,16 @@ fn paper_contact_radius_and_iteration_count() {
     }
     eprintln!("contact radius at 16, 32, 64 elements: {radii:?}");
     assert!(
+        (radii[2] - 0.44).abs() < h,
+        "contact radius {} at 64 elements vs the paper's 0.44",
+        radii[2]
+    );
+    assert!(
         radii.iter().all(|&r| r < 0.50),
         "below Svec's Kirchhoff value: {radii:?}"
     );
     assert!(
-        (radii[2] - radii[1]).abs() < (radii[1] - radii[0]).abs() + 1e-3,
+        (radii[2] - radii[1]).abs() < (radii[1] - radii[0]).abs(),
         "converging: {radii:?}"
     );
 }

@@ -1,11 +1,19 @@
 //! Post-processing: whole-plate fields (mirrored from a reduced model), stress resultants,
 //! profiles along the paper's lines, contact measures, resultants and residuals.
 //!
+//! The contact boundary is located inside the elements ([`boundary`]): contact area, radius,
+//! extents and the pressure of the profiles end where the would-be gap changes sign, not at
+//! the first lifted node.
+//!
 //! Physical quantities are in SI units for a scene given in SI units, and in units of
 //! L = P = D = 1 for a dimensionless scene. Dimensionless ones follow the paper (eq. 4.1):
 //! V = D w / (P L²), σ = μ L² r / P.
 
+pub mod boundary;
+
 use serde::Serialize;
+
+pub use boundary::BoundarySegment;
 
 use crate::foundation::nodal_areas;
 use crate::mesh::{Dof, Mesh};
@@ -16,7 +24,9 @@ use crate::solve::Solution;
 
 /// A node is in contact where its pressure exceeds this fraction of the peak pressure: contact
 /// is where the soil carries load. QP solutions leave ~1e-11 of the peak on lifted nodes and
-/// penalty solutions leave small tensions there, so the threshold separates both cleanly.
+/// penalty solutions leave small tensions there, so the threshold separates both cleanly. It
+/// decides [`FullField::contact`] node by node; areas and extents use the boundary located
+/// inside the elements ([`boundary`]).
 pub const CONTACT_THRESHOLD: f64 = 1e-6;
 
 /// Nodal fields over the whole plate on the (nx + 1) × (ny + 1) grid, node index i + j (nx + 1).
@@ -44,6 +54,13 @@ pub struct FullField {
     pub pressure: Vec<f64>,
     /// Gap (foundation settlement − w), physical length; ≥ 0 where the plate lifted.
     pub gap: Vec<f64>,
+    /// Would-be gap φ = gap − c r, the gap with the node's own pressure released ([`boundary`]),
+    /// physical length: negative in contact, the gap where lifted; −w on Winkler. Its bilinear
+    /// zero level set is the contact boundary.
+    pub signed_gap: Vec<f64>,
+    /// c of the would-be gap, as physical length per unit of the paper's σ: −φ / c is a
+    /// pressure (σ in contact).
+    pub gap_per_sigma: f64,
     /// V = D w / (P L²).
     pub v: Vec<f64>,
     /// σ = μ L² r / P.
@@ -185,12 +202,14 @@ pub struct Report {
     pub v_center: f64,
     /// V at the corner (+L, +μL).
     pub v_corner: f64,
-    /// Contact area / plate area.
+    /// Contact area / plate area: the area inside the located boundary.
     pub contact_fraction: f64,
     /// √(contact area / π) / L.
     pub contact_radius: f64,
-    /// Contact extents.
+    /// Contact extents to the located boundary.
     pub contact_extent: Extent,
+    /// The contact boundary over the whole plate, segment by segment.
+    pub boundary: Vec<BoundarySegment>,
     /// Largest contact pressure (physical).
     pub pressure_max: f64,
     /// Extreme bending moments per unit length (physical): [min, max] of mx and of my.
@@ -218,6 +237,7 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
     let nnx = nx + 1;
     let n_full = nnx * (ny + 1);
     let areas = nodal_areas(mesh);
+    let phi = boundary::would_be_gap(ops, sol);
     let peak = sol.sigma.iter().cloned().fold(0.0_f64, f64::max);
     let threshold = CONTACT_THRESHOLD * peak;
 
@@ -234,6 +254,8 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
         psi_y: Vec::with_capacity(n_full),
         pressure: Vec::with_capacity(n_full),
         gap: Vec::with_capacity(n_full),
+        signed_gap: Vec::with_capacity(n_full),
+        gap_per_sigma: boundary::self_compliance(ops) * ph.deflection() / mu,
         v: Vec::with_capacity(n_full),
         sigma: Vec::with_capacity(n_full),
         contact: Vec::with_capacity(n_full),
@@ -263,6 +285,7 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
             field.psi_y.push(py * ph.rotation());
             field.pressure.push(r * ph.pressure());
             field.gap.push(g * ph.deflection());
+            field.signed_gap.push(phi[n] * ph.deflection());
             field.v.push(w);
             field.sigma.push(mu * r);
             field.contact.push(r > threshold);
@@ -297,32 +320,15 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
     let v_center = field.interpolate(&field.v, 0.0, 0.0);
     let v_corner = field.v[n_full - 1];
 
-    // Contact area: sample the bilinear σ on 8 × 8 points per element of the model.
-    let sub = 8;
-    let mut in_contact = 0.0;
-    for e in 0..mesh.n_elements() {
-        let nodes = mesh.element_nodes(e);
-        for p in 0..sub {
-            for q in 0..sub {
-                let xi = -1.0 + (2.0 * p as f64 + 1.0) / sub as f64;
-                let eta = -1.0 + (2.0 * q as f64 + 1.0) / sub as f64;
-                let sh = crate::plate::shape(xi, eta);
-                let s: f64 = (0..4).map(|a| sh[a] * sol.sigma[nodes[a]]).sum();
-                if s > threshold {
-                    in_contact += 1.0;
-                }
-            }
-        }
-    }
-    let model_cells = (mesh.n_elements() * sub * sub) as f64;
-    let contact_fraction = in_contact / model_cells;
-    let plate_area_unit = 4.0 * mu;
-    let contact_radius = (contact_fraction * plate_area_unit / std::f64::consts::PI).sqrt();
+    // Contact measures from the boundary located inside the elements.
+    let contact_fraction = field.contact_fraction();
+    let contact_radius = (contact_fraction * 4.0 * mu / std::f64::consts::PI).sqrt();
     let contact_extent = Extent {
-        x: ray_extent(&field, threshold * mu, 1.0, 0.0),
-        y: ray_extent(&field, threshold * mu, 0.0, 1.0),
-        diagonal: ray_extent(&field, threshold * mu, 1.0, 1.0),
+        x: field.contact_extent_along(1.0, 0.0),
+        y: field.contact_extent_along(0.0, 1.0),
+        diagonal: field.contact_extent_along(1.0, 1.0),
     };
+    let boundary = field.contact_boundary();
 
     // Equilibrium: reaction of the model times the number of copies.
     let copies = mesh.copies() as f64;
@@ -373,6 +379,7 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
         contact_fraction,
         contact_radius,
         contact_extent,
+        boundary,
         resultant,
         complementarity: Complementarity {
             min_pressure,
@@ -395,55 +402,48 @@ fn model_index(full: usize, model_n: usize, sym: bool) -> (usize, f64) {
     }
 }
 
-/// Distance from the centre along (ds, dt) to where σ first falls to `threshold`, as a fraction
-/// of the ray's length to the plate boundary; 0 if the centre is not in contact.
-fn ray_extent(field: &FullField, threshold: f64, ds: f64, dt: f64) -> f64 {
-    let n = 4 * field.nx.max(field.ny) + 1;
-    let value = |k: usize| {
-        let f = k as f64 / (n - 1) as f64;
-        field.interpolate(&field.sigma, f * ds, f * dt) - threshold
-    };
-    let mut prev = value(0);
-    if prev <= 0.0 {
-        return 0.0;
-    }
-    for k in 1..n {
-        let cur = value(k);
-        if cur <= 0.0 {
-            let f0 = (k - 1) as f64 / (n - 1) as f64;
-            let f1 = k as f64 / (n - 1) as f64;
-            return f0 + (f1 - f0) * prev / (prev - cur);
-        }
-        prev = cur;
-    }
-    1.0
-}
-
-/// V and σ along the paper's lines.
+/// V and σ along the paper's lines: 2 max(nx, ny) + 1 evenly spaced points (the nodes and
+/// the element mid-points of a square grid) plus the points where each line crosses the contact
+/// boundary. σ is the pressure ending at the located boundary ([`FullField::pressure_at`]), so
+/// it falls to zero there rather than at the first lifted node.
 pub fn profiles(field: &FullField) -> Vec<Profile> {
     let n = 2 * field.nx.max(field.ny) + 1;
-    let line = |name: &'static str, f: &dyn Fn(f64) -> (f64, f64)| Profile {
-        line: name,
-        points: (0..n)
-            .map(|k| {
-                let c = -1.0 + 2.0 * k as f64 / (n - 1) as f64;
-                let (s, t) = f(c);
-                ProfilePoint {
-                    coord: c,
-                    s,
-                    t,
-                    v: field.interpolate(&field.v, s, t),
-                    sigma: field.interpolate(&field.sigma, s, t),
-                }
-            })
-            .collect(),
+    let line = |name: &'static str, a: (f64, f64), b: (f64, f64)| {
+        let mut coords: Vec<f64> = (0..n)
+            .map(|k| -1.0 + 2.0 * k as f64 / (n - 1) as f64)
+            .collect();
+        coords.extend(
+            field
+                .boundary_crossings(a, b)
+                .into_iter()
+                .map(|u| -1.0 + 2.0 * u),
+        );
+        coords.sort_by(f64::total_cmp);
+        coords.dedup_by(|x, y| (*x - *y).abs() < 1e-12);
+        Profile {
+            line: name,
+            points: coords
+                .into_iter()
+                .map(|c| {
+                    let u = 0.5 * (c + 1.0);
+                    let (s, t) = (a.0 + u * (b.0 - a.0), a.1 + u * (b.1 - a.1));
+                    ProfilePoint {
+                        coord: c,
+                        s,
+                        t,
+                        v: field.interpolate(&field.v, s, t),
+                        sigma: field.pressure_at(s, t),
+                    }
+                })
+                .collect(),
+        }
     };
     vec![
-        line("x-axis", &|c| (c, 0.0)),
-        line("y-axis", &|c| (0.0, c)),
-        line("edge-x", &|c| (c, 1.0)),
-        line("edge-y", &|c| (1.0, c)),
-        line("diagonal", &|c| (c, c)),
+        line("x-axis", (-1.0, 0.0), (1.0, 0.0)),
+        line("y-axis", (0.0, -1.0), (0.0, 1.0)),
+        line("edge-x", (-1.0, 1.0), (1.0, 1.0)),
+        line("edge-y", (1.0, -1.0), (1.0, 1.0)),
+        line("diagonal", (-1.0, -1.0), (1.0, 1.0)),
     ]
 }
 
@@ -467,6 +467,8 @@ pub(crate) mod test_fixtures {
             psi_y: vec![],
             pressure: vec![],
             gap: vec![],
+            signed_gap: vec![],
+            gap_per_sigma: 0.01,
             v: vec![],
             sigma: vec![],
             contact: vec![],
@@ -485,6 +487,7 @@ pub(crate) mod test_fixtures {
                 f.psi_y.push(0.001 * t);
                 f.pressure.push(sigma.max(0.0));
                 f.gap.push((-sigma).max(0.0));
+                f.signed_gap.push(-0.01 * sigma);
                 f.v.push(0.1 * sigma);
                 f.sigma.push(sigma.max(0.0));
                 f.contact.push(sigma > 0.0);
