@@ -43,7 +43,7 @@ use crate::model::{ConstraintPoints, Model, SymmetryMode};
 use crate::output::chart::style::SERIES;
 use crate::output::chart::{write_contact_regions, write_profile_comparison, Curve, Region};
 use crate::output::Staged;
-use crate::post::{Extent, FullField, Report, CONTACT_THRESHOLD};
+use crate::post::{Extent, FullField, Report};
 use crate::scene::{ModelBuilder, Problem};
 use crate::solve::Status;
 
@@ -644,25 +644,21 @@ fn solve_case(
     })
 }
 
-/// Whether (s, t) is in contact: the bilinear σ above [`CONTACT_THRESHOLD`] of its peak.
-fn in_contact(field: &FullField, peak: f64, s: f64, t: f64) -> bool {
-    field.interpolate(&field.sigma, s, t) > CONTACT_THRESHOLD * peak
-}
-
-fn peak(field: &FullField) -> f64 {
-    field.sigma.iter().cloned().fold(0.0, f64::max)
+/// Whether (s, t) is in contact: inside the located contact boundary, where the bilinear
+/// would-be gap is negative (see [`crate::post`]).
+fn in_contact(field: &FullField, s: f64, t: f64) -> bool {
+    field.interpolate(&field.signed_gap, s, t) < 0.0
 }
 
 /// Intersection over union of the contact regions of two fields of the same plate.
 fn overlap(a: &FullField, b: &FullField) -> f64 {
     let n = 200;
-    let (pa, pb) = (peak(a), peak(b));
     let (mut both, mut any) = (0usize, 0usize);
     for j in 0..n {
         for i in 0..n {
             let s = -1.0 + (2.0 * i as f64 + 1.0) / n as f64;
             let t = -1.0 + (2.0 * j as f64 + 1.0) / n as f64;
-            let (ca, cb) = (in_contact(a, pa, s, t), in_contact(b, pb, s, t));
+            let (ca, cb) = (in_contact(a, s, t), in_contact(b, s, t));
             both += usize::from(ca && cb);
             any += usize::from(ca || cb);
         }

@@ -4,7 +4,7 @@
 mod common;
 use common::*;
 
-use liftoff::output::charts::loglog_fit;
+use liftoff::metrics::loglog_fit;
 use liftoff::post::FullField;
 use liftoff::Analysis;
 

@@ -1,7 +1,7 @@
 //! Plan views of the plate, drawn to equal scale on x and y: the contact-pressure map of one
 //! solve ([`write_contact_map`]) and the contact boundaries of several solves over their loaded
 //! areas ([`write_contact_regions`], the paper's Fig. 6). Both draw the contact boundary as the
-//! level σ = [`CONTACT_THRESHOLD`] × max σ of the bilinear σ field ([`contour`]).
+//! located contact boundary ([`FullField::contact_boundary`]).
 
 use std::path::Path;
 
@@ -14,7 +14,7 @@ use super::axis::{finite_extent, tick_format};
 use super::style::{self, DESC_FONT, LABEL_FONT};
 use super::{titled, txt, write_png, write_svg, DrawResult, Picture, FONT};
 use crate::error::{Error, Result};
-use crate::post::{FullField, CONTACT_THRESHOLD};
+use crate::post::FullField;
 
 /// Outer margin of a plan view, pixels.
 const MARGIN: i32 = 15;
@@ -80,16 +80,6 @@ fn outline<DB: DrawingBackend>(
     Ok(())
 }
 
-/// Largest finite σ of `field`, at least 0.
-fn peak(field: &FullField) -> f64 {
-    field
-        .sigma
-        .iter()
-        .copied()
-        .filter(|v| v.is_finite())
-        .fold(0.0_f64, f64::max)
-}
-
 /// Draw the contact boundary of `field` in `colour` and `width` (nothing if σ is nowhere
 /// positive).
 fn boundary<DB: DrawingBackend>(
@@ -98,17 +88,14 @@ fn boundary<DB: DrawingBackend>(
     colour: RGBColor,
     width: u32,
 ) -> DrawResult<()> {
-    let top = peak(field);
-    if top > 0.0 {
-        let segments = contour(field, CONTACT_THRESHOLD * top);
-        chart
-            .draw_series(
-                segments
-                    .into_iter()
-                    .map(|s| PathElement::new(s, colour.stroke_width(width))),
-            )
-            .map_err(txt)?;
-    }
+    let segments = field.contact_boundary();
+    chart
+        .draw_series(
+            segments
+                .into_iter()
+                .map(|s| PathElement::new(s.xy, colour.stroke_width(width))),
+        )
+        .map_err(txt)?;
     Ok(())
 }
 
@@ -121,52 +108,6 @@ fn cell_nodes(field: &FullField, i: usize, j: usize) -> [usize; 4] {
         i + 1 + (j + 1) * n,
         i + (j + 1) * n,
     ]
-}
-
-/// Segments of the level set σ = `level` of the bilinear σ field, by marching squares, in the
-/// field's (x, y).
-pub(crate) fn contour(field: &FullField, level: f64) -> Vec<[(f64, f64); 2]> {
-    let mut segments = Vec::new();
-    for j in 0..field.ny {
-        for i in 0..field.nx {
-            let c = cell_nodes(field, i, j);
-            let f = c.map(|k| field.sigma[k] - level);
-            let inside = f.map(|v| v > 0.0);
-            // Crossing point on edge e (between corners e and e + 1), if any.
-            let cross = |e: usize| -> Option<(f64, f64)> {
-                let (a, b) = (e, (e + 1) % 4);
-                if inside[a] == inside[b] {
-                    return None;
-                }
-                // Signs differ, so f[a] − f[b] ≠ 0.
-                let t = (f[a] / (f[a] - f[b])).clamp(0.0, 1.0);
-                let (na, nb) = (c[a], c[b]);
-                Some((
-                    field.x[na] + t * (field.x[nb] - field.x[na]),
-                    field.y[na] + t * (field.y[nb] - field.y[na]),
-                ))
-            };
-            let edges: Vec<(usize, (f64, f64))> =
-                (0..4).filter_map(|e| cross(e).map(|p| (e, p))).collect();
-            match edges.as_slice() {
-                [(_, p), (_, q)] => segments.push([*p, *q]),
-                [_, _, _, _] => {
-                    // Saddle: cut off the corners whose state differs from the cell centre.
-                    let centre = f.iter().sum::<f64>() / 4.0 > 0.0;
-                    for (k, &corner) in inside.iter().enumerate() {
-                        if corner != centre {
-                            let before = (k + 3) % 4;
-                            if let (Some(p), Some(q)) = (cross(before), cross(k)) {
-                                segments.push([p, q]);
-                            }
-                        }
-                    }
-                }
-                _ => {}
-            }
-        }
-    }
-    segments
 }
 
 /// Check that every nodal array of `field` covers the grid.
@@ -305,8 +246,8 @@ impl Picture for ContactMap<'_> {
 /// Each grid cell is a rectangle in physical (x, y) coordinates, drawn to equal scale, coloured
 /// by the mean σ of its four nodes on a sequential yellow-to-red scale from 0 to the largest cell
 /// mean (see the colour bar); lifted cells (mean σ ≤ 0, or no node in contact) are light grey.
-/// The contact boundary, the level σ = [`CONTACT_THRESHOLD`] × max σ of the bilinear σ field
-/// (marching squares), is drawn as a dark line, the plate outline as a thin one.
+/// The contact boundary, located inside the elements where the would-be gap changes sign
+/// ([`FullField::contact_boundary`]), is drawn as a dark line, the plate outline as a thin one.
 ///
 /// The PNG path must end in `.png` (the encoder is chosen by the extension).
 ///
@@ -479,18 +420,6 @@ mod tests {
         }
         g.contact.truncate(1);
         write_contact_map(&svg, &png, &g, "point").expect("single node");
-    }
-
-    #[test]
-    fn contour_crosses_between_nodes() {
-        let f = bump_field();
-        let segs = contour(&f, 0.01);
-        assert!(!segs.is_empty());
-        for [p, q] in segs {
-            for (x, y) in [p, q] {
-                assert!((-2.0..=2.0).contains(&x) && (-1.0..=1.0).contains(&y));
-            }
-        }
     }
 
     #[test]
