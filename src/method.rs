@@ -118,9 +118,9 @@ pub struct QpSettings {
 impl Default for QpSettings {
     fn default() -> Self {
         Self {
-            tol_gap_abs: 1e-12,
-            tol_gap_rel: 1e-11,
-            tol_feas: 1e-11,
+            tol_gap_abs: 1e-14,
+            tol_gap_rel: 1e-13,
+            tol_feas: 1e-13,
             max_iter: 200,
             kkt: KktSolver::Faer,
         }
