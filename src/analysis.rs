@@ -7,10 +7,10 @@ use crate::budget;
 use crate::error::Result;
 use crate::method::Method;
 use crate::model::Model;
-use crate::output::summary::{Summary, Times};
 use crate::post::{self, Report};
 use crate::scene::Problem;
 use crate::solve::{self, Solution};
+use crate::summary::{Summary, Times};
 use crate::Operators;
 
 /// Operators, solution, report and summary of one solve.

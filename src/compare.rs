@@ -8,8 +8,8 @@ use crate::analysis;
 use crate::budget;
 use crate::error::Result;
 use crate::method::Method;
-use crate::output::summary::Summary;
 use crate::scene::Problem;
+use crate::summary::Summary;
 use crate::Operators;
 
 /// Differences between the penalty and QP solutions.

@@ -44,6 +44,7 @@ pub mod quadrature;
 pub mod scene;
 pub mod solve;
 pub mod study;
+pub mod summary;
 
 pub use analysis::{analyse, Analysis};
 pub use error::{Error, Result};

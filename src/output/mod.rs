@@ -6,7 +6,7 @@
 
 pub mod chart;
 pub mod studies;
-pub mod summary;
+
 pub mod tables;
 pub mod vtk;
 
@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 
 use crate::error::{Error, Result};
 use crate::post::Report;
-pub use summary::Summary;
+pub use crate::summary::{Summary, Times};
 
 fn io(path: &Path) -> impl FnOnce(std::io::Error) -> Error + '_ {
     move |source| Error::Io {
