@@ -30,7 +30,7 @@ pub fn max_rank(n: usize) -> usize {
 }
 
 /// Largest weight change, relative to gᵀSg, that an update may apply (see `prepare`).
-pub const MAX_WEIGHT_RATIO: f64 = 1e6;
+pub const MAX_WEIGHT_RATIO: f64 = 1e8;
 
 /// A factor of S + Σ_k d⁰_k g_k g_kᵀ and the columns A⁻¹ g_k computed so far.
 pub struct LowRankSchur {
@@ -89,7 +89,7 @@ impl LowRankSchur {
         // An update by a weight d much larger than the point's own stiffness gᵀSg computes the
         // point's O(1/d) pressure as the difference of O(1) terms, losing about
         // log₁₀(d / gᵀSg) digits (removing such a weight cancels it against A⁻¹'s 1/d as
-        // well); past 1e6 (ε̄ ≲ 1e-6 on the paper's cases) the matrix is factored afresh.
+        // well); past 1e8 the matrix is factored afresh.
         let cancels = |c: &[(usize, f64)]| {
             c.iter().any(|&(k, delta)| {
                 let own: f64 = rows[k].iter().map(|&(i, v)| v * v * s[(i, i)]).sum();
