@@ -18,7 +18,7 @@ use std::time::Instant;
 
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{
-    DefaultSettingsBuilder, DefaultSolver, IPSolver, SolverStatus, SupportedConeT,
+    DefaultSettings, DefaultSettingsBuilder, DefaultSolver, IPSolver, SolverStatus, SupportedConeT,
 };
 
 use super::bonded::finite;
@@ -57,6 +57,20 @@ impl Default for QpSettings {
 /// Bytes clarabel needs for a dense P of size n (measured ≈ 47 n², DESIGN.md).
 pub fn clarabel_bytes(n: usize) -> f64 {
     47.0 * (n as f64).powi(2)
+}
+
+/// clarabel's settings for `settings`: quiet, with its tolerances, iteration cap and KKT solver.
+/// Shared with the sparse forms ([`super::sparse_qp`]).
+pub(crate) fn clarabel_settings(settings: &QpSettings) -> Result<DefaultSettings<f64>> {
+    DefaultSettingsBuilder::default()
+        .verbose(false)
+        .tol_gap_abs(settings.tol_gap_abs)
+        .tol_gap_rel(settings.tol_gap_rel)
+        .tol_feas(settings.tol_feas)
+        .max_iter(settings.max_iter)
+        .direct_solve_method(settings.kkt.clone())
+        .build()
+        .map_err(|e| Error::numerical("clarabel settings", format!("{e:?}")))
 }
 
 /// Solve the unbonded problem as a QP.
@@ -112,15 +126,7 @@ pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
         SupportedConeT::NonnegativeConeT(n_c),
     ];
 
-    let cl_settings = DefaultSettingsBuilder::default()
-        .verbose(false)
-        .tol_gap_abs(settings.tol_gap_abs)
-        .tol_gap_rel(settings.tol_gap_rel)
-        .tol_feas(settings.tol_feas)
-        .max_iter(settings.max_iter)
-        .direct_solve_method(settings.kkt.clone())
-        .build()
-        .map_err(|e| Error::numerical("clarabel settings", format!("{e:?}")))?;
+    let cl_settings = clarabel_settings(settings)?;
     let t1 = Instant::now();
     let mut solver = DefaultSolver::new(&p, &q, &a, &b, &cones, cl_settings)
         .map_err(|e| Error::numerical("clarabel setup", format!("{e:?}")))?;
