@@ -8,6 +8,7 @@ pub mod bonded;
 pub mod linalg;
 pub mod penalty;
 pub mod qp;
+pub mod sparse_qp;
 
 use crate::error::{Error, Result};
 use crate::operators::Operators;
