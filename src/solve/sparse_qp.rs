@@ -29,10 +29,11 @@
 //! With multipliers μ of the equality and ν ≥ 0 of z ≥ 0 the Lagrangian gives Ku + Bμ = f,
 //! T⁻¹s = μ and Gμ = ν: so σ = μ = T⁻¹s, the multiplier of z ≥ 0 is Gσ ≥ 0, the gap
 //! Tσ − Bᵀu = Gᵀz with z ≥ 0 and z·Gσ = 0 — the Gauss-point conditions of the dense QP with z
-//! its multiplier λ. Solved as written, clarabel stalls on soft soil (InsufficientProgress, or
-//! 200 iterations, on the 40 × 40 and 80 × 80 plates of `examples/qp_forms.rs`): the equality
-//! carries T ≪ K next to the static regularisation. So s is substituted, leaving a QP in (u, z)
-//! with only bounds,
+//! its multiplier λ. Solved as written it converges slowly (AlmostSolved after 35 iterations on
+//! the 16 × 16 half model of `tests/sparse_qp.rs`), and with σ = T⁻¹s as the variable clarabel
+//! stalls on soft soil (InsufficientProgress at 40 × 40, 200 iterations at 80 × 80 on the plate
+//! of `examples/qp_forms.rs`): the equality carries T ≪ K next to the static regularisation.
+//! So s is substituted, leaving a QP in (u, z) with only bounds,
 //!
 //! min ½uᵀKu − fᵀu + ½(Bᵀu + Gᵀz)ᵀT⁻¹(Bᵀu + Gᵀz)   subject to   z ≥ 0,
 //!
