@@ -30,7 +30,7 @@
 //! T⁻¹s = μ and Gμ = ν: so σ = μ = T⁻¹s, the multiplier of z ≥ 0 is Gσ ≥ 0, the gap
 //! Tσ − Bᵀu = Gᵀz with z ≥ 0 and z·Gσ = 0 — the Gauss-point conditions of the dense QP with z
 //! its multiplier λ. Solved as written it converges slowly (AlmostSolved after 35 iterations on
-//! the 16 × 16 half model of `tests/sparse_qp.rs`), and with σ = T⁻¹s as the variable clarabel
+//! a 16 × 16 half model, μ = 0.5, Γ = 0.75e-3), and with σ = T⁻¹s as the variable clarabel
 //! stalls on soft soil (InsufficientProgress at 40 × 40, 200 iterations at 80 × 80 on the plate
 //! of `examples/qp_forms.rs`): the equality carries T ≪ K next to the static regularisation.
 //! So s is substituted, leaving a QP in (u, z) with only bounds,
