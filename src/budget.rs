@@ -4,8 +4,8 @@
 use crate::error::{Error, Result};
 use crate::foundation::FoundationKind;
 use crate::mesh::Mesh;
-use crate::method::Method;
-use crate::model::Model;
+use crate::method::{Method, QpForm};
+use crate::model::{ConstraintPoints, Model};
 
 const GIB: f64 = 1024.0 * 1024.0 * 1024.0;
 
@@ -29,9 +29,30 @@ pub fn clarabel_dense_bytes(n: usize) -> f64 {
     47.0 * (n as f64).powi(2)
 }
 
-/// Whether a method on this foundation forms the dense Schur complement S = T + BᵀK⁻B.
+/// Whether a method on this foundation forms the dense Schur complement S = T + BᵀK⁻B: every
+/// half-space solve, and the QP in its Schur form.
 pub fn dense_schur(foundation: FoundationKind, method: &Method) -> bool {
-    foundation == FoundationKind::HalfSpace || matches!(method, Method::Qp(_))
+    foundation == FoundationKind::HalfSpace
+        || matches!(method, Method::Qp(s) if s.form.is_dense(foundation))
+}
+
+/// clarabel's sparse KKT factorisation for the sparse QP forms, bytes, fitted to the peaks
+/// measured from 80 to 400 elements per side (BENCHMARKS.md) with a margin of 1.5: primal
+/// n_eq (1170 + 146 log₂ n_eq) with nodal constraints (3.5× that with Gauss points, whose rows
+/// add the z block), lifted n_eq (3840 + 393 log₂ n_eq).
+pub fn clarabel_sparse_bytes(n_eq: usize, form: QpForm, constraint: ConstraintPoints) -> f64 {
+    let n = n_eq as f64;
+    let log = n.max(2.0).log2();
+    let base = match form {
+        QpForm::Lifted => n * (3840.0 + 393.0 * log),
+        _ => n * (1170.0 + 146.0 * log),
+    };
+    let gauss = if constraint == ConstraintPoints::Gauss && form != QpForm::Lifted {
+        3.5
+    } else {
+        1.0
+    };
+    1.5 * base * gauss
 }
 
 /// Rough memory need of the operators of `mesh` alone, bytes: sparse K with its triplets and a
@@ -49,7 +70,12 @@ pub fn operator_bytes(mesh: &Mesh, foundation: FoundationKind) -> f64 {
 }
 
 /// Rough memory need of assembling `mesh` and solving it with `method`, bytes.
-pub fn estimate_bytes(mesh: &Mesh, foundation: FoundationKind, method: &Method) -> f64 {
+pub fn estimate_bytes(
+    mesh: &Mesh,
+    foundation: FoundationKind,
+    constraint: ConstraintPoints,
+    method: &Method,
+) -> f64 {
     let n = mesh.n_nodes() as f64;
     let n_eq = 3.0 * n;
     let mut bytes = operator_bytes(mesh, foundation);
@@ -63,8 +89,12 @@ pub fn estimate_bytes(mesh: &Mesh, foundation: FoundationKind, method: &Method) 
         };
         bytes += (4.0 - t_held) * n * n * 8.0 + n_eq * 256.0 * 8.0;
     }
-    if matches!(method, Method::Qp(_)) {
-        bytes += clarabel_dense_bytes(mesh.n_nodes());
+    if let Method::Qp(s) = method {
+        bytes += if s.form.is_dense(foundation) {
+            clarabel_dense_bytes(mesh.n_nodes())
+        } else {
+            clarabel_sparse_bytes(3 * mesh.n_nodes(), s.form, constraint)
+        };
     }
     bytes
 }
@@ -72,17 +102,24 @@ pub fn estimate_bytes(mesh: &Mesh, foundation: FoundationKind, method: &Method) 
 /// Refuse a (model, method) pair that will not fit in `limit` bytes.
 pub fn check(model: &Model, method: &Method, limit: f64) -> Result<()> {
     let (mesh, _) = model.plan_mesh();
-    check_mesh(&mesh, model.groups.foundation, method, limit)
+    check_mesh(
+        &mesh,
+        model.groups.foundation,
+        model.constraint,
+        method,
+        limit,
+    )
 }
 
 /// Refuse solving `mesh` with `method` when it will not fit in `limit` bytes.
 pub fn check_mesh(
     mesh: &Mesh,
     foundation: FoundationKind,
+    constraint: ConstraintPoints,
     method: &Method,
     limit: f64,
 ) -> Result<()> {
-    let need = estimate_bytes(mesh, foundation, method);
+    let need = estimate_bytes(mesh, foundation, constraint, method);
     if need <= limit {
         return Ok(());
     }

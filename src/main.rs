@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
-use liftoff::method::{Contact, MethodKind};
+use liftoff::method::{Contact, MethodKind, QpForm};
 use liftoff::model::{ConstraintPoints, SymmetryMode};
 use liftoff::output::{self, tables};
 use liftoff::scene::{PenaltySpec, SceneFile};
@@ -65,6 +65,10 @@ struct Overrides {
     /// Elements over the whole plate, NX,NY (overrides [mesh] elements).
     #[arg(long, value_parser = parse_mesh)]
     mesh: Option<[i64; 2]>,
+    /// How the QP is posed: auto (primal on Winkler, schur on the half-space), schur, lifted or
+    /// primal (overrides [solver] qp_form).
+    #[arg(long, value_enum)]
+    qp_form: Option<QpForm>,
 }
 
 impl Overrides {
@@ -77,6 +81,9 @@ impl Overrides {
         }
         if let Some(m) = self.mesh {
             file.mesh.elements = m.to_vec();
+        }
+        if let Some(f) = self.qp_form {
+            file.solver.qp_form = f;
         }
     }
 }

@@ -100,6 +100,43 @@ impl KktSolver {
     }
 }
 
+/// How the QP is posed for clarabel (all forms are exact and give the same σ).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, clap::ValueEnum)]
+#[serde(rename_all = "kebab-case")]
+pub enum QpForm {
+    /// Primal for a diagonal (Winkler) T, Schur for a dense (half-space) T.
+    Auto,
+    /// In σ through the dense Schur complement S = T + BᵀK⁻B (any T).
+    Schur,
+    /// In (u, σ) with the plate as an equality: sparse, diagonal T only.
+    Lifted,
+    /// In (u, s), the Lagrange dual whose multipliers are σ: sparse, diagonal T only; about as
+    /// costly per interior-point step as one penalty step.
+    Primal,
+}
+
+crate::names!(QpForm, Auto => "auto", Schur => "schur", Lifted => "lifted", Primal => "primal");
+
+impl QpForm {
+    /// The form used for a compliance T: `Auto` becomes `Primal` (diagonal T) or `Schur`.
+    pub fn resolve(self, t: &crate::foundation::Compliance) -> QpForm {
+        match (self, t) {
+            (QpForm::Auto, crate::foundation::Compliance::Diagonal(_)) => QpForm::Primal,
+            (QpForm::Auto, crate::foundation::Compliance::Dense(_)) => QpForm::Schur,
+            (form, _) => form,
+        }
+    }
+
+    /// Whether the form forms the dense Schur complement for this foundation.
+    pub fn is_dense(self, foundation: crate::foundation::FoundationKind) -> bool {
+        match self {
+            QpForm::Schur => true,
+            QpForm::Auto => foundation == crate::foundation::FoundationKind::HalfSpace,
+            QpForm::Lifted | QpForm::Primal => false,
+        }
+    }
+}
+
 /// Settings of the QP.
 #[derive(Debug, Clone, PartialEq)]
 pub struct QpSettings {
@@ -113,6 +150,8 @@ pub struct QpSettings {
     pub max_iter: u32,
     /// clarabel's KKT solver.
     pub kkt: KktSolver,
+    /// How the QP is posed.
+    pub form: QpForm,
 }
 
 impl Default for QpSettings {
@@ -123,6 +162,7 @@ impl Default for QpSettings {
             tol_feas: 1e-13,
             max_iter: 200,
             kkt: KktSolver::Faer,
+            form: QpForm::Auto,
         }
     }
 }

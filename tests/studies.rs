@@ -161,6 +161,7 @@ fn tradeoff_reference_falls_back_to_the_finest_mesh() {
         budget::estimate_bytes(
             &p.model.plan_mesh().0,
             FoundationKind::Winkler,
+            p.model.constraint,
             &Method::qp(),
         )
     };
@@ -314,7 +315,8 @@ fn stability_sweep_rows_and_outcomes() {
             for r in &mesh {
                 let n = r.value as usize;
                 let model = paper_plate(f, n, limit).model;
-                let need = budget::estimate_bytes(&model.plan_mesh().0, f, &method);
+                let need =
+                    budget::estimate_bytes(&model.plan_mesh().0, f, model.constraint, &method);
                 assert_eq!(
                     r.outcome == "too-large",
                     need > limit,

@@ -3,7 +3,7 @@
 use serde::Deserialize;
 
 use crate::foundation::FoundationKind;
-use crate::method::{Contact, MethodKind};
+use crate::method::{Contact, MethodKind, QpForm};
 use crate::model::{ConstraintPoints, SymmetryMode};
 
 /// `[plate]` in SI units.
@@ -167,6 +167,14 @@ pub struct SolverSpec {
     /// Memory the solver may use, GiB; default 3/4 of the machine's memory.
     #[serde(default)]
     pub memory_limit_gib: Option<f64>,
+    /// How the QP is posed: "auto" (default: primal on Winkler, schur on the half-space),
+    /// "schur", "lifted" or "primal".
+    #[serde(default = "default_qp_form")]
+    pub qp_form: QpForm,
+}
+
+fn default_qp_form() -> QpForm {
+    QpForm::Auto
 }
 
 fn default_contact() -> Contact {
@@ -191,6 +199,7 @@ impl Default for SolverSpec {
             constraint: default_constraint(),
             max_iterations: default_max_iterations(),
             memory_limit_gib: None,
+            qp_form: default_qp_form(),
         }
     }
 }

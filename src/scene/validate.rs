@@ -426,7 +426,10 @@ fn solver(s: &SolverSpec) -> Result<(Method, f64)> {
         Contact::Bonded => Method::Bonded,
         Contact::Unbonded => match s.method {
             crate::method::MethodKind::Penalty => Method::Penalty(penalty),
-            crate::method::MethodKind::Qp => Method::Qp(QpSettings::default()),
+            crate::method::MethodKind::Qp => Method::Qp(QpSettings {
+                form: s.qp_form,
+                ..QpSettings::default()
+            }),
         },
     };
     let memory_limit = match s.memory_limit_gib {

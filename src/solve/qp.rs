@@ -18,15 +18,29 @@ use std::time::Instant;
 
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{
-    DefaultSettingsBuilder, DefaultSolver, IPSolver, SolverStatus, SupportedConeT,
+    DefaultSettings, DefaultSettingsBuilder, DefaultSolver, IPSolver, SolverStatus, SupportedConeT,
 };
 
 use super::bonded::finite;
 use super::bonded::SchurSystem;
 use super::{discrete_gap, QpDiagnostics, Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
-use crate::method::{Method, QpSettings};
+use crate::method::{Method, QpForm, QpSettings};
 use crate::operators::Operators;
+
+/// clarabel's settings for `settings`: quiet, with its tolerances, iteration cap and KKT solver.
+/// Shared with the sparse forms ([`super::sparse_qp`]).
+pub(crate) fn clarabel_settings(settings: &QpSettings) -> Result<DefaultSettings<f64>> {
+    DefaultSettingsBuilder::default()
+        .verbose(false)
+        .tol_gap_abs(settings.tol_gap_abs)
+        .tol_gap_rel(settings.tol_gap_rel)
+        .tol_feas(settings.tol_feas)
+        .max_iter(settings.max_iter)
+        .direct_solve_method(settings.kkt.name().to_string())
+        .build()
+        .map_err(|e| Error::numerical("clarabel settings", format!("{e:?}")))
+}
 
 /// Solve the unbonded problem as a QP.
 pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
@@ -81,15 +95,7 @@ pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
         SupportedConeT::NonnegativeConeT(n_c),
     ];
 
-    let cl_settings = DefaultSettingsBuilder::default()
-        .verbose(false)
-        .tol_gap_abs(settings.tol_gap_abs)
-        .tol_gap_rel(settings.tol_gap_rel)
-        .tol_feas(settings.tol_feas)
-        .max_iter(settings.max_iter)
-        .direct_solve_method(settings.kkt.name().to_string())
-        .build()
-        .map_err(|e| Error::numerical("clarabel settings", format!("{e:?}")))?;
+    let cl_settings = clarabel_settings(settings)?;
     let t1 = Instant::now();
     let mut solver = DefaultSolver::new(&p, &q, &a, &b, &cones, cl_settings)
         .map_err(|e| Error::numerical("clarabel setup", format!("{e:?}")))?;
@@ -116,7 +122,10 @@ pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
     let u = sys.displacements(ops, &sigma, &alpha);
     let gap = discrete_gap(ops, &u, &sigma);
     Ok(Solution {
-        method: Method::Qp(settings.clone()),
+        method: Method::Qp(QpSettings {
+            form: QpForm::Schur,
+            ..settings.clone()
+        }),
         u,
         sigma,
         gap,
@@ -137,6 +146,7 @@ pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
                 dual_residual: sol.r_dual,
                 objective: sol.obj_val,
                 duality_gap: (sol.obj_val - sol.obj_val_dual).abs(),
+                form_check: None,
             }),
             ..SolveInfo::default()
         },
