@@ -21,10 +21,10 @@
 //! half-size of a loaded area laid on the mesh lines. The default reading is therefore a uniform
 //! pressure on the central area |s| ≤ γ, |t| ≤ γ; the alternatives are selectable.
 //!
-//! [`run`] solves every case at the paper's meshes (refine = 1) and, when asked, at finer ones
-//! (the element counts times 2, 4, … up to `refine`), draws the figures from the finest meshes
-//! and writes them with `paper.json` and `paper.md` (from [`write_markdown`]) into one directory,
-//! all staged and moved into place only when everything succeeded.
+//! [`run`](fn@run) solves every case at the paper's meshes (refine = 1) and, when asked, at finer
+//! ones (the element counts times 2, 4, … up to `refine`), draws the figures from the finest
+//! meshes and writes them with `paper.json` and `paper.md` (from [`write_markdown`]) into one
+//! directory, all staged and moved into place only when everything succeeded.
 
 //!
 //! Layout: `cases.rs` holds the cases and builds their models, `run.rs` solves them and
@@ -68,7 +68,7 @@ pub const PAPER_STEPS: [usize; 2] = [4, 6];
 /// −kei(r/ℓ) + A ber(r/ℓ) + B bei(r/ℓ) inside and the unloaded free plate E + F ln r outside.
 /// For the square plate (μ = 1) ℓ = Γ_w^¼ L.
 pub const WINKLER_INFINITE_PLATE_RADIUS: f64 = 2.849;
-/// Largest refinement factor [`run`] accepts (the half-space quarter model is then 64 × 64).
+/// Largest refinement factor [`run`](fn@run) accepts (the half-space quarter model is then 64 × 64).
 pub const MAX_REFINE: usize = 8;
 
 /// The paper's quarter-mesh elements per side: 8 on the half-space, 10 on Winkler.
@@ -85,7 +85,7 @@ pub fn caption_gamma(foundation: FoundationKind) -> f64 {
     2.0 / paper_quarter_elements(foundation) as f64
 }
 
-/// What [`run`] computes.
+/// What [`run`](fn@run) computes.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PaperOptions {
     /// Method for the unbonded runs (bonded runs of Fig. 7 are solved directly).
@@ -266,7 +266,7 @@ pub struct PaperParameters {
     pub rectangle_mesh: String,
 }
 
-/// Everything [`run`] computed (serialised as `paper.json`).
+/// Everything [`run`](fn@run) computed (serialised as `paper.json`).
 #[derive(Debug, Clone, Serialize)]
 pub struct PaperReport {
     /// Method of the unbonded runs.
