@@ -1,0 +1,29 @@
+//! Studies of the methods: the penalty limit ε̄ → 0 against the QP (`eps-sweep`), speed against
+//! accuracy over meshes (`tradeoff`), and the regimes where each method breaks (`stability`).
+//!
+//! Every study assembles its operators once per model and hands the same value to both methods,
+//! so differences between methods are differences of method, never of discretisation.
+//!
+//! Layout: `eps_sweep.rs`, `tradeoff.rs` and `stability.rs` hold one study each,
+//! `options.rs` the validated options the CLI builds them from.
+
+mod eps_sweep;
+mod options;
+mod stability;
+mod tradeoff;
+
+pub use eps_sweep::{eps_sweep, Sweep, SweepRow};
+pub use options::{ConstraintVariants, EpsSweepOptions, TradeoffOptions};
+pub use stability::{
+    stability_plan, stability_run, stability_sweep, StabilityCase, StabilityParam, StabilityRow,
+};
+pub use tradeoff::{tradeoff, Tradeoff, TradeoffPoint};
+
+/// Logarithmically spaced values from `from` to `to` (inclusive), `points` ≥ 2 of them.
+pub fn log_space(from: f64, to: f64, points: usize) -> Vec<f64> {
+    let n = points.max(2);
+    let (a, b) = (from.log10(), to.log10());
+    (0..n)
+        .map(|k| 10f64.powf(a + (b - a) * k as f64 / (n - 1) as f64))
+        .collect()
+}

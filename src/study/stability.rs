@@ -1,0 +1,236 @@
+//! The regimes where each method breaks (`stability`): one parameter at a time swept around a
+//! base case.
+
+use std::time::Instant;
+
+use serde::Serialize;
+
+use super::log_space;
+use crate::budget;
+use crate::foundation::FoundationKind;
+use crate::method::{Method, MethodKind};
+use crate::model::Load;
+use crate::operators::Operators;
+use crate::post;
+use crate::scene::Problem;
+use crate::solve;
+
+/// The parameter a stability sweep varies around the base case.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum StabilityParam {
+    /// Γ (plate-to-foundation stiffness).
+    Gamma,
+    /// ε̄ (penalty only).
+    Penalty,
+    /// A single point load at (s, s).
+    Position,
+    /// μ = width / length.
+    Mu,
+    /// Elements per side.
+    Mesh,
+}
+
+crate::names!(StabilityParam, Gamma => "gamma", Penalty => "penalty", Position => "position", Mu => "mu", Mesh => "mesh");
+
+impl StabilityParam {
+    /// Every parameter, in the order of the CSV and the maps.
+    pub const ALL: [StabilityParam; 5] = [
+        StabilityParam::Gamma,
+        StabilityParam::Penalty,
+        StabilityParam::Position,
+        StabilityParam::Mu,
+        StabilityParam::Mesh,
+    ];
+
+    /// The values swept around the paper's base case (Γ = 0.25e-3, ε̄ = 1e-5, central point
+    /// load, μ = 1, 16 × 16 elements).
+    pub fn values(self, foundation: FoundationKind) -> Vec<f64> {
+        match self {
+            StabilityParam::Gamma => log_space(1e-10, 1e8, 10),
+            StabilityParam::Penalty => log_space(1e-2, 1e-14, 13),
+            StabilityParam::Position => vec![0.0, 0.25, 0.5, 0.75, 0.9, 1.0],
+            StabilityParam::Mu => vec![0.1, 0.25, 0.5, 0.75, 1.0],
+            StabilityParam::Mesh => match foundation {
+                // Winkler: sparse penalty up to 512 per side; the dense QP is refused beyond
+                // its limit.
+                FoundationKind::Winkler => vec![8.0, 16.0, 32.0, 64.0, 128.0, 256.0, 512.0],
+                // Half-space: dense for both methods; 512 per side is beyond memory for both.
+                FoundationKind::HalfSpace => vec![8.0, 16.0, 32.0, 64.0, 128.0, 512.0],
+            },
+        }
+    }
+
+    /// The methods this parameter applies to (ε̄ is the penalty's alone).
+    pub fn methods(self) -> &'static [MethodKind] {
+        match self {
+            StabilityParam::Penalty => &[MethodKind::Penalty],
+            _ => &[MethodKind::Penalty, MethodKind::Qp],
+        }
+    }
+}
+
+/// One planned run of the stability sweep.
+#[derive(Debug, Clone, Copy)]
+pub struct StabilityCase<'a> {
+    /// The base problem.
+    pub base: &'a Problem,
+    /// The swept parameter.
+    pub param: StabilityParam,
+    /// Its value.
+    pub value: f64,
+    /// The method.
+    pub method: MethodKind,
+}
+
+/// Every run of `liftoff stability` over the base problems.
+pub fn stability_plan(bases: &[Problem]) -> Vec<StabilityCase<'_>> {
+    let mut plan = Vec::new();
+    for base in bases {
+        for param in StabilityParam::ALL {
+            for value in param.values(base.model.groups.foundation) {
+                for &method in param.methods() {
+                    plan.push(StabilityCase {
+                        base,
+                        param,
+                        value,
+                        method,
+                    });
+                }
+            }
+        }
+    }
+    plan
+}
+
+/// One run of the stability sweep.
+#[derive(Debug, Clone, Serialize)]
+pub struct StabilityRow {
+    /// Which parameter is swept.
+    pub sweep: StabilityParam,
+    /// Foundation.
+    pub foundation: &'static str,
+    /// Method.
+    pub method: &'static str,
+    /// Value of the swept parameter.
+    pub value: f64,
+    /// Outcome kind: converged, cycling, iteration-limit, penalty-too-weak, solver-failure,
+    /// infeasible, too-large, numerical.
+    pub outcome: String,
+    /// Iterations (penalty steps or interior-point iterations).
+    pub iterations: usize,
+    /// |reaction − load| / load.
+    pub equilibrium: f64,
+    /// Minimum σ at the constraint points.
+    pub min_pressure: f64,
+    /// Minimum nodal gap (V units).
+    pub min_gap: f64,
+    /// Contact fraction.
+    pub contact_fraction: f64,
+    /// Wall time, s.
+    pub time_s: f64,
+    /// Error or status text.
+    pub detail: String,
+}
+
+/// Run one configuration of the stability sweep. For the position sweep the loads are replaced
+/// by one point load at (s, s).
+pub fn stability_run(case: &StabilityCase<'_>) -> StabilityRow {
+    let value = case.value;
+    let mut model = case.base.model.clone();
+    let mut method = match (case.method, &case.base.method) {
+        (MethodKind::Penalty, Method::Penalty(s)) => Method::Penalty(*s),
+        (kind, _) => Method::unbonded(kind),
+    };
+    match case.param {
+        StabilityParam::Gamma => model.groups.gamma = value,
+        StabilityParam::Penalty => {
+            // The sweep studies a fixed ε̄, as in the paper.
+            if let Method::Penalty(s) = &mut method {
+                s.epsilon = value;
+                s.auto = false;
+            }
+        }
+        StabilityParam::Position => {
+            let mu = model.groups.mu;
+            model.loads = vec![Load::Point {
+                x: value,
+                y: value * mu,
+                force: 4.0,
+            }];
+        }
+        StabilityParam::Mu => {
+            // Keep the load where it was in (s, t): rescale y.
+            let old = model.groups.mu;
+            model.groups.mu = value;
+            for l in &mut model.loads {
+                if let Load::Point { y, .. } = l {
+                    *y *= value / old;
+                }
+            }
+        }
+        StabilityParam::Mesh => {
+            let n = value as usize;
+            model.elements = [n, n];
+        }
+    }
+    let foundation = model.groups.foundation.name();
+    let t = Instant::now();
+    let result = budget::check(&model, &method, case.base.memory_limit).and_then(|_| {
+        let ops = Operators::assemble(&model);
+        let sol = solve::solve(&ops, &method)?;
+        let rep = post::report(&model, &ops, &sol);
+        Ok((sol, rep))
+    });
+    let time_s = t.elapsed().as_secs_f64();
+    let (sweep, method) = (case.param, case.method.name());
+    match result {
+        Ok((sol, rep)) => StabilityRow {
+            sweep,
+            foundation,
+            method,
+            value,
+            outcome: sol.status.kind().into(),
+            iterations: sol.iterations,
+            equilibrium: rep.resultant.relative_error,
+            min_pressure: rep.complementarity.min_pressure,
+            min_gap: rep.complementarity.min_gap,
+            contact_fraction: rep.contact_fraction,
+            time_s,
+            detail: sol.status.describe(),
+        },
+        Err(e) => StabilityRow {
+            sweep,
+            foundation,
+            method,
+            value,
+            outcome: e.kind().into(),
+            iterations: 0,
+            equilibrium: f64::NAN,
+            min_pressure: f64::NAN,
+            min_gap: f64::NAN,
+            contact_fraction: f64::NAN,
+            time_s,
+            detail: e.to_string(),
+        },
+    }
+}
+
+/// Run every case of a stability plan in order; `progress` receives one line before each run.
+pub fn stability_sweep(
+    plan: &[StabilityCase<'_>],
+    progress: &mut dyn FnMut(&str),
+) -> Vec<StabilityRow> {
+    plan.iter()
+        .map(|case| {
+            progress(&format!(
+                "{} {} = {:.2e} ({})",
+                case.base.model.groups.foundation.name(),
+                case.param.name(),
+                case.value,
+                case.method.name()
+            ));
+            stability_run(case)
+        })
+        .collect()
+}
