@@ -159,7 +159,7 @@ impl Summary {
             complementarity: report.complementarity,
             history: sol.history.clone(),
             penalty_stages: sol.info.penalty_stages.clone(),
-            notes: ops.notes.clone(),
+            notes: ops.notes.iter().chain(&sol.info.notes).cloned().collect(),
         }
     }
 

@@ -204,6 +204,8 @@ pub struct SolveInfo {
     pub qp: Option<QpDiagnostics>,
     /// The stages of the penalty iteration, one per ε̄ (penalty only).
     pub penalty_stages: Vec<PenaltyStage>,
+    /// What the method decided on its own (a fall-back, say), for the report's notes.
+    pub notes: Vec<String>,
 }
 
 /// What every method returns.
@@ -244,12 +246,44 @@ pub fn solve(ops: &Operators, method: &Method) -> Result<Solution> {
             check_feasible(ops)?;
             match settings.form.resolve(&ops.t) {
                 QpForm::Lifted => sparse_qp::solve_sparse(ops, settings, SparseForm::Lifted)?,
-                QpForm::Primal => sparse_qp::solve_sparse(ops, settings, SparseForm::Primal)?,
+                QpForm::Primal => {
+                    let sol = sparse_qp::solve_sparse(ops, settings, SparseForm::Primal)?;
+                    if settings.form == QpForm::Auto
+                        && !sol.status.converged()
+                        && ops.n_sigma() <= DENSE_FALLBACK_NODES
+                    {
+                        dense_fallback(ops, settings, &sol)?
+                    } else {
+                        sol
+                    }
+                }
                 _ => qp::solve(ops, settings)?,
             }
         }
     };
     check_equilibrium(ops, &sol)?;
+    Ok(sol)
+}
+
+/// Largest model (pressure nodes) on which the automatic QP form retries a failed primal solve
+/// with the dense Schur form: about 1.3 GB of dense matrices at 4096 nodes.
+pub const DENSE_FALLBACK_NODES: usize = 4096;
+
+/// The primal form has a set of minimisers, not one, when the contact set cannot hold the
+/// plate's rigid modes on its own (a plate balanced on one node can turn about it): clarabel
+/// may then stop without progress although the pressures are unique. The σ-form (dense Schur)
+/// has the unique σ as its minimiser; solve it, and say so.
+fn dense_fallback(
+    ops: &Operators,
+    settings: &crate::method::QpSettings,
+    primal: &Solution,
+) -> Result<Solution> {
+    let mut sol = qp::solve(ops, settings)?;
+    sol.info.notes.push(format!(
+        "the sparse (primal) QP stopped ({}); solved again in the dense Schur form",
+        primal.status.describe()
+    ));
+    sol.iterations += primal.iterations;
     Ok(sol)
 }
 

@@ -542,6 +542,7 @@ pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
             },
             qp: None,
             penalty_stages: stages,
+            notes: Vec::new(),
         },
     })
 }
