@@ -8,7 +8,7 @@ use serde::Serialize;
 use super::log_space;
 use crate::budget;
 use crate::foundation::FoundationKind;
-use crate::method::{Method, MethodKind};
+use crate::method::{Method, MethodKind, PenaltySettings};
 use crate::model::Load;
 use crate::operators::Operators;
 use crate::post;
@@ -139,7 +139,11 @@ pub fn stability_run(case: &StabilityCase<'_>) -> StabilityRow {
     let value = case.value;
     let mut model = case.base.model.clone();
     let mut method = match (case.method, &case.base.method) {
-        (MethodKind::Penalty, Method::Penalty(s)) => Method::Penalty(*s),
+        // The map shows what a user gets by default: the automatic ε̄ from the scene's ε̄ (the
+        // ε̄ sweep itself fixes ε̄ below).
+        (MethodKind::Penalty, Method::Penalty(s)) => {
+            Method::Penalty(PenaltySettings { auto: true, ..*s })
+        }
         (kind, _) => Method::unbonded(kind),
     };
     match case.param {
