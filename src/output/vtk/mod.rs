@@ -1,0 +1,313 @@
+//! ParaView output: the whole plate as an XML unstructured grid (`.vtu`) of bilinear quads with
+//! nodal fields, a displacement vector for "Warp By Vector" and element stress resultants.
+//!
+//! The file is written element by element with quick-xml's writer. Every `DataArray` is in
+//! VTK's uncompressed `binary` format: the base64 encoding of one byte stream that holds the
+//! payload length in bytes (UInt64, the file's `header_type`) followed by the values, all little
+//! endian — the layout VTK's own `vtkXMLWriter` produces.
+
+use std::fs::File;
+use std::io::{self, BufWriter, Write};
+use std::path::Path;
+
+use base64::engine::general_purpose::STANDARD as BASE64;
+use base64::Engine as _;
+use quick_xml::events::{BytesDecl, BytesText, Event};
+use quick_xml::Writer;
+
+use crate::error::{Error, Result};
+use crate::post::{ElementField, FullField};
+
+/// VTK's cell type number of the four-node quadrilateral, `VTK_QUAD` in `vtkCellType.h`.
+const VTK_QUAD: u8 = 9;
+
+/// An error about the file at `path` with an I/O-style message.
+fn io_error(path: &Path, kind: std::io::ErrorKind, message: String) -> Error {
+    Error::Io {
+        path: path.display().to_string(),
+        source: std::io::Error::new(kind, message),
+    }
+}
+
+/// A number type of a VTK `DataArray`.
+trait Scalar: Copy {
+    /// VTK's name of the type (the `type` attribute).
+    const VTK_TYPE: &'static str;
+    /// Append the little-endian bytes of `self` to `out`.
+    fn put(self, out: &mut Vec<u8>);
+}
+
+impl Scalar for f64 {
+    const VTK_TYPE: &'static str = "Float64";
+    fn put(self, out: &mut Vec<u8>) {
+        out.extend_from_slice(&self.to_le_bytes());
+    }
+}
+
+impl Scalar for i64 {
+    const VTK_TYPE: &'static str = "Int64";
+    fn put(self, out: &mut Vec<u8>) {
+        out.extend_from_slice(&self.to_le_bytes());
+    }
+}
+
+impl Scalar for i32 {
+    const VTK_TYPE: &'static str = "Int32";
+    fn put(self, out: &mut Vec<u8>) {
+        out.extend_from_slice(&self.to_le_bytes());
+    }
+}
+
+impl Scalar for u8 {
+    const VTK_TYPE: &'static str = "UInt8";
+    fn put(self, out: &mut Vec<u8>) {
+        out.push(self);
+    }
+}
+
+/// Write the whole plate as a VTK XML unstructured grid (`.vtu`, binary-inline base64, little
+/// endian, format version 1.0) that ParaView opens.
+///
+/// * Points: (x, y, 0) of every node of `field`, node index i + j (nx + 1).
+/// * Cells: one `VTK_QUAD` per element, nodes (i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1)
+///   (counter-clockwise), cell index ie + je nx.
+/// * Point data: `w`, `psi_x`, `psi_y`, `pressure`, `gap`, `V`, `sigma` (active scalars),
+///   `contact` (Int32, 1 in contact, 0 lifted) and the vector `displacement` = (0, 0, −w)
+///   (active vectors; w is positive downward, so "Warp By Vector" shows the deflected shape
+///   with z up).
+/// * Cell data: `mx` (active scalars), `my`, `mxy`, `qx`, `qy` from `elements`. If `elements`
+///   holds no values at all (e.g. `ElementField::default()`), the cell data are omitted.
+///
+/// The file is always written as XML whatever the extension of `path`; use `.vtu`.
+///
+/// # Errors
+/// [`Error::Io`] if the file cannot be written, or (kind `InvalidInput`) if the arrays of
+/// `field` do not all have (nx + 1)(ny + 1) entries or those of `elements` nx ny entries.
+pub fn write_vtu(path: &Path, field: &FullField, elements: &ElementField) -> Result<()> {
+    let sizes = check(path, field, elements)?;
+    let io = |source| Error::Io {
+        path: path.display().to_string(),
+        source,
+    };
+    let mut out = BufWriter::new(File::create(path).map_err(io)?);
+    write_xml(&mut out, field, elements, &sizes).map_err(io)?;
+    out.flush().map_err(io)
+}
+
+/// The checked sizes of the grid.
+struct Sizes {
+    /// (nx + 1)(ny + 1).
+    nodes: usize,
+    /// nx ny.
+    cells: usize,
+    /// Whether `elements` holds values (then all five arrays have `cells` entries).
+    with_cells: bool,
+}
+
+/// Check that every array has one entry per node or per element.
+fn check(path: &Path, field: &FullField, elements: &ElementField) -> Result<Sizes> {
+    let (nx, ny) = (field.nx, field.ny);
+    let sizes = nx
+        .checked_add(1)
+        .zip(ny.checked_add(1))
+        .and_then(|(a, b)| a.checked_mul(b))
+        .zip(nx.checked_mul(ny));
+    let Some((n_nodes, n_cells)) = sizes else {
+        return Err(io_error(
+            path,
+            std::io::ErrorKind::InvalidInput,
+            format!("grid of {nx} × {ny} elements is too large"),
+        ));
+    };
+
+    let nodal: [(&str, usize); 12] = [
+        ("x", field.x.len()),
+        ("y", field.y.len()),
+        ("s", field.s.len()),
+        ("t", field.t.len()),
+        ("w", field.w.len()),
+        ("psi_x", field.psi_x.len()),
+        ("psi_y", field.psi_y.len()),
+        ("pressure", field.pressure.len()),
+        ("gap", field.gap.len()),
+        ("V", field.v.len()),
+        ("sigma", field.sigma.len()),
+        ("contact", field.contact.len()),
+    ];
+    if let Some((name, len)) = nodal.iter().find(|(_, len)| *len != n_nodes) {
+        return Err(io_error(
+            path,
+            std::io::ErrorKind::InvalidInput,
+            format!(
+                "nodal array `{name}` has {len} entries, the {nx} × {ny} element grid has \
+                 {n_nodes} nodes"
+            ),
+        ));
+    }
+
+    let with_cells = cell_arrays(elements).iter().any(|(_, v)| !v.is_empty());
+    if with_cells {
+        if let Some((name, v)) = cell_arrays(elements)
+            .iter()
+            .find(|(_, v)| v.len() != n_cells)
+        {
+            return Err(io_error(
+                path,
+                std::io::ErrorKind::InvalidInput,
+                format!(
+                    "element array `{name}` has {} entries, the grid has {n_cells} elements",
+                    v.len()
+                ),
+            ));
+        }
+    }
+    Ok(Sizes {
+        nodes: n_nodes,
+        cells: n_cells,
+        with_cells,
+    })
+}
+
+/// The cell data arrays, the active scalars first.
+fn cell_arrays(elements: &ElementField) -> [(&'static str, &[f64]); 5] {
+    [
+        ("mx", &elements.mx),
+        ("my", &elements.my),
+        ("mxy", &elements.mxy),
+        ("qx", &elements.qx),
+        ("qy", &elements.qy),
+    ]
+}
+
+/// The whole `.vtu` document; the arrays have the lengths in `sizes`.
+fn write_xml<W: Write>(
+    out: W,
+    field: &FullField,
+    elements: &ElementField,
+    sizes: &Sizes,
+) -> io::Result<()> {
+    let mut xml = Writer::new_with_indent(out, b' ', 2);
+    xml.write_event(Event::Decl(BytesDecl::new("1.0", None, None)))?;
+    let (nodes, cells) = (sizes.nodes.to_string(), sizes.cells.to_string());
+    xml.create_element("VTKFile")
+        .with_attributes([
+            ("type", "UnstructuredGrid"),
+            ("version", "1.0"),
+            ("byte_order", "LittleEndian"),
+            ("header_type", "UInt64"),
+        ])
+        .write_inner_content(|xml| {
+            xml.create_element("UnstructuredGrid")
+                .write_inner_content(|xml| {
+                    xml.create_element("Piece")
+                        .with_attributes([
+                            ("NumberOfPoints", nodes.as_str()),
+                            ("NumberOfCells", cells.as_str()),
+                        ])
+                        .write_inner_content(|xml| piece(xml, field, elements, sizes))
+                        .map(drop)
+                })
+                .map(drop)
+        })
+        .map(drop)
+}
+
+/// The content of the one `Piece`: point data, cell data, points and cells.
+fn piece<W: Write>(
+    xml: &mut Writer<W>,
+    field: &FullField,
+    elements: &ElementField,
+    sizes: &Sizes,
+) -> io::Result<()> {
+    let nodal: [(&str, &[f64]); 7] = [
+        ("w", &field.w),
+        ("psi_x", &field.psi_x),
+        ("psi_y", &field.psi_y),
+        ("pressure", &field.pressure),
+        ("gap", &field.gap),
+        ("V", &field.v),
+        ("sigma", &field.sigma),
+    ];
+    xml.create_element("PointData")
+        .with_attributes([("Scalars", "sigma"), ("Vectors", "displacement")])
+        .write_inner_content(|xml| {
+            for (name, values) in nodal {
+                data_array(xml, Some(name), 1, values.iter().copied())?;
+            }
+            let contact = field.contact.iter().map(|&c| i32::from(c));
+            data_array(xml, Some("contact"), 1, contact)?;
+            let displacement = field.w.iter().flat_map(|&w| [0.0, 0.0, -w]);
+            data_array(xml, Some("displacement"), 3, displacement)
+        })?;
+
+    if sizes.with_cells {
+        xml.create_element("CellData")
+            .with_attribute(("Scalars", "mx"))
+            .write_inner_content(|xml| {
+                for (name, values) in cell_arrays(elements) {
+                    data_array(xml, Some(name), 1, values.iter().copied())?;
+                }
+                Ok(())
+            })?;
+    }
+
+    xml.create_element("Points").write_inner_content(|xml| {
+        let points = field
+            .x
+            .iter()
+            .zip(&field.y)
+            .flat_map(|(&x, &y)| [x, y, 0.0]);
+        data_array(xml, None, 3, points)
+    })?;
+
+    // Node and offset numbers fit in i64: they are below the length of an allocated array.
+    let nnx = (field.nx + 1) as i64;
+    let quads = (0..field.ny as i64).flat_map(|je| {
+        (0..field.nx as i64).map(move |ie| {
+            let n00 = ie + je * nnx;
+            [n00, n00 + 1, n00 + 1 + nnx, n00 + nnx]
+        })
+    });
+    xml.create_element("Cells").write_inner_content(|xml| {
+        data_array(xml, Some("connectivity"), 1, quads.flatten())?;
+        let offsets = (1..=sizes.cells as i64).map(|k| 4 * k);
+        data_array(xml, Some("offsets"), 1, offsets)?;
+        let types = std::iter::repeat_n(VTK_QUAD, sizes.cells);
+        data_array(xml, Some("types"), 1, types)
+    })?;
+    Ok(())
+}
+
+/// One `DataArray` element in `binary` format (see the module documentation).
+fn data_array<W: Write, T: Scalar>(
+    xml: &mut Writer<W>,
+    name: Option<&str>,
+    components: usize,
+    values: impl IntoIterator<Item = T>,
+) -> io::Result<()> {
+    const HEADER: usize = std::mem::size_of::<u64>();
+    let mut raw = vec![0; HEADER];
+    for v in values {
+        v.put(&mut raw);
+    }
+    let payload = (raw.len() - HEADER) as u64;
+    raw[..HEADER].copy_from_slice(&payload.to_le_bytes());
+
+    let mut element = xml
+        .create_element("DataArray")
+        .with_attribute(("type", T::VTK_TYPE));
+    if let Some(name) = name {
+        element = element.with_attribute(("Name", name));
+    }
+    let components = components.to_string();
+    element
+        .with_attributes([
+            ("NumberOfComponents", components.as_str()),
+            ("format", "binary"),
+        ])
+        .write_text_content(BytesText::new(&BASE64.encode(&raw)))?;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests;
