@@ -42,6 +42,20 @@ pub(crate) fn clarabel_settings(settings: &QpSettings) -> Result<DefaultSettings
         .map_err(|e| Error::numerical("clarabel settings", format!("{e:?}")))
 }
 
+/// clarabel's account of a solve, with the sparse forms' consistency check.
+pub(crate) fn diagnostics(
+    sol: &clarabel::solver::DefaultSolution<f64>,
+    form_check: Option<(&'static str, f64)>,
+) -> QpDiagnostics {
+    QpDiagnostics {
+        primal_residual: sol.r_prim,
+        dual_residual: sol.r_dual,
+        objective: sol.obj_val,
+        duality_gap: (sol.obj_val - sol.obj_val_dual).abs(),
+        form_check,
+    }
+}
+
 /// Solve the unbonded problem as a QP.
 pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
     let t0 = Instant::now();
@@ -141,13 +155,7 @@ pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
                 total: t0.elapsed().as_secs_f64(),
                 ..Timings::default()
             },
-            qp: Some(QpDiagnostics {
-                primal_residual: sol.r_prim,
-                dual_residual: sol.r_dual,
-                objective: sol.obj_val,
-                duality_gap: (sol.obj_val - sol.obj_val_dual).abs(),
-                form_check: None,
-            }),
+            qp: Some(diagnostics(sol, None)),
             ..SolveInfo::default()
         },
     })

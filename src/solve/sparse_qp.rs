@@ -64,8 +64,8 @@ use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSolver, IPSolver, SolverStatus, SupportedConeT};
 
 use super::bonded::finite;
-use super::qp::clarabel_settings;
-use super::{discrete_gap, QpDiagnostics, Solution, SolveInfo, Status, Timings};
+use super::qp::{clarabel_settings, diagnostics};
+use super::{discrete_gap, Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
 use crate::method::{Method, QpForm, QpSettings};
@@ -244,13 +244,7 @@ pub fn solve_sparse(ops: &Operators, settings: &QpSettings, form: SparseForm) ->
                 total: t0.elapsed().as_secs_f64(),
                 ..Timings::default()
             },
-            qp: Some(QpDiagnostics {
-                primal_residual: sol.r_prim,
-                dual_residual: sol.r_dual,
-                objective: sol.obj_val,
-                duality_gap: (sol.obj_val - sol.obj_val_dual).abs(),
-                form_check: Some(check),
-            }),
+            qp: Some(diagnostics(sol, Some(check))),
             ..SolveInfo::default()
         },
     })
