@@ -143,6 +143,14 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
             get("duality_gap")
         ));
     }
+    if !s.penalty_stages.is_empty() {
+        let stages: Vec<String> = s
+            .penalty_stages
+            .iter()
+            .map(|st| format!("{:.0e} ({} steps, {})", st.epsilon, st.steps, st.outcome))
+            .collect();
+        l.push(format!("  ε̄          : {}", stages.join(" → ")));
+    }
     if !s.history.is_empty() {
         l.push("  penalty iterations (constraint points in the penalised, lifted set):".into());
         for it in &s.history {
