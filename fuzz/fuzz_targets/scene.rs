@@ -1,7 +1,7 @@
 //! Fuzz target for the scene parser and validator.
 //!
 //! Feeds arbitrary bytes through `SceneFile::parse` → `validate`, and for small valid meshes
-//! (≤ 8 elements per side) on through `Operators::assemble` and `solve::solve`. Errors are
+//! (≤ 8 elements per side) on through `budget::check`, `Operators::assemble` and `solve`. Errors are
 //! expected and ignored: the target looks for panics, aborts, hangs and memory blow-ups.
 #![no_main]
 
@@ -21,10 +21,11 @@ fuzz_target!(|data: &[u8]| {
     let Ok(problem) = scene.validate() else {
         return;
     };
-    if problem.elements.iter().any(|&n| n > MAX_SOLVED_ELEMENTS) {
+    if problem.model.elements.iter().any(|&n| n > MAX_SOLVED_ELEMENTS) {
         return;
     }
-    if let Ok(ops) = liftoff::Operators::assemble(&problem) {
-        let _ = liftoff::solve::solve(&ops, &problem.solver);
+    if liftoff::budget::check(&problem.model, &problem.method, problem.memory_limit).is_ok() {
+        let ops = liftoff::Operators::assemble(&problem.model);
+        let _ = liftoff::solve(&ops, &problem.method);
     }
 });
