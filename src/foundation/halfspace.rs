@@ -30,6 +30,21 @@ const MIRROR_X: [usize; 4] = [1, 0, 3, 2];
 /// Local node index reflected about the element's horizontal mid-line (y ↦ −y).
 const MIRROR_Y: [usize; 4] = [3, 2, 1, 0];
 
+/// Local nodes (a, b) of an element pair at signed offset (di, dj), reflected so that the pair
+/// is read from the block of the offset (|di|, |dj|) ([`pair_block`]).
+pub fn reflect(di: isize, dj: isize, a: usize, b: usize) -> (usize, usize) {
+    let (mut a, mut b) = (a, b);
+    if di < 0 {
+        a = MIRROR_X[a];
+        b = MIRROR_X[b];
+    }
+    if dj < 0 {
+        a = MIRROR_Y[a];
+        b = MIRROR_Y[b];
+    }
+    (a, b)
+}
+
 /// ∫∫_rect g(u, v) / √(u² + v²) du dv for g = 1, u, v, uv, with the rectangle given relative to
 /// the field point: u ∈ [u1, u2], v ∈ [v1, v2].
 pub fn rectangle_potentials(u1: f64, u2: f64, v1: f64, v2: f64) -> [f64; 4] {
@@ -180,15 +195,7 @@ impl PairTable {
 
     /// Block entry for a signed offset, reflecting local nodes for negative offsets.
     fn get(&self, di: isize, dj: isize, a: usize, b: usize) -> f64 {
-        let (mut a, mut b) = (a, b);
-        if di < 0 {
-            a = MIRROR_X[a];
-            b = MIRROR_X[b];
-        }
-        if dj < 0 {
-            a = MIRROR_Y[a];
-            b = MIRROR_Y[b];
-        }
+        let (a, b) = reflect(di, dj, a, b);
         self.blocks[di.unsigned_abs() * self.ny + dj.unsigned_abs()][a][b]
     }
 }

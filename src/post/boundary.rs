@@ -96,21 +96,11 @@ pub fn pyramid_self_integral(hx: f64, hy: f64) -> f64 {
     // local index in each (counter-clockwise from the lower-left corner).
     const AROUND: [((isize, isize), usize); 4] =
         [((0, 0), 2), ((1, 0), 3), ((1, 1), 0), ((0, 1), 1)];
-    const MIRROR_X: [usize; 4] = [1, 0, 3, 2];
-    const MIRROR_Y: [usize; 4] = [3, 2, 1, 0];
     let mut sum = 0.0;
     for &((i0, j0), a) in &AROUND {
         for &((i1, j1), b) in &AROUND {
             let (di, dj) = (i1 - i0, j1 - j0);
-            let (mut a, mut b) = (a, b);
-            if di < 0 {
-                a = MIRROR_X[a];
-                b = MIRROR_X[b];
-            }
-            if dj < 0 {
-                a = MIRROR_Y[a];
-                b = MIRROR_Y[b];
-            }
+            let (a, b) = halfspace::reflect(di, dj, a, b);
             sum += halfspace::pair_block(di.unsigned_abs(), dj.unsigned_abs(), hx, hy)[a][b];
         }
     }
