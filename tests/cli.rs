@@ -1,5 +1,7 @@
 //! The command-line tool end to end: bundled examples, outputs, exit codes, no partial files.
 
+mod common;
+
 use std::path::Path;
 use std::process::Command;
 
@@ -361,20 +363,15 @@ fn eps_sweep_writes_its_table_chart_and_first_order_slope() {
         );
     }
 
-    for (args, needle) in [
-        (vec!["--points", "1"], "--points"),
-        (vec!["--constraints", "all"], "--constraints"),
-        (vec!["--from", "2"], "--from"),
-    ] {
-        let bad = dir.path().join("bad");
-        let mut a = vec!["eps-sweep", "example:paper-winkler", "--out"];
-        a.push(bad.to_str().unwrap_or_default());
-        a.extend(args);
-        let o = liftoff(&a);
-        assert_eq!(o.status.code(), Some(2), "{a:?}: {}", stderr(&o));
-        assert!(stderr(&o).contains(needle), "{a:?}: {}", stderr(&o));
-        assert!(!bad.exists(), "{a:?}: nothing written");
-    }
+    bad_options_exit_2_and_write_nothing(
+        dir.path(),
+        "eps-sweep",
+        &[
+            (vec!["--points", "1"], "--points"),
+            (vec!["--constraints", "all"], "--constraints"),
+            (vec!["--from", "2"], "--from"),
+        ],
+    );
 }
 
 /// `tradeoff` end to end on the paper's Winkler plate over 4, 8, 16 elements: one CSV row per
@@ -457,19 +454,14 @@ fn tradeoff_writes_its_table_and_chart() {
         "QP error falls with the mesh: {qp:?}"
     );
 
-    for (args, needle) in [
-        (vec!["--meshes", "1,8"], "--meshes"),
-        (vec!["--penalties", "0"], "--penalties"),
-    ] {
-        let bad = dir.path().join("bad");
-        let mut a = vec!["tradeoff", "example:paper-winkler", "--out"];
-        a.push(bad.to_str().unwrap_or_default());
-        a.extend(args);
-        let o = liftoff(&a);
-        assert_eq!(o.status.code(), Some(2), "{a:?}: {}", stderr(&o));
-        assert!(stderr(&o).contains(needle), "{a:?}: {}", stderr(&o));
-        assert!(!bad.exists(), "{a:?}: nothing written");
-    }
+    bad_options_exit_2_and_write_nothing(
+        dir.path(),
+        "tradeoff",
+        &[
+            (vec!["--meshes", "1,8"], "--meshes"),
+            (vec!["--penalties", "0"], "--penalties"),
+        ],
+    );
 }
 
 /// `stability` end to end over two small base scenes (the paper's plate on 8 × 8 elements with
@@ -528,16 +520,7 @@ fn stability_writes_one_row_per_run_and_the_maps() {
         ]
     );
     assert_eq!(rows.len(), 136, "69 Winkler runs and 67 half-space runs");
-    let known = [
-        "converged",
-        "cycling",
-        "iteration-limit",
-        "penalty-too-weak",
-        "solver-failure",
-        "infeasible",
-        "too-large",
-        "numerical",
-    ];
+    let known = common::OUTCOMES;
     let mut failed = 0;
     for r in &rows {
         let outcome = field(&header, r, "outcome");
@@ -574,4 +557,23 @@ fn stability_writes_one_row_per_run_and_the_maps() {
     ]);
     assert_eq!(o.status.code(), Some(5), "{}", stderr(&o));
     assert!(!never.exists(), "nothing written");
+}
+
+/// Each (options, flag) case of `subcommand` on the paper's Winkler plate exits 2, names the
+/// flag, and writes nothing.
+fn bad_options_exit_2_and_write_nothing(
+    dir: &std::path::Path,
+    subcommand: &str,
+    cases: &[(Vec<&str>, &str)],
+) {
+    for (args, needle) in cases {
+        let bad = dir.join("bad");
+        let mut a = vec![subcommand, "example:paper-winkler", "--out"];
+        a.push(bad.to_str().unwrap_or_default());
+        a.extend(args.iter().copied());
+        let o = liftoff(&a);
+        assert_eq!(o.status.code(), Some(2), "{a:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains(needle), "{a:?}: {}", stderr(&o));
+        assert!(!bad.exists(), "{a:?}: nothing written");
+    }
 }

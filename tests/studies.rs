@@ -1,6 +1,8 @@
 //! The method studies of `liftoff::study`: the speed–accuracy tradeoff and the stability sweep,
 //! on small meshes (the penalty limit ε̄ → 0 is tests/penalty_limit.rs).
 
+mod common;
+
 use liftoff::budget;
 use liftoff::foundation::FoundationKind;
 use liftoff::model::Model;
@@ -189,18 +191,6 @@ fn tradeoff_reference_falls_back_to_the_finest_mesh() {
     );
 }
 
-/// Every outcome kind a stability row may carry (`StabilityRow::outcome`).
-const OUTCOMES: [&str; 8] = [
-    "converged",
-    "cycling",
-    "iteration-limit",
-    "penalty-too-weak",
-    "solver-failure",
-    "infeasible",
-    "too-large",
-    "numerical",
-];
-
 fn rows_of<'a>(
     rows: &'a [StabilityRow],
     foundation: &str,
@@ -262,7 +252,7 @@ fn stability_sweep_rows_and_outcomes() {
             "row in plan order"
         );
         assert!(
-            OUTCOMES.contains(&r.outcome.as_str()),
+            common::OUTCOMES.contains(&r.outcome.as_str()),
             "{what}: outcome {}",
             r.outcome
         );

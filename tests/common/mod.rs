@@ -75,3 +75,16 @@ force = 2.0e5
 [mesh]
 elements = [8, 8]
 "#;
+
+/// Every outcome kind a stability row or study point may carry, written out here (not taken
+/// from the library) so that a new kind must be added on purpose.
+pub const OUTCOMES: [&str; 8] = [
+    "converged",
+    "cycling",
+    "iteration-limit",
+    "penalty-too-weak",
+    "solver-failure",
+    "infeasible",
+    "too-large",
+    "numerical",
+];
