@@ -122,7 +122,11 @@ impl QpForm {
     pub fn resolve(self, t: &crate::foundation::Compliance) -> QpForm {
         match (self, t) {
             (QpForm::Auto, crate::foundation::Compliance::Diagonal(_)) => QpForm::Primal,
-            (QpForm::Auto, crate::foundation::Compliance::Dense(_)) => QpForm::Schur,
+            (
+                QpForm::Auto,
+                crate::foundation::Compliance::Dense(_)
+                | crate::foundation::Compliance::Toeplitz(_),
+            ) => QpForm::Schur,
             (form, _) => form,
         }
     }

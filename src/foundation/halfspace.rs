@@ -26,9 +26,9 @@ use crate::quadrature::GaussRule;
 pub const NEAR_FIELD: f64 = 2.5;
 
 /// Local node index reflected about the element's vertical mid-line (x ↦ −x).
-const MIRROR_X: [usize; 4] = [1, 0, 3, 2];
+pub(crate) const MIRROR_X: [usize; 4] = [1, 0, 3, 2];
 /// Local node index reflected about the element's horizontal mid-line (y ↦ −y).
-const MIRROR_Y: [usize; 4] = [3, 2, 1, 0];
+pub(crate) const MIRROR_Y: [usize; 4] = [3, 2, 1, 0];
 
 /// Local nodes (a, b) of an element pair at signed offset (di, dj), reflected so that the pair
 /// is read from the block of the offset (|di|, |dj|) ([`pair_block`]).
@@ -174,13 +174,15 @@ pub fn pair_block(di: usize, dj: usize, hx: f64, hy: f64) -> [[f64; 4]; 4] {
 }
 
 /// Pair blocks for every non-negative offset on a grid of `full` elements (the whole plate).
-struct PairTable {
+/// Shared by the dense T and the matrix-free one ([`super::fft`]).
+pub(crate) struct PairTable {
     ny: usize,
     blocks: Vec<[[f64; 4]; 4]>,
 }
 
 impl PairTable {
-    fn new(full: [usize; 2], hx: f64, hy: f64) -> Self {
+    /// Tabulate [`pair_block`] for every offset (di, dj) with 0 ≤ di < full[0], 0 ≤ dj < full[1].
+    pub(crate) fn new(full: [usize; 2], hx: f64, hy: f64) -> Self {
         let mut blocks = Vec::with_capacity(full[0] * full[1]);
         for di in 0..full[0] {
             for dj in 0..full[1] {
@@ -194,7 +196,7 @@ impl PairTable {
     }
 
     /// Block entry for a signed offset, reflecting local nodes for negative offsets.
-    fn get(&self, di: isize, dj: isize, a: usize, b: usize) -> f64 {
+    pub(crate) fn get(&self, di: isize, dj: isize, a: usize, b: usize) -> f64 {
         let (a, b) = reflect(di, dj, a, b);
         self.blocks[di.unsigned_abs() * self.ny + dj.unsigned_abs()][a][b]
     }
@@ -208,6 +210,11 @@ pub fn dense_bytes(mesh: &Mesh) -> usize {
 /// Galerkin compliance of the half-space with constant `c` = (1 − ν_s²)/(π E_s) in the
 /// caller's units, including mirror images on reduced models.
 pub fn compliance(mesh: &Mesh, c: f64) -> Compliance {
+    Compliance::Dense(dense_matrix(mesh, c))
+}
+
+/// The dense matrix of [`compliance`].
+pub fn dense_matrix(mesh: &Mesh, c: f64) -> faer::Mat<f64> {
     let full = mesh.full_elements();
     let table = PairTable::new(full, mesh.hx, mesh.hy);
     let n = mesh.n_nodes();
@@ -271,7 +278,7 @@ pub fn compliance(mesh: &Mesh, c: f64) -> Compliance {
             t[(j, i)] = s;
         }
     }
-    Compliance::Dense(t)
+    t
 }
 
 #[cfg(test)]

@@ -4,6 +4,7 @@
 //! The pressure σ is interpolated with the same bilinear functions f_i as the deflection, one
 //! unknown per model node. The discrete gap is g = Tσ − Bᵀu and the plate feels the load −Bσ.
 
+pub mod fft;
 pub mod halfspace;
 pub mod winkler;
 
@@ -36,6 +37,9 @@ pub enum Compliance {
     Diagonal(Vec<f64>),
     /// Half-space: T_ij = ⟨f_i, 𝒯 f_j⟩, dense symmetric positive definite.
     Dense(faer::Mat<f64>),
+    /// Half-space, the same T never stored: block-Toeplitz products by FFT
+    /// ([`fft::ToeplitzCompliance`]), for the iterative route.
+    Toeplitz(Box<fft::ToeplitzCompliance>),
 }
 
 impl Compliance {
@@ -56,6 +60,7 @@ impl Compliance {
                 }
                 y
             }
+            Compliance::Toeplitz(t) => t.apply(x),
         }
     }
 
@@ -64,7 +69,39 @@ impl Compliance {
         match self {
             Compliance::Diagonal(d) => d.len(),
             Compliance::Dense(t) => t.nrows(),
+            Compliance::Toeplitz(t) => t.len(),
         }
+    }
+
+    /// The diagonal of T.
+    pub fn diagonal(&self) -> Vec<f64> {
+        match self {
+            Compliance::Diagonal(d) => d.clone(),
+            Compliance::Dense(t) => (0..t.nrows()).map(|i| t[(i, i)]).collect(),
+            Compliance::Toeplitz(t) => t.diag().to_vec(),
+        }
+    }
+
+    /// T as a dense matrix: a copy of the dense T, the diagonal spread out, or the Toeplitz
+    /// operator assembled densely (n_σ² doubles: check the memory budget first).
+    pub fn to_dense(&self) -> faer::Mat<f64> {
+        match self {
+            Compliance::Dense(t) => t.clone(),
+            Compliance::Diagonal(d) => {
+                let n = d.len();
+                let mut m = faer::Mat::<f64>::zeros(n, n);
+                for (i, &v) in d.iter().enumerate() {
+                    m[(i, i)] = v;
+                }
+                m
+            }
+            Compliance::Toeplitz(t) => t.dense(),
+        }
+    }
+
+    /// True when T is stored as a dense matrix.
+    pub fn is_dense(&self) -> bool {
+        matches!(self, Compliance::Dense(_))
     }
 
     /// True when there are no pressure unknowns.

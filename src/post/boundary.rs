@@ -483,10 +483,7 @@ mod tests {
     #[test]
     fn pyramid_self_integral_matches_the_assembled_compliance() {
         let mesh = crate::mesh::Mesh::new(2.0, 2.0, [8, 8], false, false);
-        let t = match halfspace::compliance(&mesh, 1.0) {
-            crate::foundation::Compliance::Dense(t) => t,
-            crate::foundation::Compliance::Diagonal(_) => unreachable!("dense"),
-        };
+        let t = halfspace::dense_matrix(&mesh, 1.0);
         let n = mesh.node(4, 4);
         let mine = pyramid_self_integral(mesh.hx, mesh.hy);
         assert!(

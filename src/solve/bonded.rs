@@ -64,7 +64,7 @@ pub fn lumped_coupling(ops: &Operators) -> Result<Vec<(usize, f64)>> {
 pub fn solve(ops: &Operators) -> Result<Solution> {
     match &ops.t {
         Compliance::Diagonal(t) => solve_springs(ops, t),
-        Compliance::Dense(_) => solve_schur(ops),
+        Compliance::Dense(_) | Compliance::Toeplitz(_) => solve_schur(ops),
     }
 }
 

@@ -132,7 +132,7 @@ impl Backend {
                     symbolic,
                 })
             }
-            (Compliance::Dense(_), _) => Ok(Backend::Schur(
+            (Compliance::Dense(_) | Compliance::Toeplitz(_), _) => Ok(Backend::Schur(
                 Box::new(SchurSystem::new(ops)?),
                 LowRankSchur::new(),
             )),

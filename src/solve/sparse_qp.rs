@@ -96,7 +96,7 @@ pub fn solve_sparse(ops: &Operators, settings: &QpSettings, form: SparseForm) ->
     let t0 = Instant::now();
     let t = match &ops.t {
         Compliance::Diagonal(t) => t,
-        Compliance::Dense(_) => {
+        Compliance::Dense(_) | Compliance::Toeplitz(_) => {
             return Err(Error::Unsupported(
                 "the sparse QP needs a diagonal (Winkler) compliance; the half-space compliance is dense, use the dense QP".into(),
             ))

@@ -1,0 +1,530 @@
+//! The half-space compliance T without storing T: a block-Toeplitz product by zero-padded 2-D
+//! FFTs (the discrete-convolution FFT, "DC-FFT", of the contact literature).
+//!
+//! On the uniform grid the Galerkin entries are sums over element pairs,
+//!
+//! T_ij = c Σ_{e ∋ i (local a)} Σ_{e' ∋ j (local b)} I_ab(e' − e),
+//!
+//! where I_ab(d) is the pair block of [`super::halfspace::pair_block`] at the element offset d (the
+//! same table the dense T is scattered from). Gathering the node values into four element
+//! fields w_b[e'] = σ(node b of e'), the product is four discrete correlations per output field,
+//!
+//! (Tσ)_i = Σ_{e ∋ i (local a)} y_a[e],   y_a[e] = Σ_b Σ_{e'} c I_ab(e' − e) w_b[e'],
+//!
+//! each a pointwise product of spectra on a grid padded far enough that the circular product does
+//! not wrap: 4 forward and 4 inverse real 2-D FFTs and 16 spectral products per application,
+//! O(N log N) time and O(N) memory for N pressure nodes.
+//!
+//! A symmetry-reduced model's T includes the settlement of the mirror images of its pressure
+//! (see [`super::halfspace`]): that is the same correlation on the whole plate with the pressure
+//! extended by mirroring, σ(x) = σ(|x|) across each symmetry line. Only the model's own elements
+//! are read back, so the padding needs to cover the offsets from the model to the whole plate:
+//! N_d + n_d − 1 along a direction with n_d model and N_d whole-plate elements.
+
+use std::sync::{Arc, Mutex};
+
+use realfft::num_complex::Complex;
+use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
+use rustfft::{Fft, FftPlanner};
+
+use super::halfspace::{self, PairTable};
+use crate::mesh::Mesh;
+
+/// Position (i, j) of local node a inside its element, counter-clockwise from the lower left
+/// ([`Mesh::element_nodes`]).
+const LOCAL: [(usize, usize); 4] = [(0, 0), (1, 0), (1, 1), (0, 1)];
+
+/// Smallest length ≥ n whose prime factors are 2, 3 and 5 (fast for rustfft), and even (fast
+/// for the real transforms).
+pub fn fft_size(n: usize) -> usize {
+    let mut m = n.max(2);
+    loop {
+        let mut r = m;
+        for p in [2, 3, 5] {
+            while r % p == 0 {
+                r /= p;
+            }
+        }
+        if r == 1 && m % 2 == 0 {
+            return m;
+        }
+        m += 1;
+    }
+}
+
+/// Buffers of one application, reused from call to call.
+struct Scratch {
+    /// Four element fields (real, M1 × M2), then the four outputs.
+    real: Vec<Vec<f64>>,
+    /// Their spectra, [k2][k1] (H2 × M1).
+    spec: Vec<Vec<Complex<f64>>>,
+    /// The four output spectra.
+    out: Vec<Vec<Complex<f64>>>,
+    /// One row-transform result (M1 × H2), transposed into `spec`.
+    rows: Vec<Complex<f64>>,
+    /// Work space of the transforms.
+    work: Vec<Complex<f64>>,
+}
+
+/// The half-space compliance of a (possibly symmetry-reduced) structured mesh as a block-Toeplitz
+/// operator: the spectra of the 16 pair kernels, the FFT plans and the diagonal of T.
+pub struct ToeplitzCompliance {
+    mesh: Mesh,
+    constant: f64,
+    /// Padded grid M1 × M2 (elements).
+    m: [usize; 2],
+    /// Where the model's elements sit in the whole plate (n_d if reduced along d, else 0).
+    shift: [usize; 2],
+    /// Kernel spectra, 16 of H2 × M1 (H2 = M2/2 + 1), index a·4 + b.
+    kernels: Vec<Vec<Complex<f64>>>,
+    diag: Vec<f64>,
+    r2c: Arc<dyn RealToComplex<f64>>,
+    c2r: Arc<dyn ComplexToReal<f64>>,
+    fwd: Arc<dyn Fft<f64>>,
+    inv: Arc<dyn Fft<f64>>,
+    scratch: Mutex<Option<Scratch>>,
+}
+
+impl std::fmt::Debug for ToeplitzCompliance {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ToeplitzCompliance")
+            .field("mesh", &self.mesh)
+            .field("constant", &self.constant)
+            .field("padded", &self.m)
+            .finish_non_exhaustive()
+    }
+}
+
+impl Clone for ToeplitzCompliance {
+    fn clone(&self) -> Self {
+        Self {
+            mesh: self.mesh.clone(),
+            constant: self.constant,
+            m: self.m,
+            shift: self.shift,
+            kernels: self.kernels.clone(),
+            diag: self.diag.clone(),
+            r2c: self.r2c.clone(),
+            c2r: self.c2r.clone(),
+            fwd: self.fwd.clone(),
+            inv: self.inv.clone(),
+            scratch: Mutex::new(None),
+        }
+    }
+}
+
+/// The pair integral of local nodes (a, b) at element offset d, averaged with its transpose
+/// (b, a) at −d. The two are equal up to the quadrature's round-off (the near-field rule
+/// integrates the inner element in closed form and the outer one numerically); the dense T is
+/// symmetrised the same way, entry by entry.
+fn symmetric(table: &PairTable, di: isize, dj: isize, a: usize, b: usize) -> f64 {
+    0.5 * (table.get(di, dj, a, b) + table.get(-di, -dj, b, a))
+}
+
+/// Whole-plate node positions (I, J) that the model node (i, j) stands for: itself, and its
+/// mirror images across the symmetry lines.
+fn preimages(mesh: &Mesh, shift: [usize; 2], i: usize, j: usize) -> Vec<(usize, usize)> {
+    let along = |p: usize, s: usize, sym: bool| -> Vec<usize> {
+        if !sym {
+            vec![p]
+        } else if p == 0 {
+            vec![s]
+        } else {
+            vec![s + p, s - p]
+        }
+    };
+    let xs = along(i, shift[0], mesh.sym_x);
+    let ys = along(j, shift[1], mesh.sym_y);
+    let mut out = Vec::with_capacity(xs.len() * ys.len());
+    for &x in &xs {
+        for &y in &ys {
+            out.push((x, y));
+        }
+    }
+    out
+}
+
+impl ToeplitzCompliance {
+    /// Tabulate the pair kernels of `mesh` with the half-space constant `c` and transform them.
+    pub fn new(mesh: &Mesh, c: f64) -> Self {
+        let full = mesh.full_elements();
+        let table = PairTable::new(full, mesh.hx, mesh.hy);
+        Self::from_table(mesh, c, &table)
+    }
+
+    pub(crate) fn from_table(mesh: &Mesh, c: f64, table: &PairTable) -> Self {
+        let full = mesh.full_elements();
+        let n = [mesh.nx, mesh.ny];
+        let shift = [
+            if mesh.sym_x { mesh.nx } else { 0 },
+            if mesh.sym_y { mesh.ny } else { 0 },
+        ];
+        let m = [fft_size(full[0] + n[0] - 1), fft_size(full[1] + n[1] - 1)];
+        let h2 = m[1] / 2 + 1;
+        let mut real_planner = RealFftPlanner::<f64>::new();
+        let r2c = real_planner.plan_fft_forward(m[1]);
+        let c2r = real_planner.plan_fft_inverse(m[1]);
+        let mut planner = FftPlanner::<f64>::new();
+        let fwd = planner.plan_fft_forward(m[0]);
+        let inv = planner.plan_fft_inverse(m[0]);
+        let mut op = Self {
+            mesh: mesh.clone(),
+            constant: c,
+            m,
+            shift,
+            kernels: Vec::new(),
+            diag: Vec::new(),
+            r2c,
+            c2r,
+            fwd,
+            inv,
+            scratch: Mutex::new(None),
+        };
+        let mut scratch = op.new_scratch();
+        // Offsets d = (source − target) in whole-plate elements: d ∈ [−(shift + n − 1), full −
+        // 1 − shift]. The correlation y[t] = Σ_s k(s − t) w[s] is the convolution with
+        // k'(d) = k(−d), so k(d) is stored at index (−d) mod M.
+        let lo = [
+            -((shift[0] + n[0]) as isize - 1),
+            -((shift[1] + n[1]) as isize - 1),
+        ];
+        let hi = [
+            (full[0] - 1 - shift[0]) as isize,
+            (full[1] - 1 - shift[1]) as isize,
+        ];
+        let wrap = |d: isize, len: usize| (-d).rem_euclid(len as isize) as usize;
+        let mut kernels = Vec::with_capacity(16);
+        let mut field = vec![0.0; m[0] * m[1]];
+        for a in 0..4 {
+            for b in 0..4 {
+                field.iter_mut().for_each(|v| *v = 0.0);
+                for di in lo[0]..=hi[0] {
+                    let row = wrap(di, m[0]) * m[1];
+                    for dj in lo[1]..=hi[1] {
+                        field[row + wrap(dj, m[1])] = c * symmetric(table, di, dj, a, b);
+                    }
+                }
+                let mut spec = vec![Complex::new(0.0, 0.0); h2 * m[0]];
+                op.forward(&mut field, &mut spec, &mut scratch);
+                kernels.push(spec);
+            }
+        }
+        op.kernels = kernels;
+        op.diag = op.diagonal(table);
+        *op.scratch.get_mut().unwrap_or_else(|e| e.into_inner()) = Some(scratch);
+        op
+    }
+
+    /// The mesh the operator was built for.
+    pub fn mesh(&self) -> &Mesh {
+        &self.mesh
+    }
+
+    /// The half-space constant c = (1 − ν_s²)/(π E_s) in the caller's units.
+    pub fn constant(&self) -> f64 {
+        self.constant
+    }
+
+    /// Padded FFT grid (elements along x, y).
+    pub fn padded(&self) -> [usize; 2] {
+        self.m
+    }
+
+    /// Number of pressure unknowns.
+    pub fn len(&self) -> usize {
+        self.mesh.n_nodes()
+    }
+
+    /// True when there are no pressure unknowns.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Diagonal of T.
+    pub fn diag(&self) -> &[f64] {
+        &self.diag
+    }
+
+    /// Bytes held: kernel spectra, one set of scratch buffers, the diagonal.
+    pub fn bytes(&self) -> usize {
+        toeplitz_bytes(&self.mesh)
+    }
+
+    /// The dense matrix of the same operator ([`halfspace::compliance`]), for routes that need
+    /// it; n² doubles.
+    pub fn dense(&self) -> faer::Mat<f64> {
+        halfspace::dense_matrix(&self.mesh, self.constant)
+    }
+
+    fn new_scratch(&self) -> Scratch {
+        let [m1, m2] = self.m;
+        let h2 = m2 / 2 + 1;
+        let work = self
+            .r2c
+            .get_scratch_len()
+            .max(self.c2r.get_scratch_len())
+            .max(self.fwd.get_inplace_scratch_len())
+            .max(self.inv.get_inplace_scratch_len());
+        Scratch {
+            real: vec![vec![0.0; m1 * m2]; 4],
+            spec: vec![vec![Complex::new(0.0, 0.0); h2 * m1]; 4],
+            out: vec![vec![Complex::new(0.0, 0.0); h2 * m1]; 4],
+            rows: vec![Complex::new(0.0, 0.0); m1 * h2],
+            work: vec![Complex::new(0.0, 0.0); work],
+        }
+    }
+
+    /// Real field (M1 × M2, row-major) → spectrum [k2][k1]. Destroys `field`.
+    fn forward(&self, field: &mut [f64], spec: &mut [Complex<f64>], s: &mut Scratch) {
+        let [m1, m2] = self.m;
+        let h2 = m2 / 2 + 1;
+        for i in 0..m1 {
+            let input = &mut field[i * m2..(i + 1) * m2];
+            let output = &mut s.rows[i * h2..(i + 1) * h2];
+            // Lengths match the plan by construction; the transform cannot fail.
+            let _ = self.r2c.process_with_scratch(input, output, &mut s.work);
+        }
+        for i in 0..m1 {
+            for k in 0..h2 {
+                spec[k * m1 + i] = s.rows[i * h2 + k];
+            }
+        }
+        self.fwd.process_with_scratch(spec, &mut s.work);
+    }
+
+    /// Spectrum [k2][k1] → real field (M1 × M2), scaled by 1/(M1 M2). Destroys `spec`.
+    fn inverse(&self, spec: &mut [Complex<f64>], field: &mut [f64], s: &mut Scratch) {
+        let [m1, m2] = self.m;
+        let h2 = m2 / 2 + 1;
+        self.inv.process_with_scratch(spec, &mut s.work);
+        let scale = 1.0 / (m1 * m2) as f64;
+        for k in 0..h2 {
+            for i in 0..m1 {
+                s.rows[i * h2 + k] = spec[k * m1 + i] * scale;
+            }
+        }
+        for i in 0..m1 {
+            let input = &mut s.rows[i * h2..(i + 1) * h2];
+            // A real field's spectrum is real at k2 = 0 and (M2 even) at the Nyquist index; drop
+            // the round-off there, which the real inverse transform refuses.
+            input[0].im = 0.0;
+            input[h2 - 1].im = 0.0;
+            let output = &mut field[i * m2..(i + 1) * m2];
+            let _ = self.c2r.process_with_scratch(input, output, &mut s.work);
+        }
+    }
+
+    /// y = T x.
+    pub fn apply(&self, x: &[f64]) -> Vec<f64> {
+        let mut y = vec![0.0; self.len()];
+        self.apply_into(x, &mut y);
+        y
+    }
+
+    /// y = T x into a caller's buffer.
+    pub fn apply_into(&self, x: &[f64], y: &mut [f64]) {
+        let mut guard = self.scratch.lock().unwrap_or_else(|e| e.into_inner());
+        let mut s = guard.take().unwrap_or_else(|| self.new_scratch());
+        self.apply_with(x, y, &mut s);
+        *guard = Some(s);
+    }
+
+    fn apply_with(&self, x: &[f64], y: &mut [f64], s: &mut Scratch) {
+        let [m1, m2] = self.m;
+        let h2 = m2 / 2 + 1;
+        let full = self.mesh.full_elements();
+        let shift = self.shift;
+        let nx1 = self.mesh.nodes_x();
+        // Model node of a whole-plate node: |I − shift| along a reduced direction.
+        let model = |p: usize, s: usize| p.abs_diff(s);
+        // Gather the four element fields over the whole plate (mirrored pressure).
+        let mut real = std::mem::take(&mut s.real);
+        let mut spec = std::mem::take(&mut s.spec);
+        let mut out = std::mem::take(&mut s.out);
+        for (b, field) in real.iter_mut().enumerate() {
+            field.iter_mut().for_each(|v| *v = 0.0);
+            let (bx, by) = LOCAL[b];
+            for ie in 0..full[0] {
+                let i = model(ie + bx, shift[0]);
+                for je in 0..full[1] {
+                    let j = model(je + by, shift[1]);
+                    field[ie * m2 + je] = x[i + j * nx1];
+                }
+            }
+        }
+        for b in 0..4 {
+            self.forward(&mut real[b], &mut spec[b], s);
+        }
+        // y_a = Σ_b K_ab w_b, frequency by frequency.
+        let len = h2 * m1;
+        for (a, o) in out.iter_mut().enumerate() {
+            let k = &self.kernels[a * 4..a * 4 + 4];
+            for f in 0..len {
+                o[f] = k[0][f] * spec[0][f]
+                    + k[1][f] * spec[1][f]
+                    + k[2][f] * spec[2][f]
+                    + k[3][f] * spec[3][f];
+            }
+        }
+        for (a, o) in out.iter_mut().enumerate() {
+            self.inverse(o, &mut real[a], s);
+        }
+        // Scatter: node i collects y_a of each model element having it as local node a.
+        y.iter_mut().for_each(|v| *v = 0.0);
+        for (a, field) in real.iter().enumerate() {
+            let (ax, ay) = LOCAL[a];
+            for ie in 0..self.mesh.nx {
+                let row = (ie + shift[0]) * m2;
+                for je in 0..self.mesh.ny {
+                    y[(ie + ax) + (je + ay) * nx1] += field[row + je + shift[1]];
+                }
+            }
+        }
+        s.real = real;
+        s.spec = spec;
+        s.out = out;
+    }
+
+    /// T_ij from the pair table, summing the model element pairs and their mirror images.
+    fn entry(&self, table: &PairTable, i: usize, j: usize) -> f64 {
+        let nx1 = self.mesh.nodes_x();
+        let (pi, qi) = (i % nx1, i / nx1);
+        let (pj, qj) = (j % nx1, j / nx1);
+        let full = self.mesh.full_elements();
+        let mut sum = 0.0;
+        for a in 0..4 {
+            let (ax, ay) = LOCAL[a];
+            if pi < ax || qi < ay || pi - ax >= self.mesh.nx || qi - ay >= self.mesh.ny {
+                continue;
+            }
+            let e0 = (
+                (pi - ax + self.shift[0]) as isize,
+                (qi - ay + self.shift[1]) as isize,
+            );
+            for (fi, fj) in preimages(&self.mesh, self.shift, pj, qj) {
+                for b in 0..4 {
+                    let (bx, by) = LOCAL[b];
+                    if fi < bx || fj < by || fi - bx >= full[0] || fj - by >= full[1] {
+                        continue;
+                    }
+                    let e1 = ((fi - bx) as isize, (fj - by) as isize);
+                    sum += symmetric(table, e1.0 - e0.0, e1.1 - e0.1, a, b);
+                }
+            }
+        }
+        self.constant * sum
+    }
+
+    fn diagonal(&self, table: &PairTable) -> Vec<f64> {
+        (0..self.len()).map(|i| self.entry(table, i, i)).collect()
+    }
+}
+
+/// Bytes a [`ToeplitzCompliance`] of `mesh` holds: 16 kernel spectra and 8 work arrays of the
+/// padded grid, the pair table while it is built (16 doubles per whole-plate offset), and the
+/// diagonal.
+pub fn toeplitz_bytes(mesh: &Mesh) -> usize {
+    let full = mesh.full_elements();
+    let m = [
+        fft_size(full[0] + mesh.nx - 1),
+        fft_size(full[1] + mesh.ny - 1),
+    ];
+    let h2 = m[1] / 2 + 1;
+    let spectra = (16 + 4 + 4 + 1) * h2 * m[0] * 16;
+    let real = 4 * m[0] * m[1] * 8;
+    let table = full[0] * full[1] * 16 * 8;
+    spectra + real + table + mesh.n_nodes() * 8
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn dense(mesh: &Mesh, c: f64) -> faer::Mat<f64> {
+        halfspace::dense_matrix(mesh, c)
+    }
+
+    /// A reproducible field with both signs and no symmetry.
+    fn field(n: usize, seed: u64) -> Vec<f64> {
+        let mut s = seed;
+        (0..n)
+            .map(|_| {
+                s = s
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                ((s >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
+            })
+            .collect()
+    }
+
+    /// The FFT product equals the dense product of `halfspace::compliance` (an independent
+    /// scatter of the same pair table) to round-off: the FFT's error is ~1e-16 × log N × max|T|·|x|.
+    fn check(a: f64, b: f64, full: [usize; 2], sym_x: bool, sym_y: bool) {
+        let mesh = Mesh::new(a, b, full, sym_x, sym_y);
+        let c = 0.37;
+        let t = dense(&mesh, c);
+        let op = ToeplitzCompliance::new(&mesh, c);
+        let n = mesh.n_nodes();
+        let name = format!("{full:?} {} (μ = {})", mesh.symmetry_name(), b / a);
+        for seed in [1, 2] {
+            let x = field(n, seed);
+            let y = op.apply(&x);
+            let mut worst = 0.0_f64;
+            let mut scale = 0.0_f64;
+            for i in 0..n {
+                let d: f64 = (0..n).map(|j| t[(i, j)] * x[j]).sum();
+                worst = worst.max((d - y[i]).abs());
+                scale = scale.max(d.abs());
+            }
+            assert!(
+                worst < 1e-12 * scale,
+                "{name}: FFT product differs from dense by {worst:e} (scale {scale:e})"
+            );
+        }
+        for i in 0..n {
+            assert!(
+                (op.diag()[i] - t[(i, i)]).abs() < 1e-13 * t[(i, i)],
+                "{name}: diagonal {i}: {} vs {}",
+                op.diag()[i],
+                t[(i, i)]
+            );
+        }
+    }
+
+    #[test]
+    fn fft_product_equals_dense_full_plate() {
+        check(2.0, 2.0, [6, 6], false, false);
+        check(2.0, 1.0, [7, 4], false, false);
+        check(2.0, 3.0, [5, 9], false, false);
+    }
+
+    #[test]
+    fn fft_product_equals_dense_half_models() {
+        check(2.0, 2.0, [8, 5], true, false);
+        check(2.0, 1.0, [5, 8], false, true);
+        check(2.0, 0.6, [10, 7], true, false);
+    }
+
+    #[test]
+    fn fft_product_equals_dense_quarter_models() {
+        check(2.0, 2.0, [8, 8], true, true);
+        check(2.0, 1.0, [10, 6], true, true);
+        check(2.0, 2.0, [2, 2], true, true);
+    }
+
+    #[test]
+    fn fft_sizes_are_smooth_and_large_enough() {
+        for n in [1, 2, 7, 17, 97, 383, 769] {
+            let m = fft_size(n);
+            assert!(m >= n && m % 2 == 0, "{n} → {m}");
+            let mut r = m;
+            for p in [2, 3, 5] {
+                while r % p == 0 {
+                    r /= p;
+                }
+            }
+            assert_eq!(r, 1, "{n} → {m} has a factor other than 2, 3, 5");
+        }
+        assert_eq!(fft_size(767), 768);
+    }
+}
