@@ -68,5 +68,28 @@ fn half_space(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, winkler, half_space);
+/// T·x for the paper's quarter models: the dense matrix-vector product against the FFT
+/// (block-Toeplitz) product of the same T.
+fn compliance(c: &mut Criterion) {
+    use liftoff::foundation::{fft::ToeplitzCompliance, halfspace};
+    let mut g = c.benchmark_group("compliance");
+    g.sample_size(10);
+    for n in [32, 64, 128, 256, 512] {
+        let mesh = liftoff::mesh::Mesh::new(2.0, 2.0, [n, n], true, true);
+        let x: Vec<f64> = (0..mesh.n_nodes()).map(|i| (i as f64).sin()).collect();
+        let fft = ToeplitzCompliance::new(&mesh, 2.5e-4);
+        g.bench_with_input(BenchmarkId::new("fft-apply", n), &x, |b, x| {
+            b.iter(|| fft.apply(x))
+        });
+        if n <= 128 {
+            let dense = halfspace::compliance(&mesh, 2.5e-4);
+            g.bench_with_input(BenchmarkId::new("dense-apply", n), &x, |b, x| {
+                b.iter(|| dense.apply(x))
+            });
+        }
+    }
+    g.finish();
+}
+
+criterion_group!(benches, winkler, half_space, compliance);
 criterion_main!(benches);

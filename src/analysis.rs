@@ -5,7 +5,7 @@ use std::time::Instant;
 
 use crate::budget;
 use crate::error::Result;
-use crate::method::Method;
+use crate::method::{Method, Route};
 use crate::model::Model;
 use crate::post::{self, Report};
 use crate::scene::Problem;
@@ -55,11 +55,22 @@ pub fn run(model: &Model, ops: &Operators, method: &Method, assemble_s: f64) -> 
     })
 }
 
+/// Check the memory budget of `method` on `route` and assemble the operators that route needs
+/// (a dense or an FFT half-space T).
+pub fn prepare(model: &Model, method: &Method, route: Route, limit: f64) -> Result<Operators> {
+    let toeplitz = budget::check_route(model, method, route, limit)?;
+    Ok(Operators::assemble_with(model, toeplitz))
+}
+
 /// Check the memory budget, assemble, solve with the problem's method and post-process.
 pub fn analyse(problem: &Problem) -> Result<Analysis> {
-    budget::check(&problem.model, &problem.method, problem.memory_limit)?;
     let t0 = Instant::now();
-    let ops = Operators::assemble(&problem.model);
+    let ops = prepare(
+        &problem.model,
+        &problem.method,
+        problem.route,
+        problem.memory_limit,
+    )?;
     let assemble_s = t0.elapsed().as_secs_f64();
     let Outcome {
         solution,

@@ -4,7 +4,7 @@
 use crate::error::{Error, Result};
 use crate::foundation::FoundationKind;
 use crate::mesh::Mesh;
-use crate::method::{Method, QpForm};
+use crate::method::{Method, QpForm, Route};
 use crate::model::{ConstraintPoints, Model};
 
 const GIB: f64 = 1024.0 * 1024.0 * 1024.0;
@@ -99,7 +99,57 @@ pub fn estimate_bytes(
     bytes
 }
 
-/// Refuse a (model, method) pair that will not fit in `limit` bytes.
+/// Rough memory need of the iterative route (half-space T as an FFT operator, penalty steps by
+/// conjugate gradients), bytes: the sparse operators with two sparse Cholesky factors (the plate
+/// and the preconditioner's plate on springs), the FFT kernels and work arrays
+/// ([`crate::foundation::fft::toeplitz_bytes`]) and some 40 vectors of n_σ and n_eq.
+pub fn iterative_bytes(mesh: &Mesh) -> f64 {
+    let n = mesh.n_nodes() as f64;
+    let n_eq = 3.0 * n;
+    let factor = 31.0 * n_eq * n.max(2.0).log2() * 16.0;
+    operator_bytes(mesh, FoundationKind::Winkler)
+        + factor
+        + crate::foundation::fft::toeplitz_bytes(mesh) as f64
+        + 40.0 * (n + n_eq) * 8.0
+}
+
+/// Whether the half-space T of `model` is held as an FFT operator on `route` when solved with
+/// `method` (false for Winkler, whose T is diagonal anyway); an error when the route cannot
+/// serve the method (the QP on the iterative route).
+pub fn toeplitz(model: &Model, method: &Method, route: Route) -> Result<bool> {
+    let (mesh, _) = model.plan_mesh();
+    let iterative = route.iterative(mesh.n_nodes(), method)?;
+    Ok(iterative && model.groups.foundation == FoundationKind::HalfSpace)
+}
+
+/// Refuse a (model, method) pair that will not fit in `limit` bytes on `route`; returns whether
+/// the operators are to hold T as an FFT operator ([`crate::Operators::assemble_with`]).
+pub fn check_route(model: &Model, method: &Method, route: Route, limit: f64) -> Result<bool> {
+    let toeplitz = toeplitz(model, method, route)?;
+    if !toeplitz {
+        check(model, method, limit)?;
+        return Ok(false);
+    }
+    let (mesh, _) = model.plan_mesh();
+    let need = iterative_bytes(&mesh);
+    if need <= limit {
+        return Ok(true);
+    }
+    Err(Error::TooLarge {
+        what: format!(
+            "a {} model of {} × {} elements ({} nodes) on the iterative route",
+            mesh.symmetry_name(),
+            mesh.nx,
+            mesh.ny,
+            mesh.n_nodes()
+        ),
+        need_gib: need / GIB,
+        limit_gib: limit / GIB,
+        hint: "memory grows about linearly with the nodes here: use fewer elements, or an even mesh with symmetric loads".into(),
+    })
+}
+
+/// Refuse a (model, method) pair that will not fit in `limit` bytes on the dense route.
 pub fn check(model: &Model, method: &Method, limit: f64) -> Result<()> {
     let (mesh, _) = model.plan_mesh();
     check_mesh(

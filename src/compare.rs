@@ -51,6 +51,7 @@ pub fn compare(problem: &Problem) -> Result<Comparison> {
         Method::Qp(s) => Method::Qp(s.clone()),
         _ => Method::qp(),
     };
+    // One assembly for both: the QP needs the dense T, so the route is the QP's (dense).
     for m in [&penalty, &qp] {
         budget::check(&problem.model, m, problem.memory_limit)?;
     }

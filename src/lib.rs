@@ -48,7 +48,7 @@ pub mod summary;
 
 pub use analysis::{analyse, Analysis};
 pub use error::{Error, Result};
-pub use method::{Method, PenaltySettings, QpSettings};
+pub use method::{CgSettings, Method, PenaltySettings, QpSettings, Route};
 pub use model::Model;
 pub use operators::Operators;
 pub use scene::Problem;

@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
-use liftoff::method::{Contact, MethodKind, QpForm};
+use liftoff::method::{Contact, MethodKind, QpForm, Route};
 use liftoff::model::{ConstraintPoints, SymmetryMode};
 use liftoff::output::{self, tables};
 use liftoff::scene::{PenaltySpec, SceneFile};
@@ -69,6 +69,11 @@ struct Overrides {
     /// primal (overrides [solver] qp_form).
     #[arg(long, value_enum)]
     qp_form: Option<QpForm>,
+    /// How half-space penalty steps are solved: auto (dense up to 1500 pressure nodes), dense
+    /// (dense T, direct factorisations) or iterative (T by FFT, conjugate gradients; penalty and
+    /// bonded contact) (overrides [solver] route).
+    #[arg(long, value_enum)]
+    solver: Option<Route>,
 }
 
 impl Overrides {
@@ -84,6 +89,9 @@ impl Overrides {
         }
         if let Some(f) = self.qp_form {
             file.solver.qp_form = f;
+        }
+        if let Some(r) = self.solver {
+            file.solver.route = r;
         }
     }
 }

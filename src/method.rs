@@ -39,6 +39,76 @@ pub struct PenaltySettings {
     pub auto: bool,
     /// Cap on linear solves per ε̄.
     pub max_iterations: usize,
+    /// The conjugate-gradient solves of the iterative route (half-space with a Toeplitz T).
+    pub cg: CgSettings,
+}
+
+/// Settings of the conjugate-gradient solves of the iterative route
+/// ([`crate::solve::iterative`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CgSettings {
+    /// Stop when the preconditioned residual √(rᵀM⁻¹r) (projected on the equilibrium subspace)
+    /// falls below this fraction of the right-hand side's.
+    pub tolerance: f64,
+    /// The tolerance of the penalty steps whose set is still changing: the set is confirmed by
+    /// a solve at `tolerance`, so this only has to get the signs of the pressures right.
+    pub loose_tolerance: f64,
+    /// Cap on iterations per linear solve.
+    pub max_iterations: usize,
+    /// λ: the preconditioner's Winkler springs are λ·diag(T).
+    pub spring_scale: f64,
+}
+
+impl Default for CgSettings {
+    /// Tolerance 1e-10 (σ to ~1e-9 of the direct solve), 1e-5 while the set moves, at most
+    /// 2000 iterations, λ = 0.05 (the fewest iterations on the paper's half-space case from 64
+    /// to 128 elements per side among λ = 0.01 … 4, BENCHMARKS.md).
+    fn default() -> Self {
+        Self {
+            tolerance: 1e-10,
+            loose_tolerance: 1e-5,
+            max_iterations: 2000,
+            spring_scale: 0.05,
+        }
+    }
+}
+
+/// How the half-space compliance T is held and the penalty steps solved (the scene's
+/// `[solver] route`, the CLI's `--solver`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, clap::ValueEnum)]
+#[serde(rename_all = "kebab-case")]
+pub enum Route {
+    /// Dense up to [`Route::AUTO_DENSE_NODES`] pressure nodes (and always for the QP), iterative
+    /// beyond.
+    Auto,
+    /// Dense T and Schur complement, direct factorisations: memory ∝ n_σ², time ∝ n_σ³.
+    Dense,
+    /// T applied by FFT, each penalty step by preconditioned conjugate gradients: memory and
+    /// time per iteration ∝ n_σ (log n_σ). Penalty and bonded contact only.
+    Iterative,
+}
+
+crate::names!(Route, Auto => "auto", Dense => "dense", Iterative => "iterative");
+
+impl Route {
+    /// Largest half-space model (pressure nodes) that `auto` solves densely.
+    pub const AUTO_DENSE_NODES: usize = 1500;
+
+    /// Whether the half-space T of a model with `n_sigma` pressure nodes is held as a Toeplitz
+    /// operator when solved with `method`. Refuses the iterative route for the QP, which needs
+    /// the dense Schur complement.
+    pub fn iterative(self, n_sigma: usize, method: &Method) -> Result<bool> {
+        let qp = matches!(method, Method::Qp(_));
+        match self {
+            Route::Dense => Ok(false),
+            Route::Iterative if qp => Err(Error::invalid(
+                "solver.route",
+                "the iterative route solves penalty steps and bonded contact; the QP needs the dense route (route = \"dense\" or \"auto\")",
+            )),
+            Route::Iterative => Ok(true),
+            Route::Auto => Ok(!qp && n_sigma > Self::AUTO_DENSE_NODES),
+        }
+    }
 }
 
 impl Default for PenaltySettings {
@@ -48,6 +118,7 @@ impl Default for PenaltySettings {
             epsilon: 1e-5,
             auto: true,
             max_iterations: 50,
+            cg: CgSettings::default(),
         }
     }
 }
@@ -75,6 +146,33 @@ impl PenaltySettings {
             return Err(Error::invalid(
                 "solver.max_iterations",
                 format!("must lie in 1..=10000, got {}", self.max_iterations),
+            ));
+        }
+        self.cg.validate()
+    }
+}
+
+impl CgSettings {
+    /// Check the settings.
+    pub fn validate(&self) -> Result<()> {
+        for (name, v) in [
+            ("solver.cg_tolerance", self.tolerance),
+            ("solver.cg_loose_tolerance", self.loose_tolerance),
+        ] {
+            if !(v.is_finite() && v > 0.0 && v < 1.0) {
+                return Err(Error::invalid(name, format!("must lie in (0, 1), got {v}")));
+            }
+        }
+        if self.max_iterations < 1 {
+            return Err(Error::invalid(
+                "solver.cg_max_iterations",
+                "must be at least 1",
+            ));
+        }
+        if !(self.spring_scale.is_finite() && self.spring_scale > 0.0) {
+            return Err(Error::invalid(
+                "solver.cg_spring_scale",
+                format!("must be positive, got {}", self.spring_scale),
             ));
         }
         Ok(())

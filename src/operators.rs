@@ -8,7 +8,7 @@
 //!
 //! Nothing here depends on the solution method; methods only read this value.
 
-use crate::foundation::{self, halfspace, winkler, Compliance, FoundationKind};
+use crate::foundation::{self, fft, halfspace, winkler, Compliance, FoundationKind};
 use crate::mesh::{Dof, DofMap, Mesh};
 use crate::model::{ConstraintPoints, Load, Model};
 use crate::plate::{self, Section};
@@ -71,8 +71,16 @@ fn mat_vec(a: sprs::CsMatView<'_, f64>, x: &[f64]) -> Vec<f64> {
 
 impl Operators {
     /// Assemble all operators of a model. Knows nothing of the method that will use them;
-    /// check the memory budget ([`crate::budget::check`]) first for large models.
+    /// check the memory budget ([`crate::budget::check`]) first for large models. A half-space
+    /// T is dense; [`Operators::assemble_with`] chooses.
     pub fn assemble(model: &Model) -> Self {
+        Self::assemble_with(model, false)
+    }
+
+    /// Assemble with the half-space T held as a dense matrix (`toeplitz` false) or as the
+    /// matrix-free FFT operator of the iterative route (true; [`crate::method::Route`] decides
+    /// from the size and the method). Winkler T is diagonal either way.
+    pub fn assemble_with(model: &Model, toeplitz: bool) -> Self {
         let (mesh, notes) = model.plan_mesh();
         let g = &model.groups;
         let section = Section {
@@ -81,7 +89,7 @@ impl Operators {
             poisson: g.nu,
         };
         let c = g.mu * g.gamma;
-        Self::build(
+        let mut ops = Self::build_with(
             mesh,
             section,
             g.foundation,
@@ -89,7 +97,22 @@ impl Operators {
             &model.loads,
             model.constraint,
             notes,
-        )
+            toeplitz,
+        );
+        if toeplitz && g.foundation == FoundationKind::HalfSpace {
+            ops.notes.push(format!(
+                "iterative route: T applied by FFT on a {} × {} padded grid, penalty steps by preconditioned conjugate gradients",
+                match &ops.t {
+                    Compliance::Toeplitz(t) => t.padded()[0],
+                    _ => 0,
+                },
+                match &ops.t {
+                    Compliance::Toeplitz(t) => t.padded()[1],
+                    _ => 0,
+                }
+            ));
+        }
+        ops
     }
 
     /// Assemble from parts: a mesh, a section, the foundation and its constant
@@ -104,6 +127,30 @@ impl Operators {
         constraint: ConstraintPoints,
         notes: Vec<String>,
     ) -> Self {
+        Self::build_with(
+            mesh,
+            section,
+            foundation,
+            foundation_constant,
+            loads,
+            constraint,
+            notes,
+            false,
+        )
+    }
+
+    /// [`Operators::build`] with the half-space T dense or as an FFT operator (`toeplitz`).
+    #[allow(clippy::too_many_arguments)]
+    pub fn build_with(
+        mesh: Mesh,
+        section: Section,
+        foundation: FoundationKind,
+        foundation_constant: f64,
+        loads: &[Load],
+        constraint: ConstraintPoints,
+        notes: Vec<String>,
+        toeplitz: bool,
+    ) -> Self {
         let dofs = DofMap::new(&mesh);
         let k = plate::assemble_stiffness(&mesh, &dofs, &section);
         let f = load_vector(&mesh, &dofs, loads);
@@ -114,7 +161,14 @@ impl Operators {
             ),
             FoundationKind::HalfSpace => (
                 foundation::coupling(&mesh, &dofs, false),
-                halfspace::compliance(&mesh, foundation_constant),
+                if toeplitz {
+                    Compliance::Toeplitz(Box::new(fft::ToeplitzCompliance::new(
+                        &mesh,
+                        foundation_constant,
+                    )))
+                } else {
+                    halfspace::compliance(&mesh, foundation_constant)
+                },
             ),
         };
         let constraints = constraint_points(&mesh, constraint);

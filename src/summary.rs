@@ -145,7 +145,13 @@ impl Summary {
             iterations: sol.iterations,
             time_s: times,
             method_time_s: named(sol.info.timings.named()),
-            solver_info: sol.info.qp.map(|q| named(q.named())).unwrap_or_default(),
+            solver_info: {
+                let mut info = sol.info.qp.map(|q| named(q.named())).unwrap_or_default();
+                if let Some(n) = sol.info.cg_iterations {
+                    info.insert("cg_iterations".into(), n as f64);
+                }
+                info
+            },
             w_max: report.w_max,
             V_max: report.v_max,
             V_center: report.v_center,

@@ -57,6 +57,7 @@ impl RandomScene {
         Problem {
             model: self.model(mirror_s),
             method,
+            route: liftoff::Route::Auto,
             memory_limit: liftoff::budget::default_memory_limit(),
         }
     }

@@ -24,6 +24,7 @@ fn paper_plate(foundation: FoundationKind, elements: usize, memory_limit: f64) -
     Problem {
         model,
         method: Method::penalty(),
+        route: liftoff::Route::Auto,
         memory_limit,
     }
 }

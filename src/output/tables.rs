@@ -154,8 +154,12 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
     if !s.history.is_empty() {
         l.push("  penalty iterations (constraint points in the penalised, lifted set):".into());
         for it in &s.history {
+            // The iterative route adds the conjugate-gradient count and final residual.
+            let cg = it.cg.map_or(String::new(), |c| {
+                format!(", CG {:>4} it. (residual {:.1e})", c.iterations, c.residual)
+            });
             l.push(format!(
-                "    step {:>3}: {:>6} penalised, {:>6} entered, {:>6} left, min σ {:.3e}",
+                "    step {:>3}: {:>6} penalised, {:>6} entered, {:>6} left, min σ {:.3e}{cg}",
                 it.step,
                 it.penalised,
                 it.entered,

@@ -209,6 +209,7 @@ impl Case {
         Ok(Problem {
             model: self.model(refine)?,
             method: self.method(kind),
+            route: crate::method::Route::Auto,
             memory_limit: default_memory_limit(),
         })
     }

@@ -18,7 +18,7 @@ pub use builder::ModelBuilder;
 pub use spec::*;
 
 use crate::error::{Error, Result};
-use crate::method::Method;
+use crate::method::{Method, Route};
 use crate::model::Model;
 
 /// A validated scene: what to solve, how, and within how much memory.
@@ -28,6 +28,8 @@ pub struct Problem {
     pub model: Model,
     /// The method of `[solver]`.
     pub method: Method,
+    /// How the half-space penalty steps are solved (`[solver] route`).
+    pub route: Route,
     /// Memory the solver may use, bytes.
     pub memory_limit: f64,
 }

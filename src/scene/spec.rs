@@ -3,7 +3,7 @@
 use serde::Deserialize;
 
 use crate::foundation::FoundationKind;
-use crate::method::{Contact, MethodKind, QpForm};
+use crate::method::{Contact, MethodKind, QpForm, Route};
 use crate::model::{ConstraintPoints, SymmetryMode};
 
 /// `[plate]` in SI units.
@@ -171,6 +171,14 @@ pub struct SolverSpec {
     /// "schur", "lifted" or "primal".
     #[serde(default = "default_qp_form")]
     pub qp_form: QpForm,
+    /// How half-space penalty steps are solved: "auto" (default: dense up to 1500 pressure
+    /// nodes, iterative beyond), "dense" or "iterative" (T by FFT, conjugate gradients).
+    #[serde(default = "default_route")]
+    pub route: Route,
+}
+
+fn default_route() -> Route {
+    Route::Auto
 }
 
 fn default_qp_form() -> QpForm {
@@ -200,6 +208,7 @@ impl Default for SolverSpec {
             max_iterations: default_max_iterations(),
             memory_limit_gib: None,
             qp_form: default_qp_form(),
+            route: default_route(),
         }
     }
 }

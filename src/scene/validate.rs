@@ -470,6 +470,7 @@ pub fn problem(file: &SceneFile) -> Result<Problem> {
     Ok(Problem {
         model,
         method,
+        route: file.solver.route,
         memory_limit,
     })
 }

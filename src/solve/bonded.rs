@@ -64,7 +64,8 @@ pub fn lumped_coupling(ops: &Operators) -> Result<Vec<(usize, f64)>> {
 pub fn solve(ops: &Operators) -> Result<Solution> {
     match &ops.t {
         Compliance::Diagonal(t) => solve_springs(ops, t),
-        Compliance::Dense(_) | Compliance::Toeplitz(_) => solve_schur(ops),
+        Compliance::Dense(_) => solve_schur(ops),
+        Compliance::Toeplitz(_) => solve_iterative(ops),
     }
 }
 
@@ -219,6 +220,37 @@ fn solve_schur(ops: &Operators) -> Result<Solution> {
                 total: t0.elapsed().as_secs_f64(),
                 ..Timings::default()
             },
+            ..SolveInfo::default()
+        },
+    })
+}
+
+/// The bonded half-space by conjugate gradients on the Schur system with a matrix-free T: the
+/// penalty iteration's first step ([`super::iterative`]).
+fn solve_iterative(ops: &Operators) -> Result<Solution> {
+    let t0 = Instant::now();
+    let mut sys = super::iterative::IterativeSchur::new(ops, Default::default())?;
+    let rows: Vec<Vec<(usize, f64)>> = Vec::new();
+    let weights: Vec<f64> = Vec::new();
+    let (u, sigma, alpha, cg) = sys.solve(ops, &rows, &weights, false)?;
+    finite(&u, "bonded half-space solve (iterative)")?;
+    let gap = discrete_gap(ops, &u, &sigma);
+    Ok(Solution {
+        method: Method::Bonded,
+        u,
+        sigma,
+        gap,
+        rigid: alpha,
+        status: Status::Converged,
+        iterations: 1,
+        history: Vec::new(),
+        info: SolveInfo {
+            timings: Timings {
+                plate_factor: Some(sys.time_plate),
+                total: t0.elapsed().as_secs_f64(),
+                ..Timings::default()
+            },
+            cg_iterations: Some(cg.iterations),
             ..SolveInfo::default()
         },
     })

@@ -5,6 +5,7 @@
 //! leave nothing to report (a factorisation breaking down, a problem too large) are errors.
 
 pub mod bonded;
+pub mod iterative;
 pub mod linalg;
 pub mod low_rank;
 pub mod penalty;
@@ -105,6 +106,8 @@ pub struct Iteration {
     pub left: usize,
     /// Most negative pressure at a constraint point.
     pub min_pressure: f64,
+    /// The conjugate-gradient solve of the step (iterative route only).
+    pub cg: Option<iterative::CgReport>,
 }
 
 /// Wall-clock times of a method's phases, seconds; a phase the method does not have is None.
@@ -206,6 +209,9 @@ pub struct SolveInfo {
     pub penalty_stages: Vec<PenaltyStage>,
     /// What the method decided on its own (a fall-back, say), for the report's notes.
     pub notes: Vec<String>,
+    /// Conjugate-gradient iterations over all linear solves (iterative route; each step's count
+    /// and residual are in the history).
+    pub cg_iterations: Option<usize>,
 }
 
 /// What every method returns.

@@ -25,6 +25,7 @@ use faer::Mat;
 
 use super::bonded::finite;
 use super::bonded::{diagonal_positions, lumped_coupling, saddle_solve, SchurSystem};
+use super::iterative::{CgReport, CgSettings, IterativeSchur};
 use super::linalg::{faer_view, sparse_solve, SparseCholesky, SparseFactor};
 use super::low_rank::LowRankSchur;
 use super::{discrete_gap, Iteration, PenaltyStage, Solution, SolveInfo, Status, Timings};
@@ -65,10 +66,12 @@ enum Backend {
         symbolic: SymbolicLu<usize>,
     },
     Schur(Box<SchurSystem>, LowRankSchur),
+    /// Matrix-free T (FFT products) and conjugate gradients ([`super::iterative`]).
+    Iterative(Box<IterativeSchur>),
 }
 
 impl Backend {
-    fn new(ops: &Operators) -> Result<Self> {
+    fn new(ops: &Operators, cg: CgSettings) -> Result<Self> {
         match (&ops.t, ops.constraints.kind) {
             (Compliance::Diagonal(t), ConstraintPoints::Nodal) => {
                 let k = ops.k.clone();
@@ -132,7 +135,10 @@ impl Backend {
                     symbolic,
                 })
             }
-            (Compliance::Dense(_) | Compliance::Toeplitz(_), _) => Ok(Backend::Schur(
+            (Compliance::Toeplitz(_), _) => {
+                Ok(Backend::Iterative(Box::new(IterativeSchur::new(ops, cg)?)))
+            }
+            (Compliance::Dense(_), _) => Ok(Backend::Schur(
                 Box::new(SchurSystem::new(ops)?),
                 LowRankSchur::new(),
             )),
@@ -146,18 +152,19 @@ impl Backend {
         rows: &[Vec<(usize, f64)>],
         penalised: &[bool],
         epsilon: f64,
-    ) -> Result<(Vec<f64>, Vec<f64>, Vec<f64>)> {
+        loose: bool,
+    ) -> Result<(Vec<f64>, Vec<f64>, Vec<f64>, Option<CgReport>)> {
+        if let Backend::Iterative(sys) = self {
+            let weights = penalty_weights(ops, penalised, epsilon);
+            let (u, sigma, alpha, report) = sys.solve(ops, rows, &weights, loose)?;
+            return Ok((u, sigma, alpha, Some(report)));
+        }
         if let Backend::Schur(sys, low_rank) = self {
-            let scale = ops.foundation_constant / epsilon;
-            let weights: Vec<f64> = penalised
-                .iter()
-                .zip(&ops.constraints.weights)
-                .map(|(&p, &w)| if p { w * scale } else { 0.0 })
-                .collect();
+            let weights = penalty_weights(ops, penalised, epsilon);
             let solver = low_rank.prepare(&sys.s, rows, &weights)?;
             let (sigma, alpha) = saddle_solve(&solver, &sys.h, &sys.c, &sys.rf)?;
             let u = sys.displacements(ops, &sigma, &alpha);
-            return Ok((u, sigma, alpha));
+            return Ok((u, sigma, alpha, None));
         }
         let extra = penalty_entries(ops, rows, penalised, epsilon);
         let extra = &extra[..];
@@ -210,7 +217,7 @@ impl Backend {
                     .zip(&comp)
                     .map(|(&(eq, b), &c)| b * u[eq] / c)
                     .collect();
-                Ok((u, sigma, Vec::new()))
+                Ok((u, sigma, Vec::new(), None))
             }
             Backend::Saddle {
                 m,
@@ -247,14 +254,24 @@ impl Backend {
                 lu.solve_in_place(rhs.as_mut());
                 let u = (0..n).map(|i| rhs[(i, 0)]).collect();
                 let sigma = (n..total).map(|i| rhs[(i, 0)]).collect();
-                Ok((u, sigma, Vec::new()))
+                Ok((u, sigma, Vec::new(), None))
             }
-            Backend::Schur(..) => Err(Error::numerical(
+            Backend::Schur(..) | Backend::Iterative(..) => Err(Error::numerical(
                 "penalty",
-                "the Schur backend is solved above",
+                "the Schur and iterative backends are solved above",
             )),
         }
     }
+}
+
+/// d_k = c w_k / ε̄ on the penalised constraint points, 0 elsewhere.
+fn penalty_weights(ops: &Operators, penalised: &[bool], epsilon: f64) -> Vec<f64> {
+    let scale = ops.foundation_constant / epsilon;
+    penalised
+        .iter()
+        .zip(&ops.constraints.weights)
+        .map(|(&p, &w)| if p { w * scale } else { 0.0 })
+        .collect()
 }
 
 /// Up to this many changed springs since the last factorisation, a step is solved with the old
@@ -373,9 +390,12 @@ fn stage(
     let mut seen: Vec<Vec<bool>> = vec![penalised.clone()];
     let mut status = Status::IterationLimit { limit: cap };
     let mut last = None;
+    // The iterative route solves to a loose tolerance while the set is still moving and to the
+    // tight one once it repeats (or cycles): only a tight solve can confirm the set.
+    let mut loose = matches!(backend, Backend::Iterative(_));
     for _ in 0..cap {
         let ts = Instant::now();
-        let (u, sigma, alpha) = backend.solve(ops, rows, &penalised, epsilon)?;
+        let (u, sigma, alpha, cg) = backend.solve(ops, rows, &penalised, epsilon, loose)?;
         *t_solves += ts.elapsed().as_secs_f64();
         finite(&u, "penalty iteration")?;
         finite(&sigma, "penalty iteration")?;
@@ -399,6 +419,7 @@ fn stage(
             entered,
             left,
             min_pressure: gs.iter().cloned().fold(f64::INFINITY, f64::min),
+            cg,
         });
         last = Some((u, sigma, alpha));
         if count == n_c {
@@ -407,8 +428,17 @@ fn stage(
             ));
         }
         if next == penalised {
+            if loose {
+                loose = false;
+                continue;
+            }
             status = Status::Converged;
             break;
+        }
+        if loose && seen.contains(&next) {
+            // An inexact solve may revisit a set: decide cycling on tight solves only.
+            loose = false;
+            seen = vec![penalised.clone()];
         }
         if let Some(pos) = seen.iter().position(|s| *s == next) {
             status = Status::Cycling {
@@ -478,7 +508,7 @@ fn tension_check(ops: &Operators, sigma: &[f64], epsilon: f64) -> Status {
 /// numeric factor, for Woodbury updates) is reused across stages.
 pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
     let t0 = Instant::now();
-    let mut backend = Backend::new(ops)?;
+    let mut backend = Backend::new(ops, settings.cg)?;
     let t_setup = t0.elapsed().as_secs_f64();
     let rows = constraint_rows(ops);
     let n_c = ops.constraints.g.rows();
@@ -521,6 +551,7 @@ pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
         }
     };
     let gap = discrete_gap(ops, &end.u, &end.sigma);
+    let cg_iterations = cg_total(&history);
     Ok(Solution {
         method: Method::Penalty(PenaltySettings {
             epsilon,
@@ -541,8 +572,17 @@ pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
                 ..Timings::default()
             },
             qp: None,
+            cg_iterations,
             penalty_stages: stages,
             notes: Vec::new(),
         },
     })
+}
+
+/// Conjugate-gradient iterations over the steps of an iterative-route solve (None otherwise).
+fn cg_total(history: &[Iteration]) -> Option<usize> {
+    history
+        .iter()
+        .map(|it| it.cg.map(|c| c.iterations))
+        .sum::<Option<usize>>()
 }

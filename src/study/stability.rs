@@ -6,11 +6,9 @@ use std::time::Instant;
 use serde::Serialize;
 
 use super::log_space;
-use crate::budget;
 use crate::foundation::FoundationKind;
 use crate::method::{Method, MethodKind, PenaltySettings};
 use crate::model::Load;
-use crate::operators::Operators;
 use crate::post;
 use crate::scene::Problem;
 use crate::solve;
@@ -180,8 +178,13 @@ pub fn stability_run(case: &StabilityCase<'_>) -> StabilityRow {
     }
     let foundation = model.groups.foundation.name();
     let t = Instant::now();
-    let result = budget::check(&model, &method, case.base.memory_limit).and_then(|_| {
-        let ops = Operators::assemble(&model);
+    let result = crate::analysis::prepare(
+        &model,
+        &method,
+        crate::method::Route::Auto,
+        case.base.memory_limit,
+    )
+    .and_then(|ops| {
         let sol = solve::solve(&ops, &method)?;
         let rep = post::report(&model, &ops, &sol);
         Ok((sol, rep))
