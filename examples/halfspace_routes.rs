@@ -5,7 +5,10 @@
 //! Γ_h = 0.25e-3, Δ = 0.002857, ε̄ = 1e-5 fixed, nodal constraints, quarter model.
 //!
 //!     cargo run --release --example halfspace_routes -- [--sizes 32,64,128] [--dense-max 128]
-//!         [--springs 1] [--tol 1e-10]
+//!         [--springs 0.05] [--tol 1e-10] [--loose 1e-5] [--no-iterative]
+//!
+//! Run one route per process (`--dense-max 0`, or `--no-iterative`) to read its peak memory
+//! (VmHWM, printed) on its own.
 //!
 //! For each size (elements per side of the whole plate) it assembles once per route, runs the
 //! penalty iteration and prints one line per route, with the per-step CG iterations, and the
@@ -58,8 +61,10 @@ fn main() {
     let args: Vec<String> = std::env::args().collect();
     let sizes = list(&args, "--sizes", &[32.0, 64.0, 128.0]);
     let dense_max: usize = arg(&args, "--dense-max").unwrap_or(128);
-    let springs = list(&args, "--springs", &[1.0]);
+    let springs = list(&args, "--springs", &[0.05]);
     let tol: f64 = arg(&args, "--tol").unwrap_or(1e-10);
+    let loose: f64 = arg(&args, "--loose").unwrap_or(1e-5);
+    let iterative = !args.iter().any(|a| a == "--no-iterative");
     let text = liftoff::examples::scene("paper-halfspace").unwrap_or_default();
     for &n in &sizes {
         let n = n as usize;
@@ -92,13 +97,14 @@ fn main() {
                 Err(e) => println!("{n:4} dense: {e}"),
             }
         }
-        for &lambda in &springs {
+        for &lambda in springs.iter().filter(|_| iterative) {
             let t0 = Instant::now();
             let ops = Operators::assemble_with(&problem.model, true);
             let ta = t0.elapsed().as_secs_f64();
             let settings = PenaltySettings {
                 cg: CgSettings {
                     tolerance: tol,
+                    loose_tolerance: loose,
                     spring_scale: lambda,
                     ..CgSettings::default()
                 },

@@ -91,8 +91,6 @@ pub struct IterativeSchur {
     pub time_plate: f64,
     /// Preconditioner factorisations made.
     pub factorisations: usize,
-    /// Seconds in T products, plate products and preconditioner solves.
-    pub clock: std::cell::Cell<[f64; 3]>,
 }
 
 impl IterativeSchur {
@@ -164,7 +162,6 @@ impl IterativeSchur {
             warm: None,
             time_plate,
             factorisations: 0,
-            clock: std::cell::Cell::new([0.0; 3]),
         })
     }
 
@@ -176,7 +173,6 @@ impl IterativeSchur {
         weights: &[f64],
         p: &[f64],
     ) -> Vec<f64> {
-        let t0 = Instant::now();
         // The FFT product and the plate solve are independent: one on each core.
         let kinv = &self.kinv;
         let (mut y, plate) = std::thread::scope(|s| {
@@ -187,12 +183,6 @@ impl IterativeSchur {
                 Err(panic) => std::panic::resume_unwind(panic),
             }
         });
-        let t1 = Instant::now();
-        self.clock.set([
-            self.clock.get()[0] + (t1 - t0).as_secs_f64(),
-            self.clock.get()[1],
-            self.clock.get()[2],
-        ]);
         for (yi, v) in y.iter_mut().zip(&plate) {
             *yi += v;
         }
@@ -285,11 +275,7 @@ impl IterativeSchur {
     /// Cᵀz = 0. The projection is applied twice: the second pass removes the round-off of the
     /// first (Gould, Hribar & Nocedal's iterative refinement), which otherwise lets Cᵀσ drift.
     fn project(&self, pre: &Preconditioner, r: &[f64]) -> Vec<f64> {
-        let t0 = Instant::now();
         let mut z = self.precondition(pre, r);
-        let c = self.clock.get();
-        self.clock
-            .set([c[0], c[1], c[2] + t0.elapsed().as_secs_f64()]);
         let m = self.c.len();
         for _ in 0..2 {
             let mut rhs = Mat::<f64>::from_fn(m, 1, |a, _| dot(&self.c[a], &z));
@@ -419,12 +405,6 @@ impl IterativeSchur {
         }
         let true_residual =
             dot(&res, &res).sqrt() / dot(&self.h, &self.h).max(f64::MIN_POSITIVE).sqrt();
-        if std::env::var("LIFTOFF_CG_DEBUG").is_ok() {
-            let eq: Vec<f64> = (0..m)
-                .map(|a| dot(&self.c[a], &sigma) - self.rf[a])
-                .collect();
-            eprintln!("cg {iterations} res {residual:.2e} true {true_residual:.2e} eq {eq:?} rf {:?} clock T/plate/M {:?}", self.rf, self.clock.get());
-        }
         let u = self.displacements(ops, &sigma, &alpha);
         self.warm = Some(sigma.clone());
         Ok((
