@@ -18,7 +18,11 @@ fn max_abs(v: &[f64]) -> f64 {
 }
 
 fn rel_diff(a: &[f64], b: &[f64]) -> f64 {
-    let d = a.iter().zip(b).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
+    let d = a
+        .iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max);
     d / max_abs(b)
 }
 
@@ -28,7 +32,10 @@ fn both(problem: &Problem, method: &Method) -> (Solution, Solution, Operators) {
     let dense_ops = Operators::assemble_with(&problem.model, false);
     let iter_ops = Operators::assemble_with(&problem.model, true);
     assert!(
-        matches!(iter_ops.t, liftoff::foundation::Compliance::Toeplitz(_)),
+        matches!(
+            iter_ops.t.as_ref(),
+            liftoff::foundation::Compliance::Toeplitz(_)
+        ),
         "the iterative route holds T as an FFT operator"
     );
     let dense = liftoff::solve(&dense_ops, method).expect("dense route");
@@ -67,8 +74,16 @@ fn iterative_equals_dense_on_the_paper_case_at_32_and_64() {
         assert_same(&format!("paper case at {n}"), &ops, &dense, &iterative);
         // Every step's CG residual is reported and below the loose tolerance, the last one
         // below the tight one.
-        let last = iterative.history.last().and_then(|h| h.cg).expect("CG report");
-        assert!(last.residual <= 1e-10, "last step residual {}", last.residual);
+        let last = iterative
+            .history
+            .last()
+            .and_then(|h| h.cg)
+            .expect("CG report");
+        assert!(
+            last.residual <= 1e-10,
+            "last step residual {}",
+            last.residual
+        );
     }
 }
 
@@ -106,9 +121,16 @@ fn the_route_is_chosen_by_size_and_refused_for_the_qp() {
     let big = paper(256);
     let pen = Method::penalty();
     let limit = 16.0 * 1024f64.powi(3);
-    let toeplitz = |p: &Problem, m: &Method, r: Route| liftoff::budget::check_route(&p.model, m, r, limit);
-    assert!(!toeplitz(&small, &pen, Route::Auto).expect("fits"), "289 nodes: dense");
-    assert!(toeplitz(&big, &pen, Route::Auto).expect("fits"), "16 641 nodes: iterative");
+    let toeplitz =
+        |p: &Problem, m: &Method, r: Route| liftoff::budget::check_route(&p.model, m, r, limit);
+    assert!(
+        !toeplitz(&small, &pen, Route::Auto).expect("fits"),
+        "289 nodes: dense"
+    );
+    assert!(
+        toeplitz(&big, &pen, Route::Auto).expect("fits"),
+        "16 641 nodes: iterative"
+    );
     assert!(toeplitz(&small, &pen, Route::Iterative).expect("fits"));
     assert!(
         !liftoff::budget::toeplitz(&big.model, &Method::qp(), Route::Auto).expect("auto"),
@@ -128,12 +150,21 @@ fn the_route_is_chosen_by_size_and_refused_for_the_qp() {
 #[test]
 fn the_scene_and_the_analysis_follow_the_route() {
     let text = liftoff::examples::scene("paper-halfspace").unwrap_or_default();
-    let p = Problem::from_toml(&text.replace("constraint = \"nodal\"", "constraint = \"nodal\"\nroute = \"iterative\""))
-        .expect("scene with a route");
+    let p = Problem::from_toml(&text.replace(
+        "constraint = \"nodal\"",
+        "constraint = \"nodal\"\nroute = \"iterative\"",
+    ))
+    .expect("scene with a route");
     assert_eq!(p.route, Route::Iterative);
     let a = liftoff::analyse(&p).expect("analysis");
-    assert!(a.solution.info.cg_iterations.is_some(), "solved iteratively");
+    assert!(
+        a.solution.info.cg_iterations.is_some(),
+        "solved iteratively"
+    );
     assert!(a.summary.solver_info.contains_key("cg_iterations"));
-    let bad = text.replace("constraint = \"nodal\"", "constraint = \"nodal\"\nroute = \"fast\"");
+    let bad = text.replace(
+        "constraint = \"nodal\"",
+        "constraint = \"nodal\"\nroute = \"fast\"",
+    );
     assert!(Problem::from_toml(&bad).is_err(), "unknown route refused");
 }

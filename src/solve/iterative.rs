@@ -5,7 +5,7 @@
 //!
 //! A σ − C α = h,   Cᵀ σ = Rᵀ f,   A = T + BᵀK⁻B + Σ_k d_k g_k g_kᵀ,
 //!
-//! (h = BᵀK⁻f, C = BᵀR, d_k = c w_k/ε̄ on the penalised points, [`super::bonded`]). A is never
+//! (h = BᵀK⁻f − g₀ with the voids' initial gap g₀, C = BᵀR, d_k = c w_k/ε̄ on the penalised points, [`super::bonded`]). A is never
 //! formed: a product costs one FFT product with T ([`crate::foundation::fft`]), one solve with the
 //! plate factor (K factored once with its rigid modes fixed, [`PlateInverse`]) and the sparse
 //! penalty. The equality is kept by projected CG (Gould, Hribar & Nocedal 2001): the iterates
@@ -96,7 +96,7 @@ pub struct IterativeSchur {
 impl IterativeSchur {
     /// Factor the plate, form h, C, Rᵀf and analyse the preconditioner's pattern.
     pub fn new(ops: &Operators, settings: CgSettings) -> Result<Self> {
-        if !matches!(ops.t, Compliance::Toeplitz(_)) {
+        if !matches!(ops.t.as_ref(), Compliance::Toeplitz(_)) {
             return Err(Error::Unsupported(
                 "the iterative route needs the half-space compliance as a Toeplitz operator (assemble with the iterative route)".into(),
             ));
@@ -104,7 +104,13 @@ impl IterativeSchur {
         let t0 = Instant::now();
         let kinv = PlateInverse::new(ops)?;
         let time_plate = t0.elapsed().as_secs_f64();
-        let h = ops.bt_times(&kinv.apply(&ops.f));
+        // h = BᵀK⁻f − g₀: the voids' initial gap enters as g = Aσ − Cα − h.
+        let h = ops
+            .bt_times(&kinv.apply(&ops.f))
+            .iter()
+            .zip(&ops.gap0)
+            .map(|(a, g)| a - g)
+            .collect();
         let c: Vec<Vec<f64>> = ops.rigid.iter().map(|r| ops.bt_times(r)).collect();
         let rf = ops.rigid.iter().map(|r| dot(r, &ops.f)).collect();
         // Reduced K (fixed equations removed), as in `PlateInverse`.

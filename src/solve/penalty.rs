@@ -17,6 +17,7 @@
 //! solves later steps by low-rank updates of that factor ([`super::low_rank`]).
 
 use std::collections::HashMap;
+use std::sync::Arc;
 use std::time::Instant;
 
 use faer::linalg::solvers::Solve;
@@ -46,6 +47,14 @@ pub const TENSION_TOLERANCE: f64 = 1e-4;
 /// a plate balanced on one corner node of a Winkler bed needs 3 %.
 pub const TENSION_FORCE_TOLERANCE: f64 = 1e-3;
 
+/// The analysed Winkler spring system and its bonded factor (no penalty springs): where every
+/// penalty iteration on an assembly starts.
+struct SpringsStart {
+    chol: SparseCholesky,
+    factor: Arc<SparseFactor>,
+    springs: Vec<f64>,
+}
+
 /// Linear solver of one penalised bilateral problem.
 enum Backend {
     Springs {
@@ -56,7 +65,7 @@ enum Backend {
         t: Vec<f64>,
         chol: SparseCholesky,
         /// The last numeric factor and the spring stiffness per pressure node it was made with.
-        factored: Option<(SparseFactor, Vec<f64>)>,
+        factored: Option<(Arc<SparseFactor>, Vec<f64>)>,
     },
     Saddle {
         m: sprs::CsMat<f64>,
@@ -72,22 +81,41 @@ enum Backend {
 
 impl Backend {
     fn new(ops: &Operators, cg: CgSettings) -> Result<Self> {
-        match (&ops.t, ops.constraints.kind) {
+        match (ops.t.as_ref(), ops.constraints.kind) {
             (Compliance::Diagonal(t), ConstraintPoints::Nodal) => {
-                let k = ops.k.clone();
+                let k = (*ops.k).clone();
                 let diag = diagonal_positions(&k)?;
                 let base = k.data().to_vec();
                 let coupling = lumped_coupling(ops)?;
-                let order = crate::mesh::equation_order(&ops.mesh, &ops.dofs, |_| true);
-                let chol = SparseCholesky::analyse_ordered(&k, Some(&order))?;
+                // The bonded system of step 1 does not depend on the loads: analysed and
+                // factored once per assembly, shared by every load combination.
+                let (start, _) = ops.cache.get_or_try_init(|| -> Result<SpringsStart> {
+                    let order = crate::mesh::equation_order(&ops.mesh, &ops.dofs, |_| true);
+                    let chol = SparseCholesky::analyse_ordered(&k, Some(&order))?;
+                    let springs: Vec<f64> = coupling
+                        .iter()
+                        .zip(t)
+                        .map(|(&(_, b), &c)| b * b / c)
+                        .collect();
+                    let mut bonded = k.clone();
+                    for (j, &(eq, _)) in coupling.iter().enumerate() {
+                        bonded.data_mut()[diag[eq]] += springs[j];
+                    }
+                    let factor = Arc::new(chol.factor(&bonded, "bonded Winkler system")?);
+                    Ok(SpringsStart {
+                        chol,
+                        factor,
+                        springs,
+                    })
+                })?;
                 Ok(Backend::Springs {
                     k,
                     diag,
                     base,
                     coupling,
                     t: t.clone(),
-                    chol,
-                    factored: None,
+                    chol: start.chol.clone(),
+                    factored: Some((start.factor.clone(), start.springs.clone())),
                 })
             }
             (Compliance::Diagonal(t), ConstraintPoints::Gauss) => {
@@ -189,12 +217,18 @@ impl Backend {
                     .zip(&comp)
                     .map(|(&(_, b), &c)| b * b / c)
                     .collect();
+                // The voids' initial gap: σ_j = (b_j u_j − g₀_j) / c_j, so the springs pull
+                // with b_j g₀_j / c_j.
+                let mut rhs = ops.f.clone();
+                for ((&(eq, b), &c), &g0) in coupling.iter().zip(&comp).zip(&ops.gap0) {
+                    rhs[eq] += b * g0 / c;
+                }
                 let u = match factored {
                     Some((factor, old)) if changed(old, &springs).len() <= WOODBURY_MAX_RANK => {
                         let idx = changed(old, &springs);
                         woodbury_solve(
                             factor,
-                            &ops.f,
+                            &rhs,
                             &idx.iter()
                                 .map(|&j| (coupling[j].0, springs[j] - old[j]))
                                 .collect::<Vec<_>>(),
@@ -206,16 +240,17 @@ impl Backend {
                             k.data_mut()[diag[eq]] += springs[j];
                         }
                         let llt = chol.factor(k, "penalised Winkler system")?;
-                        let mut u = ops.f.clone();
+                        let mut u = rhs;
                         sparse_solve(&llt, &mut u);
-                        *factored = Some((llt, springs.clone()));
+                        *factored = Some((Arc::new(llt), springs.clone()));
                         u
                     }
                 };
                 let sigma = coupling
                     .iter()
                     .zip(&comp)
-                    .map(|(&(eq, b), &c)| b * u[eq] / c)
+                    .zip(&ops.gap0)
+                    .map(|((&(eq, b), &c), &g0)| (b * u[eq] - g0) / c)
                     .collect();
                 Ok((u, sigma, Vec::new(), None))
             }
@@ -250,6 +285,10 @@ impl Backend {
                 let mut rhs = Mat::<f64>::zeros(total, 1);
                 for (i, &fi) in ops.f.iter().enumerate() {
                     rhs[(i, 0)] = fi;
+                }
+                // Bᵀu − (T + Σ/ε̄)σ = g₀.
+                for (j, &g0) in ops.gap0.iter().enumerate() {
+                    rhs[(n + j, 0)] = g0;
                 }
                 lu.solve_in_place(rhs.as_mut());
                 let u = (0..n).map(|i| rhs[(i, 0)]).collect();
