@@ -53,7 +53,8 @@ impl StabilityParam {
                 // Winkler: sparse penalty up to 512 per side; the dense QP is refused beyond
                 // its limit.
                 FoundationKind::Winkler => vec![8.0, 16.0, 32.0, 64.0, 128.0, 256.0, 512.0],
-                // Half-space: dense for both methods; 512 per side is beyond memory for both.
+                // Half-space: the QP is dense and refused at 512 per side; the penalty takes
+                // the iterative route there (`Route::Auto`) and solves it.
                 FoundationKind::HalfSpace => vec![8.0, 16.0, 32.0, 64.0, 128.0, 512.0],
             },
         }
