@@ -261,7 +261,12 @@ fn solve_iterative(ops: &Operators) -> Result<Solution> {
     let mut sys = super::iterative::IterativeSchur::new(ops, Default::default())?;
     let rows: Vec<Vec<(usize, f64)>> = Vec::new();
     let weights: Vec<f64> = Vec::new();
-    let (u, sigma, alpha, cg) = sys.solve(ops, &rows, &weights, false)?;
+    let super::iterative::Step {
+        u,
+        sigma,
+        alpha,
+        cg,
+    } = sys.solve(ops, &rows, &weights, false)?;
     finite(&u, "bonded half-space solve (iterative)")?;
     let gap = discrete_gap(ops, &u, &sigma);
     Ok(Solution {

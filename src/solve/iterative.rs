@@ -52,6 +52,19 @@ pub struct CgReport {
     pub true_residual: f64,
 }
 
+/// The solution of one linear step.
+#[derive(Debug, Clone)]
+pub struct Step {
+    /// Plate dofs u = K⁻(f − Bσ) + Rα.
+    pub u: Vec<f64>,
+    /// Nodal pressures.
+    pub sigma: Vec<f64>,
+    /// Rigid-body amplitudes.
+    pub alpha: Vec<f64>,
+    /// How the conjugate gradients went.
+    pub cg: CgReport,
+}
+
 /// The preconditioner of one penalised set.
 struct Preconditioner {
     /// 1/D per pressure node.
@@ -321,7 +334,7 @@ impl IterativeSchur {
         rows: &[Vec<(usize, f64)>],
         weights: &[f64],
         loose: bool,
-    ) -> Result<(Vec<f64>, Vec<f64>, Vec<f64>, CgReport)> {
+    ) -> Result<Step> {
         let pre = self.preconditioner(rows, weights)?;
         let n = ops.n_sigma();
         let m = self.c.len();
@@ -372,7 +385,7 @@ impl IterativeSchur {
             }
             let ap = self.apply(ops, rows, weights, &p);
             let pap = dot(&p, &ap);
-            if !(pap > 0.0) {
+            if pap.is_nan() || pap <= 0.0 {
                 return Err(Error::numerical(
                     "iterative penalty step (conjugate gradients)",
                     format!("the Schur system is not positive definite on the equilibrium subspace (pᵀAp = {pap:e})"),
@@ -413,16 +426,16 @@ impl IterativeSchur {
             dot(&res, &res).sqrt() / dot(&self.h, &self.h).max(f64::MIN_POSITIVE).sqrt();
         let u = self.displacements(ops, &sigma, &alpha);
         self.warm = Some(sigma.clone());
-        Ok((
+        Ok(Step {
             u,
             sigma,
             alpha,
-            CgReport {
+            cg: CgReport {
                 iterations,
                 residual,
                 true_residual,
             },
-        ))
+        })
     }
 
     /// u = K⁻(f − Bσ) + Rα.

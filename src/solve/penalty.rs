@@ -181,11 +181,11 @@ impl Backend {
         penalised: &[bool],
         epsilon: f64,
         loose: bool,
-    ) -> Result<(Vec<f64>, Vec<f64>, Vec<f64>, Option<CgReport>)> {
+    ) -> Result<StepOut> {
         if let Backend::Iterative(sys) = self {
             let weights = penalty_weights(ops, penalised, epsilon);
-            let (u, sigma, alpha, report) = sys.solve(ops, rows, &weights, loose)?;
-            return Ok((u, sigma, alpha, Some(report)));
+            let step = sys.solve(ops, rows, &weights, loose)?;
+            return Ok((step.u, step.sigma, step.alpha, Some(step.cg)));
         }
         if let Backend::Schur(sys, low_rank) = self {
             let weights = penalty_weights(ops, penalised, epsilon);
@@ -302,6 +302,9 @@ impl Backend {
         }
     }
 }
+
+/// u, σ, α of a penalty step and, on the iterative route, its CG account.
+type StepOut = (Vec<f64>, Vec<f64>, Vec<f64>, Option<CgReport>);
 
 /// d_k = c w_k / ε̄ on the penalised constraint points, 0 elsewhere.
 fn penalty_weights(ops: &Operators, penalised: &[bool], epsilon: f64) -> Vec<f64> {
