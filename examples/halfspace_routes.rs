@@ -5,7 +5,7 @@
 //! Γ_h = 0.25e-3, Δ = 0.002857, ε̄ = 1e-5 fixed, nodal constraints, quarter model.
 //!
 //!     cargo run --release --example halfspace_routes -- [--sizes 32,64,128] [--dense-max 128]
-//!         [--springs 0.05] [--tol 1e-10] [--loose 1e-5] [--no-iterative]
+//!         [--springs 0.05] [--tol 1e-10] [--loose 1e-4] [--no-iterative] [--fine-plate]
 //!
 //! Run one route per process (`--dense-max 0`, or `--no-iterative`) to read its peak memory
 //! (VmHWM, printed) on its own.
@@ -61,10 +61,11 @@ fn main() {
     let args: Vec<String> = std::env::args().collect();
     let sizes = list(&args, "--sizes", &[32.0, 64.0, 128.0]);
     let dense_max: usize = arg(&args, "--dense-max").unwrap_or(128);
-    let springs = list(&args, "--springs", &[0.05]);
+    let springs = list(&args, "--springs", &[0.2]);
     let tol: f64 = arg(&args, "--tol").unwrap_or(1e-10);
-    let loose: f64 = arg(&args, "--loose").unwrap_or(1e-5);
+    let loose: f64 = arg(&args, "--loose").unwrap_or(1e-4);
     let iterative = !args.iter().any(|a| a == "--no-iterative");
+    let coarse = !args.iter().any(|a| a == "--fine-plate");
     let text = liftoff::examples::scene("paper-halfspace").unwrap_or_default();
     for &n in &sizes {
         let n = n as usize;
@@ -105,6 +106,7 @@ fn main() {
                 cg: CgSettings {
                     tolerance: tol,
                     loose_tolerance: loose,
+                    coarse_plate: coarse,
                     spring_scale: lambda,
                     ..CgSettings::default()
                 },

@@ -34,10 +34,10 @@ use std::time::Instant;
 use faer::Mat;
 
 use super::bonded::dot;
-use super::linalg::{dense_cholesky, sparse_solve, PlateInverse, SparseCholesky, SpdSolve};
+use super::linalg::{dense_cholesky, PlateInverse, SpdSolve};
+use super::springs::SpringPlate;
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
-use crate::mesh::Dof;
 pub use crate::method::CgSettings;
 use crate::operators::Operators;
 
@@ -87,17 +87,10 @@ pub struct IterativeSchur {
     pub c: Vec<Vec<f64>>,
     /// Rᵀf.
     pub rf: Vec<f64>,
-    /// Lumped coupling: for each pressure node, its reduced w equation (None when fixed) and ∫f_j.
-    lumped: Vec<(Option<usize>, f64)>,
     /// diag(T).
     t_diag: Vec<f64>,
-    /// K with the fixed equations removed (CSC), its diagonal positions and values.
-    k_red: sprs::CsMat<f64>,
-    k_diag_pos: Vec<usize>,
-    k_base: Vec<f64>,
-    chol: SparseCholesky,
-    /// Reduced index of each equation.
-    map: Vec<Option<usize>>,
+    /// The preconditioner's plate on springs.
+    springs: SpringPlate,
     /// The last step's σ, the next one's start.
     warm: Option<Vec<f64>>,
     /// Seconds spent factoring the plate.
@@ -126,58 +119,15 @@ impl IterativeSchur {
             .collect();
         let c: Vec<Vec<f64>> = ops.rigid.iter().map(|r| ops.bt_times(r)).collect();
         let rf = ops.rigid.iter().map(|r| dot(r, &ops.f)).collect();
-        // Reduced K (fixed equations removed), as in `PlateInverse`.
-        let n = ops.n_eq();
-        let mut fixed = vec![false; n];
-        for &e in &ops.fixed {
-            fixed[e] = true;
-        }
-        let mut map = vec![None; n];
-        let mut n_red = 0;
-        for (e, m) in map.iter_mut().enumerate() {
-            if !fixed[e] {
-                *m = Some(n_red);
-                n_red += 1;
-            }
-        }
-        let mut indptr = Vec::with_capacity(n_red + 1);
-        let mut indices = Vec::with_capacity(ops.k.nnz());
-        let mut data = Vec::with_capacity(ops.k.nnz());
-        indptr.push(0);
-        for (j, col) in ops.k.outer_iterator().enumerate() {
-            if map[j].is_none() {
-                continue;
-            }
-            for (i, &v) in col.iter() {
-                if let Some(r) = map[i] {
-                    indices.push(r);
-                    data.push(v);
-                }
-            }
-            indptr.push(indices.len());
-        }
-        let k_red = sprs::CsMat::new_csc((n_red, n_red), indptr, indices, data);
-        let k_diag_pos = super::bonded::diagonal_positions(&k_red)?;
-        let k_base = k_red.data().to_vec();
-        let order = crate::mesh::equation_order(&ops.mesh, &ops.dofs, |e| !fixed[e]);
-        let chol = SparseCholesky::analyse_ordered(&k_red, Some(&order))?;
-        let areas = crate::foundation::nodal_areas(&ops.mesh);
-        let lumped = (0..ops.n_sigma())
-            .map(|j| (ops.dofs.eq(j, Dof::W).and_then(|e| map[e]), areas[j]))
-            .collect();
+        let springs = SpringPlate::new(ops, settings.coarse_plate)?;
         Ok(Self {
             settings,
             kinv,
             h,
             c,
             rf,
-            lumped,
             t_diag: ops.t.diagonal(),
-            k_red,
-            k_diag_pos,
-            k_base,
-            chol,
-            map,
+            springs,
             warm: None,
             time_plate,
             factorisations: 0,
@@ -234,16 +184,7 @@ impl IterativeSchur {
             }
         }
         let inv_d: Vec<f64> = d.iter().map(|v| 1.0 / v).collect();
-        let mut k = self.k_red.clone();
-        k.data_mut().copy_from_slice(&self.k_base);
-        for (j, &(eq, a)) in self.lumped.iter().enumerate() {
-            if let Some(r) = eq {
-                k.data_mut()[self.k_diag_pos[r]] += a * a * inv_d[j];
-            }
-        }
-        let factor = self
-            .chol
-            .factor(&k, "iterative preconditioner (plate on springs)")?;
+        let factor = self.springs.factor(&inv_d)?;
         self.factorisations += 1;
         let minv_c: Vec<Vec<f64>> = self
             .c
@@ -266,28 +207,14 @@ impl IterativeSchur {
         self.spring_solve(&pre.inv_d, &pre.factor, r)
     }
 
-    /// M⁻¹ r = D⁻¹r − D⁻¹B_Lᵀ F⁻¹ B_L D⁻¹ r with F = K_r + B_L D⁻¹ B_Lᵀ.
+    /// M⁻¹ r ([`SpringPlate::solve`]).
     fn spring_solve(
         &self,
         inv_d: &[f64],
         factor: &super::linalg::SparseFactor,
         r: &[f64],
     ) -> Vec<f64> {
-        let z: Vec<f64> = r.iter().zip(inv_d).map(|(a, b)| a * b).collect();
-        let mut red = vec![0.0; self.k_red.rows()];
-        for (j, &(eq, a)) in self.lumped.iter().enumerate() {
-            if let Some(e) = eq {
-                red[e] += a * z[j];
-            }
-        }
-        sparse_solve(factor, &mut red);
-        z.iter()
-            .enumerate()
-            .map(|(j, &zj)| match self.lumped[j].0 {
-                Some(e) => zj - inv_d[j] * self.lumped[j].1 * red[e],
-                None => zj,
-            })
-            .collect()
+        self.springs.solve(inv_d, factor, r)
     }
 
     /// The projected preconditioned residual: M⁻¹r − M⁻¹C (CᵀM⁻¹C)⁻¹ CᵀM⁻¹r, which satisfies
@@ -451,8 +378,8 @@ impl IterativeSchur {
         u
     }
 
-    /// Number of equations of the reduced plate.
-    pub fn reduced_equations(&self) -> usize {
-        self.map.iter().filter(|m| m.is_some()).count()
+    /// "fine" or "coarse": the preconditioner's plate.
+    pub fn preconditioner_plate(&self) -> &'static str {
+        self.springs.kind
     }
 }

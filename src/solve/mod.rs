@@ -11,6 +11,7 @@ pub mod low_rank;
 pub mod penalty;
 pub mod qp;
 pub mod sparse_qp;
+pub mod springs;
 
 use crate::error::{Error, Result};
 use crate::method::{Method, QpForm};

@@ -471,7 +471,10 @@ fn stage(
         }
         if next == penalised {
             if loose {
+                // Confirm with a tight solve; sets met by inexact solves do not count as a
+                // cycle of the tight ones.
                 loose = false;
+                seen = vec![penalised.clone()];
                 continue;
             }
             status = Status::Converged;
