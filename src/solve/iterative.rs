@@ -14,20 +14,17 @@
 //! On that subspace BᵀK⁻B does not depend on which generalised inverse K⁻ is (Bp is orthogonal to
 //! the rigid modes), so the iteration sees the true plate compliance.
 //!
-//! **Preconditioner: the plate on springs.** M = D + B_LᵀK⁻B_L, with B_L the lumped coupling and D
-//! diagonal: λ·diag(T) (a Winkler bed whose springs match the half-space's own point stiffness)
-//! plus the diagonal of the penalty. By Woodbury,
-//!
-//! M⁻¹ = D⁻¹ − D⁻¹B_Lᵀ (K_r + B_L D⁻¹ B_Lᵀ)⁻¹ B_L D⁻¹,
-//!
-//! one sparse Cholesky of the plate with diagonal springs (K's own pattern, symbolic analysis
-//! once, a numeric factorisation per penalised set) and one solve with it per iteration. M holds
-//! the plate exactly — its free edges and its low, plate-dominated modes, which make A's
-//! condition number grow fastest — and the penalty exactly where it is diagonal (nodal
-//! constraints), so only the half-space's non-local part is left to the iteration.
+//! **Preconditioner: the plate on springs** ([`super::springs`]): M = D + QᵀK_p⁻Q with D the
+//! springs λ·diag(T) (a Winkler bed matched to the half-space's own point stiffness) plus the
+//! penalty's diagonal, and K_p the plate — by default on a grid twice as coarse. M holds the
+//! plate exactly at the long wavelengths where it dominates A (its free edges and its low
+//! modes) and the penalty exactly where it is diagonal (nodal constraints), so only the
+//! half-space's non-local part is left to the iteration; M⁻¹ is one sparse solve.
 //!
 //! Each step starts from the previous step's σ (warm start), so the later penalty steps, which
-//! change a few points, take few iterations.
+//! change a few points, take few iterations; steps whose set is still moving are solved to a
+//! loose tolerance ([`CgSettings::loose_tolerance`]), and the penalty iteration confirms a set
+//! only with a tight solve.
 
 use std::time::Instant;
 

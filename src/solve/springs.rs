@@ -227,3 +227,92 @@ impl SpringPlate {
             .collect()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ops(n: usize) -> Operators {
+        let text = crate::examples::scene("paper-halfspace").unwrap_or_default();
+        let p = crate::Problem::from_toml(
+            &text.replace("elements = [16, 16]", &format!("elements = [{n}, {n}]")),
+        )
+        .expect("paper scene");
+        Operators::assemble(&p.model)
+    }
+
+    /// M (M⁻¹ r) = r with M = D + QᵀK_p,r⁻¹Q formed densely from the plate's own matrix: checks
+    /// the Woodbury solve, the spread weights and the spring positions, for both plates.
+    #[test]
+    fn woodbury_solve_inverts_the_dense_preconditioner() {
+        let ops = ops(8);
+        let n = ops.n_sigma();
+        for coarse in [false, true] {
+            let sp = SpringPlate::new(&ops, coarse).expect("springs");
+            assert_eq!(sp.kind, if coarse { "coarse" } else { "fine" });
+            let inv_d: Vec<f64> = (0..n).map(|j| 1.0 + 0.1 * (j % 7) as f64).collect();
+            let factor = sp.factor(&inv_d).expect("factor");
+            let r: Vec<f64> = (0..n).map(|j| ((j * 37 % 11) as f64) - 5.0).collect();
+            let z = sp.solve(&inv_d, &factor, &r);
+            // Dense K_p,r and Q.
+            let m = sp.k.rows();
+            let mut k = faer::Mat::<f64>::zeros(m, m);
+            for (j, col) in sp.k.outer_iterator().enumerate() {
+                for (i, &v) in col.iter() {
+                    k[(i, j)] = v;
+                }
+            }
+            let mut q = faer::Mat::<f64>::zeros(m, n);
+            for (j, s) in sp.spread.iter().enumerate() {
+                for &(e, w) in s {
+                    q[(e, j)] += w;
+                }
+            }
+            // M z = D z + Qᵀ K⁻¹ (Q z).
+            let llt = crate::solve::linalg::dense_cholesky(&k, "test K").expect("SPD");
+            let mut qz = faer::Mat::<f64>::from_fn(m, 1, |e, _| {
+                (0..n).map(|j| q[(e, j)] * z[j]).sum::<f64>()
+            });
+            crate::solve::linalg::SpdSolve::solve_in_place(&llt, qz.as_mut());
+            let scale = r.iter().map(|v| v.abs()).fold(0.0, f64::max);
+            for j in 0..n {
+                let back: f64 = (0..m).map(|e| q[(e, j)] * qz[(e, 0)]).sum();
+                let mz = z[j] / inv_d[j] + back;
+                assert!(
+                    (mz - r[j]).abs() < 1e-9 * scale,
+                    "{} plate, node {j}: (M M⁻¹ r) = {mz} vs r = {}",
+                    sp.kind,
+                    r[j]
+                );
+            }
+        }
+    }
+
+    /// The coarse plate has a quarter of the elements and the coarse weights of each pressure
+    /// node sum to its area (the coarse functions are a partition of unity).
+    #[test]
+    fn coarse_spread_is_a_partition_of_the_nodal_areas() {
+        let ops = ops(16);
+        let sp = SpringPlate::new(&ops, true).expect("springs");
+        let areas = crate::foundation::nodal_areas(&ops.mesh);
+        // Quarter of 16 × 16: 8 × 8 fine elements, 4 × 4 coarse ones on 5 × 5 nodes: w on 25,
+        // ψx off the line x = 0 on 20, ψy off y = 0 on 20, less the fixed corner's w.
+        assert_eq!(sp.k.rows(), 25 + 20 + 20 - 1, "coarse equations");
+        for (j, s) in sp.spread.iter().enumerate() {
+            let sum: f64 = s.iter().map(|&(_, w)| w).sum();
+            // Equal to the area, or less next to the fixed corner, whose share is dropped.
+            assert!(
+                sum <= areas[j] * (1.0 + 1e-14),
+                "node {j}: {sum} > {}",
+                areas[j]
+            );
+        }
+        let interior = ops.mesh.node(3, 3);
+        let s: f64 = sp.spread[interior].iter().map(|&(_, w)| w).sum();
+        assert!(
+            (s - areas[interior]).abs() < 1e-15,
+            "interior node: {s} vs {}",
+            areas[interior]
+        );
+    }
+}
