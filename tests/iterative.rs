@@ -168,3 +168,19 @@ fn the_scene_and_the_analysis_follow_the_route() {
     );
     assert!(Problem::from_toml(&bad).is_err(), "unknown route refused");
 }
+
+/// Gauss-point constraints: the penalty couples the four nodes of an element, the
+/// preconditioner keeps only its diagonal; the answer is still the dense one.
+#[test]
+fn iterative_equals_dense_with_gauss_constraints() {
+    let text = liftoff::examples::scene("paper-halfspace").unwrap_or_default();
+    let p = Problem::from_toml(
+        &text
+            .replace("elements = [16, 16]", "elements = [24, 24]")
+            .replace("constraint = \"nodal\"", "constraint = \"gauss\""),
+    )
+    .expect("scene");
+    let method = Method::Penalty(PenaltySettings::fixed(1e-5));
+    let (dense, iterative, ops) = both(&p, &method);
+    assert_same("gauss", &ops, &dense, &iterative);
+}

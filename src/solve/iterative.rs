@@ -302,7 +302,7 @@ impl IterativeSchur {
                 return Err(Error::numerical(
                     "iterative penalty step (conjugate gradients)",
                     format!(
-                        "no convergence in {} iterations (relative residual {residual:.1e}): the system is too badly conditioned for the iterative route; use --solver dense",
+                        "no convergence in {} iterations (relative residual {residual:.1e}): the system is too badly conditioned for the iterative route; use solver.route = \"dense\"",
                         self.settings.max_iterations
                     ),
                 ));
