@@ -10,6 +10,7 @@
 //! V = D w / (P L²), σ = μ L² r / P.
 
 pub mod boundary;
+pub mod exceed;
 
 use serde::Serialize;
 
