@@ -94,10 +94,18 @@ pub fn write_all(dir: &Path, report: &Report, summary: &Summary) -> Result<Vec<P
     let p = st.path("plate.vtu");
     vtk::write_vtu(&p, &report.field, &report.elements)?;
     let title = format!("{} — {}", summary.title, summary.headline());
+    let units = chart::Units::new(summary.physical, summary.dimensionless.mu);
     let p = st.path("profiles.svg");
-    chart::write_profiles_svg(&p, &report.profiles, &title)?;
+    chart::write_profiles_svg(&p, &report.profiles, &title, &units)?;
     let svg = st.path("contact.svg");
     let png = st.path("contact.png");
-    chart::write_contact_map(&svg, &png, &report.field, &title)?;
+    chart::write_contact_map(
+        &svg,
+        &png,
+        &report.field,
+        &title,
+        &units,
+        &chart::Overlay::default(),
+    )?;
     st.commit()
 }
