@@ -27,6 +27,7 @@
 
 pub mod analysis;
 pub mod budget;
+pub mod combination;
 pub mod compare;
 pub mod error;
 pub mod examples;

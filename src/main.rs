@@ -353,6 +353,9 @@ fn solve(args: SolveArgs) -> Result<(), Failure> {
     if let Some(dir) = &args.out {
         output::prepare_dir(dir)?;
     }
+    if !problem.combinations.is_empty() {
+        return solve_combinations(&args, &problem);
+    }
     let analysis = liftoff::analyse(&problem)?;
     let summary = &analysis.summary;
     // A result that did not converge is not a solution: no files are written for it.
@@ -377,6 +380,64 @@ fn solve(args: SolveArgs) -> Result<(), Failure> {
             "the {} method did not converge ({}); the numbers above are not a solution and no files were written{hint}",
             summary.method, summary.status
         )));
+    }
+    Ok(())
+}
+
+/// Every `[[combination]]` of a scene on one assembly, a line each, and the envelope.
+fn solve_combinations(args: &SolveArgs, problem: &Problem) -> Result<(), Failure> {
+    let n = problem.combinations.len();
+    let pb = indicatif::ProgressBar::new(n as u64);
+    if let Ok(style) =
+        indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} {elapsed_precise} {msg}")
+    {
+        pb.set_style(style);
+    }
+    let run = liftoff::combination::analyse(problem, &|name: &str| {
+        pb.set_message(name.to_string());
+        pb.inc(1);
+    });
+    pb.finish_and_clear();
+    let run = run?;
+    let all = run.all_converged();
+    let env = if all {
+        liftoff::combination::envelope(&run.runs)
+    } else {
+        None
+    };
+    // Only a complete set is written: an envelope missing a combination is not an envelope.
+    let written = match (&args.out, &env) {
+        (Some(dir), Some(env)) => output::combinations::write_combinations(dir, &run, env)?.len(),
+        _ => 0,
+    };
+    let title = problem.model.title.split(" — ").next().unwrap_or("");
+    if args.json {
+        let quantities = env.as_ref().map(|e| &e.quantities);
+        let json = serde_json::to_string_pretty(&quantities)
+            .map_err(|e| Failure::new(exit::IO, format!("cannot serialise the envelope: {e}")))?;
+        println!("{json}");
+    } else {
+        let files = args.out.as_deref().map(|dir| (written, dir));
+        print!(
+            "{}",
+            output::combinations::combinations_table(title, &run, env.as_ref(), files)
+        );
+        println!("\n{}", tables::SIGN_CONVENTION);
+    }
+    if !all {
+        let infeasible = run
+            .runs
+            .iter()
+            .any(|r| matches!(&r.outcome, Err(e) if e.kind() == "infeasible"));
+        let code = if infeasible {
+            exit::INFEASIBLE
+        } else {
+            exit::SOLVER
+        };
+        return Err(Failure::new(
+            code,
+            "not every combination has a solution (see the table); no files were written",
+        ));
     }
     Ok(())
 }

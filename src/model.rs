@@ -129,6 +129,80 @@ pub enum Load {
         /// p L² / P.
         pressure: f64,
     },
+    /// Uniform force per length along a segment.
+    Line {
+        /// Start (x, y) / L.
+        from: [f64; 2],
+        /// End (x, y) / L.
+        to: [f64; 2],
+        /// q L / P.
+        force_per_length: f64,
+    },
+    /// Temperature linear through the thickness: the free curling curvature κ = α ΔT / H
+    /// (top warmer is positive: the plate domes, its edges go down), as an initial curvature
+    /// of the plate in both directions.
+    Temperature {
+        /// κ D / P, the curvature ∂²V/∂s² of the plate curling freely.
+        curvature: f64,
+    },
+}
+
+/// A void: over a rectangle the soil surface lies `depth` lower, so the gap there starts at
+/// `depth` (σ ≥ 0, gap ≥ 0, σ · gap = 0 with the gap measured from the lowered surface).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Void {
+    /// [x0, x1] / L.
+    pub x: [f64; 2],
+    /// [y0, y1] / L.
+    pub y: [f64; 2],
+    /// Depth in units of P L² / D (the unit of V).
+    pub depth: f64,
+}
+
+/// A patch of Winkler subgrade with another modulus.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Zone {
+    /// [x0, x1] / L.
+    pub x: [f64; 2],
+    /// [y0, y1] / L.
+    pub y: [f64; 2],
+    /// Reference modulus over the zone's modulus: the factor on the compliance inside it.
+    pub compliance_ratio: f64,
+}
+
+/// True when the rectangle is its own mirror image about x = 0 (`about_x`) or y = 0.
+fn rect_symmetric(x: [f64; 2], y: [f64; 2], about_x: bool, tol: f64) -> bool {
+    let r = if about_x { x } else { y };
+    (r[0] + r[1]).abs() < tol
+}
+
+/// True when a set of rectangles (each with a value) is unchanged by the mirror.
+fn rects_symmetric(rects: &[([f64; 2], [f64; 2], f64)], about_x: bool) -> bool {
+    let tol = 1e-9;
+    let mut used = vec![false; rects.len()];
+    for &(x, y, v) in rects {
+        if rect_symmetric(x, y, about_x, tol) {
+            continue;
+        }
+        let (mx, my) = if about_x {
+            ([-x[1], -x[0]], y)
+        } else {
+            (x, [-y[1], -y[0]])
+        };
+        let found = rects.iter().enumerate().position(|(k, &(cx, cy, cv))| {
+            !used[k]
+                && (cx[0] - mx[0]).abs() < tol
+                && (cx[1] - mx[1]).abs() < tol
+                && (cy[0] - my[0]).abs() < tol
+                && (cy[1] - my[1]).abs() < tol
+                && (cv - v).abs() <= tol * cv.abs().max(v.abs())
+        });
+        match found {
+            Some(k) => used[k] = true,
+            None => return false,
+        }
+    }
+    true
 }
 
 impl Load {
@@ -137,6 +211,12 @@ impl Load {
         match *self {
             Load::Point { force, .. } => force,
             Load::Patch { x, y, pressure } => pressure * (x[1] - x[0]) * (y[1] - y[0]),
+            Load::Line {
+                from,
+                to,
+                force_per_length,
+            } => force_per_length * (to[0] - from[0]).hypot(to[1] - from[1]),
+            Load::Temperature { .. } => 0.0,
         }
     }
 
@@ -165,6 +245,25 @@ impl Load {
                     }
                 }
             }
+            Load::Line {
+                from,
+                to,
+                force_per_length,
+            } => {
+                let m = |p: [f64; 2]| {
+                    if about_x {
+                        [-p[0], p[1]]
+                    } else {
+                        [p[0], -p[1]]
+                    }
+                };
+                Load::Line {
+                    from: m(from),
+                    to: m(to),
+                    force_per_length,
+                }
+            }
+            Load::Temperature { curvature } => Load::Temperature { curvature },
         }
     }
 
@@ -195,6 +294,28 @@ impl Load {
                     && (y[0] - y2[0]).abs() < tol
                     && (y[1] - y2[1]).abs() < tol
                     && (pressure - p2).abs() <= tol * pressure.abs().max(p2.abs())
+            }
+            (
+                Load::Line {
+                    from,
+                    to,
+                    force_per_length: q,
+                },
+                Load::Line {
+                    from: f2,
+                    to: t2,
+                    force_per_length: q2,
+                },
+            ) => {
+                let near = |a: [f64; 2], b: [f64; 2]| {
+                    (a[0] - b[0]).abs() < tol && (a[1] - b[1]).abs() < tol
+                };
+                // A segment is the same load whichever end is written first.
+                ((near(from, f2) && near(to, t2)) || (near(from, t2) && near(to, f2)))
+                    && (q - q2).abs() <= tol * q.abs().max(q2.abs())
+            }
+            (Load::Temperature { curvature: a }, Load::Temperature { curvature: b }) => {
+                (a - b).abs() <= tol * a.abs().max(b.abs())
             }
             _ => false,
         }
@@ -236,6 +357,15 @@ pub struct Model {
     pub symmetry: SymmetryMode,
     /// Where σ ≥ 0 is imposed.
     pub constraint: ConstraintPoints,
+    /// Voids under the plate (initial gaps).
+    pub voids: Vec<Void>,
+    /// Winkler zones with another modulus.
+    pub zones: Vec<Zone>,
+    /// Pressure the soil may take, in units of P / L² (the bearing check), if given.
+    pub allowable_pressure: Option<f64>,
+    /// P in the scene's own force unit (N for SI scenes; the loads' relative unit for
+    /// dimensionless ones): what makes models of different load sets comparable.
+    pub load_scale: f64,
 }
 
 impl Model {
@@ -244,31 +374,65 @@ impl Model {
         self.loads.iter().map(Load::resultant).sum()
     }
 
+    /// The plate's initial curvature from its temperature loads, κ D / P (0 without them).
+    pub fn thermal_curvature(&self) -> f64 {
+        self.loads
+            .iter()
+            .map(|l| match l {
+                Load::Temperature { curvature } => *curvature,
+                _ => 0.0,
+            })
+            .sum()
+    }
+
+    /// True when loads, voids and zones are all unchanged by the mirror about x = 0 (`about_x`)
+    /// or y = 0.
+    pub fn symmetric(&self, about_x: bool) -> bool {
+        let voids: Vec<_> = self.voids.iter().map(|v| (v.x, v.y, v.depth)).collect();
+        let zones: Vec<_> = self
+            .zones
+            .iter()
+            .map(|z| (z.x, z.y, z.compliance_ratio))
+            .collect();
+        loads_symmetric(&self.loads, about_x)
+            && rects_symmetric(&voids, about_x)
+            && rects_symmetric(&zones, about_x)
+    }
+
     /// The grid to solve on: a half or a quarter where the loads allow it and the element counts
     /// are even. Returns the mesh and notes on what was decided.
     pub fn plan_mesh(&self) -> (Mesh, Vec<String>) {
-        let mut notes = Vec::new();
-        let [nx, ny] = self.elements;
-        let (mut sx, mut sy) = (false, false);
-        if self.symmetry == SymmetryMode::Auto {
-            sx = loads_symmetric(&self.loads, true);
-            sy = loads_symmetric(&self.loads, false);
-            if sx && nx % 2 == 1 {
-                notes.push(format!(
-                    "loads are symmetric about x = 0 but mesh.elements[0] = {nx} is odd: modelling the whole width (use an even count to halve the model)"
-                ));
-                sx = false;
-            }
-            if sy && ny % 2 == 1 {
-                notes.push(format!(
-                    "loads are symmetric about y = 0 but mesh.elements[1] = {ny} is odd: modelling the whole depth (use an even count to halve the model)"
-                ));
-                sy = false;
-            }
-        }
-        (
-            Mesh::new(2.0, 2.0 * self.groups.mu, self.elements, sx, sy),
-            notes,
-        )
+        plan_shared_mesh(std::slice::from_ref(self))
     }
+}
+
+/// The one grid for several models of the same plate (the combinations of a scene): halved or
+/// quartered only where every model's loads, voids and zones allow it.
+pub fn plan_shared_mesh(models: &[Model]) -> (Mesh, Vec<String>) {
+    let mut notes = Vec::new();
+    let Some(first) = models.first() else {
+        return (Mesh::new(2.0, 2.0, [1, 1], false, false), notes);
+    };
+    let [nx, ny] = first.elements;
+    let (mut sx, mut sy) = (false, false);
+    if first.symmetry == SymmetryMode::Auto {
+        sx = models.iter().all(|m| m.symmetric(true));
+        sy = models.iter().all(|m| m.symmetric(false));
+        if sx && nx % 2 == 1 {
+            notes.push(format!(
+                "loads are symmetric about x = 0 but mesh.elements[0] = {nx} is odd: modelling the whole width (use an even count to halve the model)"
+            ));
+            sx = false;
+        }
+        if sy && ny % 2 == 1 {
+            notes.push(format!(
+                "loads are symmetric about y = 0 but mesh.elements[1] = {ny} is odd: modelling the whole depth (use an even count to halve the model)"
+            ));
+            sy = false;
+        }
+    }
+    (
+        Mesh::new(2.0, 2.0 * first.groups.mu, first.elements, sx, sy),
+        notes,
+    )
 }

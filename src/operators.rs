@@ -8,9 +8,11 @@
 //!
 //! Nothing here depends on the solution method; methods only read this value.
 
+use std::sync::Arc;
+
 use crate::foundation::{self, halfspace, winkler, Compliance, FoundationKind};
 use crate::mesh::{Dof, DofMap, Mesh};
-use crate::model::{ConstraintPoints, Load, Model};
+use crate::model::{ConstraintPoints, Load, Model, Void, Zone};
 use crate::plate::{self, Section};
 use crate::quadrature::GaussRule;
 
@@ -38,14 +40,18 @@ pub struct Operators {
     pub section: Section,
     /// Foundation model.
     pub foundation: FoundationKind,
-    /// Stiffness K (n_eq × n_eq, singular: free plate).
-    pub k: sprs::CsMat<f64>,
+    /// Stiffness K (n_eq × n_eq, singular: free plate). Shared (not copied) by the operators
+    /// of every load combination.
+    pub k: Arc<sprs::CsMat<f64>>,
     /// Load vector f (n_eq).
     pub f: Vec<f64>,
     /// Coupling B (n_eq × n_σ); diagonal in the w rows for Winkler (lumped).
-    pub b: sprs::CsMat<f64>,
+    pub b: Arc<sprs::CsMat<f64>>,
     /// Compliance T.
-    pub t: Compliance,
+    pub t: Arc<Compliance>,
+    /// Initial gap g₀ (n_σ) of the voids: g = Tσ − Bᵀu + g₀ with g₀_i = ∫ f_i d, d the void
+    /// depth; all zero without voids.
+    pub gap0: Vec<f64>,
     /// Constraint points.
     pub constraints: Constraints,
     /// Rigid-body modes of the model, each a vector over the equations.
@@ -73,7 +79,31 @@ impl Operators {
     /// Assemble all operators of a model. Knows nothing of the method that will use them;
     /// check the memory budget ([`crate::budget::check`]) first for large models.
     pub fn assemble(model: &Model) -> Self {
-        let (mesh, notes) = model.plan_mesh();
+        Self::assemble_shared(std::slice::from_ref(model))
+    }
+
+    /// Assemble once for several models of the same plate, foundation and mesh that differ in
+    /// their loads and voids (the combinations of a scene), on the grid all of them allow
+    /// ([`crate::model::plan_shared_mesh`]), loaded with the first model; [`Self::loaded`] gives
+    /// the others' operators without re-assembly. An empty slice is a caller error and yields
+    /// an empty model's operators.
+    pub fn assemble_shared(models: &[Model]) -> Self {
+        let (mesh, notes) = crate::model::plan_shared_mesh(models);
+        let Some(model) = models.first() else {
+            return Self::build(
+                mesh,
+                Section {
+                    bending: 1.0,
+                    shear: 1.0,
+                    poisson: 0.0,
+                },
+                FoundationKind::Winkler,
+                1.0,
+                &[],
+                ConstraintPoints::Nodal,
+                notes,
+            );
+        };
         let g = &model.groups;
         let section = Section {
             bending: 1.0,
@@ -81,15 +111,28 @@ impl Operators {
             poisson: g.nu,
         };
         let c = g.mu * g.gamma;
-        Self::build(
+        let mut ops = Self::build_zoned(
             mesh,
             section,
             g.foundation,
             c,
+            &model.zones,
             &model.loads,
             model.constraint,
             notes,
-        )
+        );
+        ops.gap0 = void_gap(&ops.mesh, &model.voids);
+        ops
+    }
+
+    /// The same operators with another model's loads and voids (its f and g₀): K, B and T are
+    /// shared, not copied. The model must be one of those the operators were assembled for.
+    pub fn loaded(&self, model: &Model) -> Self {
+        Self {
+            f: load_vector_with(&self.mesh, &self.dofs, &self.section, &model.loads),
+            gap0: void_gap(&self.mesh, &model.voids),
+            ..self.clone()
+        }
     }
 
     /// Assemble from parts: a mesh, a section, the foundation and its constant
@@ -104,13 +147,37 @@ impl Operators {
         constraint: ConstraintPoints,
         notes: Vec<String>,
     ) -> Self {
+        Self::build_zoned(
+            mesh,
+            section,
+            foundation,
+            foundation_constant,
+            &[],
+            loads,
+            constraint,
+            notes,
+        )
+    }
+
+    /// [`Self::build`] with Winkler zones of another modulus.
+    #[allow(clippy::too_many_arguments)]
+    pub fn build_zoned(
+        mesh: Mesh,
+        section: Section,
+        foundation: FoundationKind,
+        foundation_constant: f64,
+        zones: &[Zone],
+        loads: &[Load],
+        constraint: ConstraintPoints,
+        notes: Vec<String>,
+    ) -> Self {
         let dofs = DofMap::new(&mesh);
         let k = plate::assemble_stiffness(&mesh, &dofs, &section);
-        let f = load_vector(&mesh, &dofs, loads);
+        let f = load_vector_with(&mesh, &dofs, &section, loads);
         let (b, t) = match foundation {
             FoundationKind::Winkler => (
                 foundation::coupling(&mesh, &dofs, true),
-                winkler::compliance(&mesh, 1.0 / foundation_constant),
+                winkler::zoned_compliance(&mesh, 1.0 / foundation_constant, zones),
             ),
             FoundationKind::HalfSpace => (
                 foundation::coupling(&mesh, &dofs, false),
@@ -119,15 +186,17 @@ impl Operators {
         };
         let constraints = constraint_points(&mesh, constraint);
         let (rigid, fixed) = rigid_modes(&mesh, &dofs);
+        let gap0 = vec![0.0; mesh.n_nodes()];
         Self {
             mesh,
             dofs,
             section,
             foundation,
-            k,
+            k: Arc::new(k),
             f,
-            b,
-            t,
+            b: Arc::new(b),
+            t: Arc::new(t),
+            gap0,
             constraints,
             rigid,
             fixed,
@@ -182,20 +251,32 @@ impl Operators {
     }
 }
 
-/// Consistent load vector of whole-plate loads on the (possibly reduced) model. A reduced model
-/// carries the loads on its side of each symmetry line and half of those on the line.
+/// Consistent load vector of whole-plate force loads on the (possibly reduced) model (see
+/// [`load_vector_with`]; temperature loads need the section and are skipped here).
 pub fn load_vector(mesh: &Mesh, dofs: &DofMap, loads: &[Load]) -> Vec<f64> {
+    let section = Section {
+        bending: 1.0,
+        shear: 1.0,
+        poisson: 0.0,
+    };
+    let forces: Vec<Load> = loads
+        .iter()
+        .filter(|l| !matches!(l, Load::Temperature { .. }))
+        .copied()
+        .collect();
+    load_vector_with(mesh, dofs, &section, &forces)
+}
+
+/// Consistent load vector of whole-plate loads on the (possibly reduced) model. A reduced model
+/// carries the loads on its side of each symmetry line and half of those on the line;
+/// distributed loads are integrated over the model's part of the plate.
+///
+/// A temperature load is the initial curvature κ₀ = κ (1, 1, 0): its nodal vector is
+/// ∫ B_bᵀ D_b κ₀ dA element by element, the consistent equivalent of the thermal moment
+/// m_T = D (1 + ν) κ along the free edges.
+pub fn load_vector_with(mesh: &Mesh, dofs: &DofMap, section: &Section, loads: &[Load]) -> Vec<f64> {
     let mut f = vec![0.0; dofs.n_eq()];
     let tol = 1e-9;
-    let x_lo = mesh.x0;
-    let x_hi = mesh.x0 + mesh.nx as f64 * mesh.hx;
-    let y_lo = mesh.y0;
-    let y_hi = mesh.y0 + mesh.ny as f64 * mesh.hy;
-    let mut add = |node: usize, v: f64| {
-        if let Some(e) = dofs.eq(node, Dof::W) {
-            f[e] += v;
-        }
-    };
     for load in loads {
         match *load {
             Load::Point { x, y, force } => {
@@ -219,41 +300,47 @@ pub fn load_vector(mesh: &Mesh, dofs: &DofMap, loads: &[Load]) -> Vec<f64> {
                 if let Some((e, xi, eta)) = mesh.locate(x, y) {
                     let n = plate::shape(xi, eta);
                     for (a, node) in mesh.element_nodes(e).into_iter().enumerate() {
-                        add(node, weight * force * n[a]);
+                        if let Some(q) = dofs.eq(node, Dof::W) {
+                            f[q] += weight * force * n[a];
+                        }
                     }
                 }
             }
             Load::Patch { x, y, pressure } => {
-                let (ax, bx) = (x[0].max(x_lo), x[1].min(x_hi));
-                let (ay, by) = (y[0].max(y_lo), y[1].min(y_hi));
-                if bx <= ax || by <= ay {
-                    continue;
+                for (node, v) in patch_integrals(mesh, x, y) {
+                    if let Some(q) = dofs.eq(node, Dof::W) {
+                        f[q] += pressure * v;
+                    }
                 }
+            }
+            Load::Line {
+                from,
+                to,
+                force_per_length,
+            } => {
+                for (node, v) in line_integrals(mesh, from, to) {
+                    if let Some(q) = dofs.eq(node, Dof::W) {
+                        f[q] += force_per_length * v;
+                    }
+                }
+            }
+            Load::Temperature { curvature } => {
+                let m = plate::bending_constitutive(section)
+                    * nalgebra::Vector3::new(curvature, curvature, 0.0);
                 let rule = GaussRule::new(2);
-                let i0 = (((ax - x_lo) / mesh.hx).floor().max(0.0) as usize).min(mesh.nx - 1);
-                let i1 = (((bx - x_lo) / mesh.hx).ceil() as usize).clamp(i0 + 1, mesh.nx);
-                let j0 = (((ay - y_lo) / mesh.hy).floor().max(0.0) as usize).min(mesh.ny - 1);
-                let j1 = (((by - y_lo) / mesh.hy).ceil() as usize).clamp(j0 + 1, mesh.ny);
-                for je in j0..j1 {
-                    for ie in i0..i1 {
-                        let ex0 = x_lo + ie as f64 * mesh.hx;
-                        let ey0 = y_lo + je as f64 * mesh.hy;
-                        let (cx0, cx1) = (ax.max(ex0), bx.min(ex0 + mesh.hx));
-                        let (cy0, cy1) = (ay.max(ey0), by.min(ey0 + mesh.hy));
-                        if cx1 <= cx0 || cy1 <= cy0 {
-                            continue;
-                        }
-                        let e = ie + je * mesh.nx;
-                        let nodes = mesh.element_nodes(e);
-                        for (px, wx) in rule.on_interval(cx0, cx1) {
-                            for (py, wy) in rule.on_interval(cy0, cy1) {
-                                let n = plate::shape(
-                                    2.0 * (px - ex0) / mesh.hx - 1.0,
-                                    2.0 * (py - ey0) / mesh.hy - 1.0,
-                                );
-                                for a in 0..4 {
-                                    add(nodes[a], pressure * wx * wy * n[a]);
-                                }
+                let det = 0.25 * mesh.hx * mesh.hy;
+                let mut fe = plate::ElementVector::zeros();
+                for (&xi, &wx) in rule.points.iter().zip(&rule.weights) {
+                    for (&eta, &wy) in rule.points.iter().zip(&rule.weights) {
+                        let b = plate::bending_strain(xi, eta, mesh.hx, mesh.hy);
+                        fe += b.transpose() * m * (wx * wy * det);
+                    }
+                }
+                for e in 0..mesh.n_elements() {
+                    for (a, node) in mesh.element_nodes(e).into_iter().enumerate() {
+                        for (k, dof) in [Dof::W, Dof::PsiX, Dof::PsiY].into_iter().enumerate() {
+                            if let Some(q) = dofs.eq(node, dof) {
+                                f[q] += fe[3 * a + k];
                             }
                         }
                     }
@@ -262,6 +349,130 @@ pub fn load_vector(mesh: &Mesh, dofs: &DofMap, loads: &[Load]) -> Vec<f64> {
         }
     }
     f
+}
+
+/// ∫ f_i dA over the part of the rectangle [x0, x1] × [y0, y1] that lies on the model, for
+/// every node i it touches (2 × 2 Gauss points per element piece: exact for bilinear f_i).
+pub fn patch_integrals(mesh: &Mesh, x: [f64; 2], y: [f64; 2]) -> Vec<(usize, f64)> {
+    let mut out = Vec::new();
+    let x_lo = mesh.x0;
+    let x_hi = mesh.x0 + mesh.nx as f64 * mesh.hx;
+    let y_lo = mesh.y0;
+    let y_hi = mesh.y0 + mesh.ny as f64 * mesh.hy;
+    let (ax, bx) = (x[0].max(x_lo), x[1].min(x_hi));
+    let (ay, by) = (y[0].max(y_lo), y[1].min(y_hi));
+    if bx <= ax || by <= ay {
+        return out;
+    }
+    let rule = GaussRule::new(2);
+    let i0 = (((ax - x_lo) / mesh.hx).floor().max(0.0) as usize).min(mesh.nx - 1);
+    let i1 = (((bx - x_lo) / mesh.hx).ceil() as usize).clamp(i0 + 1, mesh.nx);
+    let j0 = (((ay - y_lo) / mesh.hy).floor().max(0.0) as usize).min(mesh.ny - 1);
+    let j1 = (((by - y_lo) / mesh.hy).ceil() as usize).clamp(j0 + 1, mesh.ny);
+    for je in j0..j1 {
+        for ie in i0..i1 {
+            let ex0 = x_lo + ie as f64 * mesh.hx;
+            let ey0 = y_lo + je as f64 * mesh.hy;
+            let (cx0, cx1) = (ax.max(ex0), bx.min(ex0 + mesh.hx));
+            let (cy0, cy1) = (ay.max(ey0), by.min(ey0 + mesh.hy));
+            if cx1 <= cx0 || cy1 <= cy0 {
+                continue;
+            }
+            let e = ie + je * mesh.nx;
+            let nodes = mesh.element_nodes(e);
+            let mut acc = [0.0; 4];
+            for (px, wx) in rule.on_interval(cx0, cx1) {
+                for (py, wy) in rule.on_interval(cy0, cy1) {
+                    let n = plate::shape(
+                        2.0 * (px - ex0) / mesh.hx - 1.0,
+                        2.0 * (py - ey0) / mesh.hy - 1.0,
+                    );
+                    for a in 0..4 {
+                        acc[a] += wx * wy * n[a];
+                    }
+                }
+            }
+            out.extend(nodes.into_iter().zip(acc));
+        }
+    }
+    out
+}
+
+/// ∫ f_i ds along the part of the segment `from` → `to` that lies on the model, for every node
+/// i it touches: the segment is cut at the element lines and each piece integrated with two
+/// Gauss points (exact: along a straight line a bilinear f_i is quadratic). A piece lying on a
+/// symmetry line of a reduced model counts half, like a point load there.
+pub fn line_integrals(mesh: &Mesh, from: [f64; 2], to: [f64; 2]) -> Vec<(usize, f64)> {
+    let mut out = Vec::new();
+    let (dx, dy) = (to[0] - from[0], to[1] - from[1]);
+    let len = dx.hypot(dy);
+    if len <= 0.0 {
+        return out;
+    }
+    let x_lo = mesh.x0;
+    let x_hi = mesh.x0 + mesh.nx as f64 * mesh.hx;
+    let y_lo = mesh.y0;
+    let y_hi = mesh.y0 + mesh.ny as f64 * mesh.hy;
+    // Parameters where the segment crosses a grid line, clipped to the model.
+    let mut cuts = vec![0.0, 1.0];
+    for (d, p0, lo, h, n) in [
+        (dx, from[0], x_lo, mesh.hx, mesh.nx),
+        (dy, from[1], y_lo, mesh.hy, mesh.ny),
+    ] {
+        if d.abs() > 0.0 {
+            for k in 0..=n {
+                let s = (lo + k as f64 * h - p0) / d;
+                if s > 0.0 && s < 1.0 {
+                    cuts.push(s);
+                }
+            }
+        }
+    }
+    cuts.sort_by(f64::total_cmp);
+    let tol = 1e-9;
+    let rule = GaussRule::new(2);
+    for w in cuts.windows(2) {
+        let (s0, s1) = (w[0], w[1]);
+        if s1 - s0 <= 1e-14 {
+            continue;
+        }
+        let mid = 0.5 * (s0 + s1);
+        let (mx, my) = (from[0] + mid * dx, from[1] + mid * dy);
+        if mx < x_lo - tol || mx > x_hi + tol || my < y_lo - tol || my > y_hi + tol {
+            continue;
+        }
+        let mut weight = 1.0;
+        if mesh.sym_x && mx.abs() <= tol && dx.abs() <= tol * len {
+            weight *= 0.5;
+        }
+        if mesh.sym_y && my.abs() <= tol && dy.abs() <= tol * len {
+            weight *= 0.5;
+        }
+        let Some((e, _, _)) = mesh.locate(mx.clamp(x_lo, x_hi), my.clamp(y_lo, y_hi)) else {
+            continue;
+        };
+        let nodes = mesh.element_nodes(e);
+        let (ex, ey) = mesh.element_centre(e);
+        for (s, ws) in rule.on_interval(s0, s1) {
+            let (px, py) = (from[0] + s * dx, from[1] + s * dy);
+            let n = plate::shape(2.0 * (px - ex) / mesh.hx, 2.0 * (py - ey) / mesh.hy);
+            for a in 0..4 {
+                out.push((nodes[a], weight * ws * len * n[a]));
+            }
+        }
+    }
+    out
+}
+
+/// Initial gap of the voids on the model: g₀_i = Σ_voids depth ∫_void f_i dA.
+pub fn void_gap(mesh: &Mesh, voids: &[Void]) -> Vec<f64> {
+    let mut g = vec![0.0; mesh.n_nodes()];
+    for v in voids {
+        for (node, a) in patch_integrals(mesh, v.x, v.y) {
+            g[node] += v.depth * a;
+        }
+    }
+    g
 }
 
 /// Constraint operator G and weights for nodal or Gauss-point constraints.

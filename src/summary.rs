@@ -103,6 +103,8 @@ pub struct Summary {
     /// The penalty method's stages, one per ε̄ tried (one for a fixed ε̄; empty for other
     /// methods); the last is the ε̄ reported in `dimensionless.penalty`.
     pub penalty_stages: Vec<PenaltyStage>,
+    /// The bearing check (present when the scene gives an allowable pressure).
+    pub bearing: Option<crate::post::Bearing>,
     /// Modelling notes.
     pub notes: Vec<String>,
 }
@@ -159,6 +161,7 @@ impl Summary {
             complementarity: report.complementarity,
             history: sol.history.clone(),
             penalty_stages: sol.info.penalty_stages.clone(),
+            bearing: report.bearing,
             notes: ops.notes.iter().chain(&sol.info.notes).cloned().collect(),
         }
     }

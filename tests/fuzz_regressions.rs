@@ -200,7 +200,7 @@ fn malformed_toml_is_a_parse_error() {
         ),
         (
             "unknown load kind",
-            dimensionless("").replace("\"point\"", "\"line\""),
+            dimensionless("").replace("\"point\"", "\"wind\""),
         ),
         (
             "unknown method",

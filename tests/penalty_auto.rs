@@ -12,20 +12,8 @@ use liftoff::{Operators, PenaltySettings, Status};
 /// lengths ℓ = (D/K)^¼ = 1.20 m, so most of it lifts off under a central 100 kN load.
 fn soft_slab(n: usize) -> Model {
     Model::builder()
-        .plate(PlateSpec {
-            length: 48.0,
-            width: 48.0,
-            thickness: 0.2,
-            youngs_modulus: 30e9,
-            poissons_ratio: 0.2,
-            shear_correction: None,
-        })
-        .foundation(FoundationSpec {
-            model: FoundationKind::Winkler,
-            modulus: Some(1.0e7),
-            youngs_modulus: None,
-            poissons_ratio: None,
-        })
+        .plate(PlateSpec::new(48.0, 48.0, 0.2, 30e9, 0.2))
+        .foundation(FoundationSpec::winkler(1.0e7))
         .point_load(0.0, 0.0, 1.0e5)
         .elements(n, n)
         .symmetry(SymmetryMode::Auto)

@@ -55,6 +55,7 @@ impl RandomScene {
 
     fn problem(&self, mirror_s: bool, method: Method) -> Problem {
         Problem {
+            combinations: Vec::new(),
             model: self.model(mirror_s),
             method,
             memory_limit: liftoff::budget::default_memory_limit(),

@@ -87,7 +87,7 @@ fn unknown_keys_and_wrong_types_are_parse_errors_naming_the_key() {
         ),
         ("[mesh]", "[meshes]", "meshes"),
         ("model = \"winkler\"", "model = \"pasternak\"", "pasternak"),
-        ("kind = \"point\"", "kind = \"line\"", "line"),
+        ("kind = \"point\"", "kind = \"wind\"", "wind"),
         ("thickness = 0.25", "thickness = \"thick\"", "thickness"),
     ];
     for (from, to, key) in cases {

@@ -61,7 +61,7 @@ fn diagnostic(s: &Solution, key: &str) -> f64 {
 }
 
 fn compliance(ops: &Operators) -> Vec<f64> {
-    match &ops.t {
+    match ops.t.as_ref() {
         Compliance::Diagonal(t) => t.clone(),
         Compliance::Dense(_) => panic!("these tests use Winkler scenes"),
     }

@@ -22,6 +22,7 @@ fn paper_plate(foundation: FoundationKind, elements: usize, memory_limit: f64) -
         .build()
         .unwrap_or_else(|e| panic!("paper plate: {e}"));
     Problem {
+        combinations: Vec::new(),
         model,
         method: Method::penalty(),
         memory_limit,

@@ -5,6 +5,7 @@
 //! half-written file or a half-updated directory behind.
 
 pub mod chart;
+pub mod combinations;
 pub mod studies;
 
 pub mod tables;
@@ -55,10 +56,16 @@ impl Staged {
         })
     }
 
-    /// Path in the staging area for a file that will be called `name`.
+    /// Path in the staging area for a file that will be called `name` (which may name a
+    /// sub-folder: `ULS-1/summary.json`).
     pub fn path(&mut self, name: &str) -> PathBuf {
         self.names.push(name.to_string());
-        self.staging.path().join(name)
+        let p = self.staging.path().join(name);
+        if let Some(parent) = p.parent() {
+            // A failure shows when the file is written, with its path.
+            let _ = std::fs::create_dir_all(parent);
+        }
+        p
     }
 
     /// Write text to a staged file.
@@ -73,6 +80,9 @@ impl Staged {
         for name in &self.names {
             let from = self.staging.path().join(name);
             let to = self.dir.join(name);
+            if let Some(parent) = to.parent() {
+                std::fs::create_dir_all(parent).map_err(io(parent))?;
+            }
             std::fs::rename(&from, &to).map_err(io(&to))?;
             out.push(to);
         }
@@ -84,28 +94,32 @@ impl Staged {
 /// elements.csv, profiles.csv, plate.vtu, profiles.svg, contact.svg and contact.png.
 pub fn write_all(dir: &Path, report: &Report, summary: &Summary) -> Result<Vec<PathBuf>> {
     let mut st = Staged::new(dir)?;
-    st.write_text("summary.json", &summary.to_json()?)?;
-    let p = st.path("nodes.csv");
+    stage_all(&mut st, "", report, summary)?;
+    st.commit()
+}
+
+/// Stage the standard result set under `prefix` (empty, or a sub-folder ending in '/').
+pub fn stage_all(st: &mut Staged, prefix: &str, report: &Report, summary: &Summary) -> Result<()> {
+    st.write_text(&format!("{prefix}summary.json"), &summary.to_json()?)?;
+    let p = st.path(&format!("{prefix}nodes.csv"));
     tables::write_nodes(&p, &report.field)?;
-    let p = st.path("elements.csv");
+    let p = st.path(&format!("{prefix}elements.csv"));
     tables::write_elements(&p, &report.elements)?;
-    let p = st.path("profiles.csv");
+    let p = st.path(&format!("{prefix}profiles.csv"));
     tables::write_profiles(&p, &report.profiles)?;
-    let p = st.path("plate.vtu");
+    let p = st.path(&format!("{prefix}plate.vtu"));
     vtk::write_vtu(&p, &report.field, &report.elements)?;
     let title = format!("{} — {}", summary.title, summary.headline());
     let units = chart::Units::new(summary.physical, summary.dimensionless.mu);
-    let p = st.path("profiles.svg");
+    let p = st.path(&format!("{prefix}profiles.svg"));
     chart::write_profiles_svg(&p, &report.profiles, &title, &units)?;
-    let svg = st.path("contact.svg");
-    let png = st.path("contact.png");
-    chart::write_contact_map(
-        &svg,
-        &png,
-        &report.field,
-        &title,
-        &units,
-        &chart::Overlay::default(),
-    )?;
-    st.commit()
+    let svg = st.path(&format!("{prefix}contact.svg"));
+    let png = st.path(&format!("{prefix}contact.png"));
+    // The allowable pressure is in the units of the field's pressure (Pa, or P / L²).
+    let overlay = chart::Overlay {
+        allowable_pressure: report.bearing.map(|b| b.allowable),
+        ..chart::Overlay::default()
+    };
+    chart::write_contact_map(&svg, &png, &report.field, &title, &units, &overlay)?;
+    Ok(())
 }

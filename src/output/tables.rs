@@ -239,6 +239,22 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
             e.diagonal
         ));
     }
+    if let Some(b) = &s.bearing {
+        let (scale, unit, area) = if s.physical.is_some() {
+            (1e-3, "kPa", "m²")
+        } else {
+            (1.0, "P/L²", "L²")
+        };
+        l.push(format!(
+            "  bearing    : max {:.1} of {:.1} {unit} allowed, utilisation {:.0} %, {:.3} {area} ({:.1} % of the plate) above it{}",
+            b.max * scale,
+            b.allowable * scale,
+            100.0 * b.utilisation,
+            b.area_exceeding,
+            100.0 * b.fraction_exceeding,
+            if b.utilisation > 1.0 { " — EXCEEDED" } else { "" }
+        ));
+    }
     let c = &s.complementarity;
     l.push(format!(
         "  residuals  : min σ {:.2e}, min gap {:.2e}, max |σ·gap| {:.2e}",

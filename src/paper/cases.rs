@@ -207,6 +207,7 @@ impl Case {
     /// The problem of this case.
     pub(super) fn problem(&self, refine: usize, kind: MethodKind) -> Result<Problem> {
         Ok(Problem {
+            combinations: Vec::new(),
             model: self.model(refine)?,
             method: self.method(kind),
             memory_limit: default_memory_limit(),

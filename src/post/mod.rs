@@ -219,6 +219,48 @@ pub struct Report {
     pub resultant: Resultant,
     /// Unilateral residuals.
     pub complementarity: Complementarity,
+    /// The bearing check, when the scene gives an allowable pressure.
+    pub bearing: Option<Bearing>,
+}
+
+/// The soil pressure against what the soil may take.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct Bearing {
+    /// Allowable pressure (physical: Pa; dimensionless scenes: units of P / L²).
+    pub allowable: f64,
+    /// Largest pressure, same unit.
+    pub max: f64,
+    /// max / allowable.
+    pub utilisation: f64,
+    /// Area where the (bilinear) pressure exceeds the allowable one: m², or L² units.
+    pub area_exceeding: f64,
+    /// That area over the plate's.
+    pub fraction_exceeding: f64,
+}
+
+/// Area of the plate where a bilinear nodal field exceeds `level`, exactly: per element the
+/// fraction of its square where the interpolant of (level − field) is negative.
+pub fn area_above(field: &FullField, values: &[f64], level: f64) -> f64 {
+    let nnx = field.nx + 1;
+    let mut fraction = 0.0;
+    for j in 0..field.ny {
+        for i in 0..field.nx {
+            let n = |a: usize, b: usize| level - values[(i + a) + (j + b) * nnx];
+            fraction += boundary::negative_fraction([n(0, 0), n(1, 0), n(1, 1), n(0, 1)]);
+        }
+    }
+    let (lx, ly) = plate_sides(field);
+    fraction * lx * ly / (field.nx * field.ny) as f64
+}
+
+/// Sides of the plate in the units of `field.x`, `field.y`.
+fn plate_sides(field: &FullField) -> (f64, f64) {
+    let span = |v: &[f64]| {
+        let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        (hi - lo).max(0.0)
+    };
+    (span(&field.x), span(&field.y))
 }
 
 fn scales(model: &Model) -> Physical {
@@ -293,7 +335,8 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
         }
     }
 
-    // Element resultants on the whole plate.
+    // Element resultants on the whole plate; D_b κ₀ of the temperature loads (D = 1).
+    let thermal_moment = (1.0 + ops.section.poisson) * model.thermal_curvature();
     let full_mesh = Mesh::new(2.0, 2.0 * mu, [nx, ny], false, false);
     let mut elements = ElementField::default();
     for e in 0..full_mesh.n_elements() {
@@ -304,7 +347,10 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
                 ue[3 * a + d] = full_u[n][d];
             }
         }
-        let r = centre_resultants(&ops.section, full_mesh.hx, full_mesh.hy, &ue);
+        let mut r = centre_resultants(&ops.section, full_mesh.hx, full_mesh.hy, &ue);
+        // m = −D_b (κ − κ₀): the thermal initial curvature carries no moment of its own.
+        r[0] += thermal_moment;
+        r[1] += thermal_moment;
         let (xc, yc) = full_mesh.element_centre(e);
         elements.x.push(xc * ph.half_length);
         elements.y.push(yc * ph.half_length);
@@ -367,7 +413,20 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
         mx: range(&elements.mx),
         my: range(&elements.my),
     };
+    let bearing = model.allowable_pressure.map(|a| {
+        let allowable = a * ph.pressure();
+        let area = area_above(&field, &field.pressure, allowable);
+        let (lx, ly) = plate_sides(&field);
+        Bearing {
+            allowable,
+            max: pressure_max,
+            utilisation: pressure_max / allowable,
+            area_exceeding: area,
+            fraction_exceeding: area / (lx * ly),
+        }
+    });
     Report {
+        bearing,
         pressure_max,
         moments,
         field,

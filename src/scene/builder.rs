@@ -40,6 +40,8 @@ impl Model {
                 foundation: None,
                 dimensionless: None,
                 load: Vec::new(),
+                combination: Vec::new(),
+                void: Vec::new(),
                 mesh: MeshSpec::default(),
                 solver: SolverSpec::default(),
             },
@@ -81,6 +83,8 @@ impl ModelBuilder {
             delta,
             mu,
             nu,
+            allowable_pressure: None,
+            zone: Vec::new(),
         });
         self
     }
@@ -99,6 +103,113 @@ impl ModelBuilder {
             y,
             force,
             pressure,
+            from: None,
+            to: None,
+            force_per_length: None,
+            difference: None,
+            curvature: None,
+            case: None,
+        });
+        self
+    }
+
+    /// Put the load added last into a load case (loads are in case "default" otherwise).
+    pub fn in_case(mut self, case: impl Into<String>) -> Self {
+        if let Some(l) = self.file.load.last_mut() {
+            l.case = Some(case.into());
+        }
+        self
+    }
+
+    /// A downward force per length along the segment `from` → `to` (N/m in SI scenes).
+    pub fn line_load(mut self, from: [f64; 2], to: [f64; 2], force_per_length: f64) -> Self {
+        self = self.load(LoadKind::Line, None, None, None, None);
+        if let Some(l) = self.file.load.last_mut() {
+            l.from = Some(from);
+            l.to = Some(to);
+            l.force_per_length = Some(force_per_length);
+        }
+        self
+    }
+
+    /// A temperature difference top minus bottom, K (SI scenes; the plate needs
+    /// `thermal_expansion`).
+    pub fn temperature_load(mut self, difference: f64) -> Self {
+        self = self.load(LoadKind::Temperature, None, None, None, None);
+        if let Some(l) = self.file.load.last_mut() {
+            l.difference = Some(difference);
+        }
+        self
+    }
+
+    /// A free curling curvature ∂²V/∂s² in the loads' unit (dimensionless scenes).
+    pub fn curling(mut self, curvature: f64) -> Self {
+        self = self.load(LoadKind::Temperature, None, None, None, None);
+        if let Some(l) = self.file.load.last_mut() {
+            l.curvature = Some(curvature);
+        }
+        self
+    }
+
+    /// A void of `depth` over x ∈ [x0, x1], y ∈ [y0, y1].
+    pub fn void(mut self, x: [f64; 2], y: [f64; 2], depth: f64) -> Self {
+        self.file.void.push(super::VoidSpec { x, y, depth });
+        self
+    }
+
+    /// A Winkler zone of another modulus (N/m³ in SI scenes; Γ_w in dimensionless ones) over
+    /// x ∈ [x0, x1], y ∈ [y0, y1]. Give the foundation (or the groups) first.
+    pub fn zone(mut self, x: [f64; 2], y: [f64; 2], value: f64) -> Self {
+        if let Some(f) = self.file.foundation.as_mut() {
+            f.zone.push(super::ZoneSpec {
+                x,
+                y,
+                modulus: Some(value),
+                gamma: None,
+            });
+        } else if let Some(d) = self.file.dimensionless.as_mut() {
+            d.zone.push(super::ZoneSpec {
+                x,
+                y,
+                modulus: None,
+                gamma: Some(value),
+            });
+        }
+        self
+    }
+
+    /// The pressure the soil may take (Pa in SI scenes): the bearing check. Give the
+    /// foundation (or the groups) first.
+    pub fn allowable_pressure(mut self, p: f64) -> Self {
+        if let Some(f) = self.file.foundation.as_mut() {
+            f.allowable_pressure = Some(p);
+        } else if let Some(d) = self.file.dimensionless.as_mut() {
+            d.allowable_pressure = Some(p);
+        }
+        self
+    }
+
+    /// Contact law and method for [`Self::build_problem`] (default: unbonded, penalty).
+    pub fn solver(
+        mut self,
+        contact: crate::method::Contact,
+        method: crate::method::MethodKind,
+    ) -> Self {
+        self.file.solver.contact = contact;
+        self.file.solver.method = method;
+        self
+    }
+
+    /// Validate into a whole problem (model, combinations, method, memory limit).
+    pub fn build_problem(&self) -> Result<super::Problem> {
+        validate::problem(&self.file)
+    }
+
+    /// A combination of load cases with factors.
+    pub fn combination(mut self, name: impl Into<String>, factors: &[(&str, f64)]) -> Self {
+        self.file.combination.push(super::CombinationSpec {
+            name: name.into(),
+            factors: factors.iter().map(|&(c, f)| (c.to_string(), f)).collect(),
         });
         self
     }
@@ -149,8 +260,13 @@ impl ModelBuilder {
         self
     }
 
-    /// Validate into a model.
+    /// Validate into a model (all loads together).
     pub fn build(&self) -> Result<Model> {
         validate::model(&self.file)
+    }
+
+    /// Validate the combinations into their models (empty without combinations).
+    pub fn build_combinations(&self) -> Result<Vec<super::Combination>> {
+        validate::combinations(&self.file)
     }
 }

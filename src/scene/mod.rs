@@ -21,11 +21,25 @@ use crate::error::{Error, Result};
 use crate::method::Method;
 use crate::model::Model;
 
+/// One `[[combination]]` of a scene: its factors and the model of its factored loads (its own
+/// P, so that it is exactly the scene those loads would make on their own).
+#[derive(Debug, Clone)]
+pub struct Combination {
+    /// Name (a folder name).
+    pub name: String,
+    /// Factor per load case, as written.
+    pub factors: Vec<(String, f64)>,
+    /// The model of the factored loads.
+    pub model: Model,
+}
+
 /// A validated scene: what to solve, how, and within how much memory.
 #[derive(Debug, Clone)]
 pub struct Problem {
-    /// The model.
+    /// The model: all loads together, or with `[[combination]]`s the first combination's.
     pub model: Model,
+    /// The combinations; empty when the scene has none (all loads act together).
+    pub combinations: Vec<Combination>,
     /// The method of `[solver]`.
     pub method: Method,
     /// Memory the solver may use, bytes.

@@ -23,6 +23,31 @@ pub struct PlateSpec {
     /// χ, default 5/6.
     #[serde(default)]
     pub shear_correction: Option<f64>,
+    /// Coefficient of thermal expansion α, 1/K; needed only with a temperature load.
+    #[serde(default)]
+    pub thermal_expansion: Option<f64>,
+}
+
+impl PlateSpec {
+    /// A plate of `length` × `width` × `thickness` (m), Young's modulus (Pa) and Poisson's
+    /// ratio; χ = 5/6, no thermal expansion.
+    pub fn new(
+        length: f64,
+        width: f64,
+        thickness: f64,
+        youngs_modulus: f64,
+        poissons_ratio: f64,
+    ) -> Self {
+        Self {
+            length,
+            width,
+            thickness,
+            youngs_modulus,
+            poissons_ratio,
+            shear_correction: None,
+            thermal_expansion: None,
+        }
+    }
 }
 
 /// `[foundation]` in SI units.
@@ -40,6 +65,79 @@ pub struct FoundationSpec {
     /// Half-space ν_s.
     #[serde(default)]
     pub poissons_ratio: Option<f64>,
+    /// Pressure the soil may take, Pa: the bearing check (optional).
+    #[serde(default)]
+    pub allowable_pressure: Option<f64>,
+    /// Softer or stiffer patches of a Winkler subgrade.
+    #[serde(default)]
+    pub zone: Vec<ZoneSpec>,
+}
+
+impl FoundationSpec {
+    /// A Winkler subgrade of modulus `k`, N/m³.
+    pub fn winkler(k: f64) -> Self {
+        Self {
+            model: FoundationKind::Winkler,
+            modulus: Some(k),
+            youngs_modulus: None,
+            poissons_ratio: None,
+            allowable_pressure: None,
+            zone: Vec::new(),
+        }
+    }
+
+    /// An elastic half-space of Young's modulus `e` (Pa) and Poisson's ratio `nu`.
+    pub fn half_space(e: f64, nu: f64) -> Self {
+        Self {
+            model: FoundationKind::HalfSpace,
+            modulus: None,
+            youngs_modulus: Some(e),
+            poissons_ratio: Some(nu),
+            allowable_pressure: None,
+            zone: Vec::new(),
+        }
+    }
+}
+
+/// One `[[foundation.zone]]` (SI: `modulus`, N/m³) or `[[dimensionless.zone]]` (`gamma`, the
+/// zone's Γ_w): a rectangle of the plate where the Winkler modulus differs.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ZoneSpec {
+    /// [x0, x1]: m, or s in a dimensionless scene.
+    pub x: [f64; 2],
+    /// [y0, y1]: m, or t in a dimensionless scene.
+    pub y: [f64; 2],
+    /// Winkler modulus inside the zone, N/m³ (SI scenes).
+    #[serde(default)]
+    pub modulus: Option<f64>,
+    /// Γ_w inside the zone (dimensionless scenes).
+    #[serde(default)]
+    pub gamma: Option<f64>,
+}
+
+/// One `[[void]]`: the soil surface is lower by `depth` over a rectangle, so the plate meets it
+/// only after closing that gap.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct VoidSpec {
+    /// [x0, x1]: m, or s in a dimensionless scene.
+    pub x: [f64; 2],
+    /// [y0, y1]: m, or t in a dimensionless scene.
+    pub y: [f64; 2],
+    /// Depth, m (SI), or in the loads' units of V (dimensionless: depth · D / L² in the
+    /// force unit of the loads).
+    pub depth: f64,
+}
+
+/// One `[[combination]]`: factors on named load cases, solved as its own contact problem.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CombinationSpec {
+    /// Name, used for the output sub-folder.
+    pub name: String,
+    /// Factor per case name.
+    pub factors: std::collections::BTreeMap<String, f64>,
 }
 
 /// `[dimensionless]`: the paper's groups (eq. 4.1).
@@ -56,6 +154,12 @@ pub struct DimensionlessSpec {
     pub mu: f64,
     /// ν_p.
     pub nu: f64,
+    /// Allowable pressure in the units of patch pressures (bearing check, optional).
+    #[serde(default)]
+    pub allowable_pressure: Option<f64>,
+    /// Patches with another Γ_w (Winkler only).
+    #[serde(default)]
+    pub zone: Vec<ZoneSpec>,
 }
 
 /// A coordinate: a number (point loads) or a range [lo, hi] (patch loads).
@@ -78,6 +182,10 @@ pub enum LoadKind {
     Patch,
     /// Uniform pressure over the whole plate (self-weight, surcharge).
     Uniform,
+    /// Force per unit length along the segment `from` → `to` (a wall, a line of columns).
+    Line,
+    /// A temperature difference, top minus bottom, linear through the thickness.
+    Temperature,
 }
 
 /// One `[[load]]` entry.
@@ -98,6 +206,24 @@ pub struct LoadSpec {
     /// Pressure, Pa downward (relative in a dimensionless scene).
     #[serde(default)]
     pub pressure: Option<f64>,
+    /// Start of a line load: m, or (s, t) in a dimensionless scene.
+    #[serde(default)]
+    pub from: Option<[f64; 2]>,
+    /// End of a line load.
+    #[serde(default)]
+    pub to: Option<[f64; 2]>,
+    /// Line load, N/m downward (relative per unit L in a dimensionless scene).
+    #[serde(default)]
+    pub force_per_length: Option<f64>,
+    /// Temperature difference top minus bottom, K (SI scenes).
+    #[serde(default)]
+    pub difference: Option<f64>,
+    /// Free curling curvature ∂²V/∂s² times the loads' force unit (dimensionless scenes).
+    #[serde(default)]
+    pub curvature: Option<f64>,
+    /// Load case; loads without one belong to case "default".
+    #[serde(default)]
+    pub case: Option<String>,
 }
 
 /// `[solver] penalty`: `"auto"` or a fixed ε̄.
@@ -223,6 +349,12 @@ pub struct SceneFile {
     /// Loads.
     #[serde(default)]
     pub load: Vec<LoadSpec>,
+    /// Load combinations; without any, all loads act together.
+    #[serde(default)]
+    pub combination: Vec<CombinationSpec>,
+    /// Voids under the plate.
+    #[serde(default)]
+    pub void: Vec<VoidSpec>,
     /// Mesh.
     #[serde(default)]
     pub mesh: MeshSpec,

@@ -62,7 +62,7 @@ pub fn lumped_coupling(ops: &Operators) -> Result<Vec<(usize, f64)>> {
 
 /// Bonded solve.
 pub fn solve(ops: &Operators) -> Result<Solution> {
-    match &ops.t {
+    match ops.t.as_ref() {
         Compliance::Diagonal(t) => solve_springs(ops, t),
         Compliance::Dense(_) => solve_schur(ops),
     }
@@ -71,7 +71,7 @@ pub fn solve(ops: &Operators) -> Result<Solution> {
 fn solve_springs(ops: &Operators, t: &[f64]) -> Result<Solution> {
     let t0 = Instant::now();
     let coupling = lumped_coupling(ops)?;
-    let mut k = ops.k.clone();
+    let mut k = (*ops.k).clone();
     let diag = diagonal_positions(&k)?;
     for (j, &(eq, b)) in coupling.iter().enumerate() {
         k.data_mut()[diag[eq]] += b * b / t[j];
@@ -117,7 +117,7 @@ pub struct SchurSystem {
     pub kinv: PlateInverse,
     /// S = T + BᵀK⁻B.
     pub s: Mat<f64>,
-    /// h = BᵀK⁻f.
+    /// h = BᵀK⁻f − g₀.
     pub h: Vec<f64>,
     /// C = BᵀR (n_σ × n_r), column per rigid mode.
     pub c: Vec<Vec<f64>>,
@@ -137,7 +137,13 @@ impl SchurSystem {
         let time_plate = t0.elapsed().as_secs_f64();
         let s = schur_complement(ops, &kinv);
         let time_schur = t0.elapsed().as_secs_f64() - time_plate;
-        let h = ops.bt_times(&kinv.apply(&ops.f));
+        // h = BᵀK⁻f − g₀: the voids' initial gap enters as g = Sσ − Cα − h.
+        let h = ops
+            .bt_times(&kinv.apply(&ops.f))
+            .iter()
+            .zip(&ops.gap0)
+            .map(|(a, g)| a - g)
+            .collect();
         let c: Vec<Vec<f64>> = ops.rigid.iter().map(|r| ops.bt_times(r)).collect();
         let rf = ops.rigid.iter().map(|r| dot(r, &ops.f)).collect();
         Ok(Self {

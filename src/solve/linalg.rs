@@ -292,7 +292,7 @@ pub fn dense_cholesky(a: &Mat<f64>, stage: &str) -> Result<DenseLlt> {
 pub fn schur_complement(ops: &Operators, kinv: &PlateInverse) -> Mat<f64> {
     let n_sigma = ops.n_sigma();
     let n_eq = ops.n_eq();
-    let mut s = match &ops.t {
+    let mut s = match ops.t.as_ref() {
         crate::foundation::Compliance::Dense(t) => t.clone(),
         crate::foundation::Compliance::Diagonal(d) => {
             let mut m = Mat::<f64>::zeros(n_sigma, n_sigma);

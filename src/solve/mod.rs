@@ -237,7 +237,14 @@ pub struct Solution {
 pub fn solve(ops: &Operators, method: &Method) -> Result<Solution> {
     method.validate()?;
     let sol = match method {
-        Method::Bonded => bonded::solve(ops)?,
+        Method::Bonded => {
+            if ops.gap0.iter().any(|&g| g != 0.0) {
+                return Err(Error::Unsupported(
+                    "voids need unbonded contact: bonded contact would glue the plate to the lowered soil surface".into(),
+                ));
+            }
+            bonded::solve(ops)?
+        }
         Method::Penalty(settings) => {
             check_feasible(ops)?;
             penalty::solve(ops, settings)?
@@ -368,9 +375,14 @@ pub fn check_feasible(ops: &Operators) -> Result<()> {
     Ok(())
 }
 
-/// Nodal gap and residual bookkeeping shared by the methods: g = T σ − Bᵀ u.
+/// Nodal gap and residual bookkeeping shared by the methods: g = T σ − Bᵀ u + g₀ (g₀ the
+/// voids' initial gap).
 pub fn discrete_gap(ops: &Operators, u: &[f64], sigma: &[f64]) -> Vec<f64> {
     let ts = ops.t.apply(sigma);
     let btu = ops.bt_times(u);
-    ts.iter().zip(&btu).map(|(a, b)| a - b).collect()
+    ts.iter()
+        .zip(&btu)
+        .zip(&ops.gap0)
+        .map(|((a, b), g0)| a - b + g0)
+        .collect()
 }

@@ -69,9 +69,9 @@ enum Backend {
 
 impl Backend {
     fn new(ops: &Operators) -> Result<Self> {
-        match (&ops.t, ops.constraints.kind) {
+        match (ops.t.as_ref(), ops.constraints.kind) {
             (Compliance::Diagonal(t), ConstraintPoints::Nodal) => {
-                let k = ops.k.clone();
+                let k = (*ops.k).clone();
                 let diag = diagonal_positions(&k)?;
                 let base = k.data().to_vec();
                 let coupling = lumped_coupling(ops)?;
@@ -182,12 +182,18 @@ impl Backend {
                     .zip(&comp)
                     .map(|(&(_, b), &c)| b * b / c)
                     .collect();
+                // The voids' initial gap: σ_j = (b_j u_j − g₀_j) / c_j, so the springs pull
+                // with b_j g₀_j / c_j.
+                let mut rhs = ops.f.clone();
+                for ((&(eq, b), &c), &g0) in coupling.iter().zip(&comp).zip(&ops.gap0) {
+                    rhs[eq] += b * g0 / c;
+                }
                 let u = match factored {
                     Some((factor, old)) if changed(old, &springs).len() <= WOODBURY_MAX_RANK => {
                         let idx = changed(old, &springs);
                         woodbury_solve(
                             factor,
-                            &ops.f,
+                            &rhs,
                             &idx.iter()
                                 .map(|&j| (coupling[j].0, springs[j] - old[j]))
                                 .collect::<Vec<_>>(),
@@ -199,7 +205,7 @@ impl Backend {
                             k.data_mut()[diag[eq]] += springs[j];
                         }
                         let llt = chol.factor(k, "penalised Winkler system")?;
-                        let mut u = ops.f.clone();
+                        let mut u = rhs;
                         sparse_solve(&llt, &mut u);
                         *factored = Some((llt, springs.clone()));
                         u
@@ -208,7 +214,8 @@ impl Backend {
                 let sigma = coupling
                     .iter()
                     .zip(&comp)
-                    .map(|(&(eq, b), &c)| b * u[eq] / c)
+                    .zip(&ops.gap0)
+                    .map(|((&(eq, b), &c), &g0)| (b * u[eq] - g0) / c)
                     .collect();
                 Ok((u, sigma, Vec::new()))
             }
@@ -243,6 +250,10 @@ impl Backend {
                 let mut rhs = Mat::<f64>::zeros(total, 1);
                 for (i, &fi) in ops.f.iter().enumerate() {
                     rhs[(i, 0)] = fi;
+                }
+                // Bᵀu − (T + Σ/ε̄)σ = g₀.
+                for (j, &g0) in ops.gap0.iter().enumerate() {
+                    rhs[(n + j, 0)] = g0;
                 }
                 lu.solve_in_place(rhs.as_mut());
                 let u = (0..n).map(|i| rhs[(i, 0)]).collect();

@@ -94,7 +94,7 @@ impl SparseForm {
 /// Solve the unbonded Winkler problem as a sparse QP in the given form.
 pub fn solve_sparse(ops: &Operators, settings: &QpSettings, form: SparseForm) -> Result<Solution> {
     let t0 = Instant::now();
-    let t = match &ops.t {
+    let t = match ops.t.as_ref() {
         Compliance::Diagonal(t) => t,
         Compliance::Dense(_) => {
             return Err(Error::Unsupported(
@@ -209,7 +209,8 @@ pub fn solve_sparse(ops: &Operators, settings: &QpSettings, form: SparseForm) ->
                 .iter()
                 .zip(&gtz)
                 .zip(t)
-                .map(|((a, b), t)| (a + b) / t)
+                .zip(&ops.gap0)
+                .map(|(((a, b), t), g0)| (a + b - g0) / t)
                 .collect();
             let nu = &sol.z[..n_c];
             let mismatch =
@@ -358,9 +359,12 @@ fn lifted(ops: &Operators, t: &[f64]) -> QpData {
     }
     let mut b = ops.f.clone();
     b.extend(std::iter::repeat_n(0.0, n_c));
+    // The voids' initial gap adds g₀ᵀσ to the objective.
+    let mut q = vec![0.0; free.len()];
+    q.extend(ops.gap0.iter().zip(&d).map(|(g, d)| g * d));
     QpData {
         p: p.finish(),
-        q: vec![0.0; n_x],
+        q,
         a: a.finish(),
         b,
         cones: vec![
@@ -420,7 +424,8 @@ fn primal_nodal(ops: &Operators, t: &[f64]) -> QpData {
         p: p.finish(),
         q,
         a: a.finish(),
-        b: vec![0.0; n_sigma],
+        // s − Bᵀu + g₀ ≥ 0: the gap with the voids' initial gap.
+        b: ops.gap0.clone(),
         cones: vec![SupportedConeT::NonnegativeConeT(n_sigma)],
     }
 }
@@ -476,8 +481,15 @@ fn primal_gauss(ops: &Operators, t: &[f64]) -> QpData {
         a.push(c, -1.0);
         a.end_column();
     }
-    let mut q: Vec<f64> = ops.f.iter().map(|v| -v).collect();
-    q.extend(std::iter::repeat_n(0.0, n_c));
+    // With voids s = Bᵀu + Gᵀz − g₀: the objective gains −xᵀ[B; G]T⁻¹g₀.
+    let tg: Vec<f64> = ops.gap0.iter().zip(t).map(|(g, t)| g / t).collect();
+    let mut q: Vec<f64> = ops
+        .f
+        .iter()
+        .zip(ops.b_times(&tg))
+        .map(|(f, v)| -f - v)
+        .collect();
+    q.extend(ops.g_times(&tg).iter().map(|v| -v));
     QpData {
         p: p.finish(),
         q,

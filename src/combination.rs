@@ -1,0 +1,275 @@
+//! Load combinations: every combination is its own unilateral contact problem (a foundation
+//! that cannot pull does not superpose), solved on operators assembled once — K, B and T are
+//! shared, only the load vector and the voids' initial gap change — in parallel where cores
+//! allow, and the envelope of their results with the combination that governs each extreme.
+
+use std::time::Instant;
+
+use rayon::prelude::*;
+use serde::Serialize;
+
+use crate::analysis::{self, Outcome};
+use crate::budget;
+use crate::error::{Error, Result};
+use crate::model::Model;
+use crate::scene::{Combination, Problem};
+use crate::Operators;
+
+/// One combination's run.
+pub struct CombinationRun {
+    /// Its name.
+    pub name: String,
+    /// Its factors per case.
+    pub factors: Vec<(String, f64)>,
+    /// Its model (own P).
+    pub model: Model,
+    /// Solution, report and summary, or why there is none.
+    pub outcome: Result<Outcome>,
+    /// Seconds for this combination: load vector, solve and post-processing.
+    pub seconds: f64,
+}
+
+/// Every combination of a scene on one assembly.
+pub struct Combinations {
+    /// Per combination, in the scene's order.
+    pub runs: Vec<CombinationRun>,
+    /// Seconds to assemble the shared operators (once).
+    pub assemble_s: f64,
+    /// Wall-clock seconds of the whole run.
+    pub total_s: f64,
+}
+
+impl Combinations {
+    /// True when every combination converged.
+    pub fn all_converged(&self) -> bool {
+        self.runs
+            .iter()
+            .all(|r| matches!(&r.outcome, Ok(o) if o.solution.status.converged()))
+    }
+}
+
+/// Solve every combination of `problem` (which must have some) on one assembly; `progress` is
+/// called with each finished combination's name.
+pub fn analyse(problem: &Problem, progress: &(dyn Fn(&str) + Sync)) -> Result<Combinations> {
+    let t0 = Instant::now();
+    let models: Vec<Model> = problem
+        .combinations
+        .iter()
+        .map(|c| c.model.clone())
+        .collect();
+    if models.is_empty() {
+        return Err(Error::invalid(
+            "combination",
+            "the scene has no [[combination]]: solve it as one load set",
+        ));
+    }
+    let (mesh, _) = crate::model::plan_shared_mesh(&models);
+    let first = &models[0];
+    // Combinations run side by side: each needs its own factorisation.
+    let parallel = rayon::current_num_threads().min(models.len()).max(1) as f64;
+    budget::check_mesh(
+        &mesh,
+        first.groups.foundation,
+        first.constraint,
+        &problem.method,
+        problem.memory_limit / parallel,
+    )?;
+    let base = Operators::assemble_shared(&models);
+    let assemble_s = t0.elapsed().as_secs_f64();
+    let runs = problem
+        .combinations
+        .par_iter()
+        .map(|c: &Combination| {
+            let t = Instant::now();
+            let ops = base.loaded(&c.model);
+            let outcome = analysis::run(&c.model, &ops, &problem.method, 0.0);
+            progress(&c.name);
+            CombinationRun {
+                name: c.name.clone(),
+                factors: c.factors.clone(),
+                model: c.model.clone(),
+                outcome,
+                seconds: t.elapsed().as_secs_f64(),
+            }
+        })
+        .collect();
+    Ok(Combinations {
+        runs,
+        assemble_s,
+        total_s: t0.elapsed().as_secs_f64(),
+    })
+}
+
+/// Where an extreme occurs and which combination gives it.
+#[derive(Debug, Clone, Serialize)]
+pub struct Extreme {
+    /// The value, in `unit`.
+    pub value: f64,
+    /// The governing combination.
+    pub combination: String,
+    /// x of the node or element centre (m, or x / L in a dimensionless scene).
+    pub x: f64,
+    /// y.
+    pub y: f64,
+}
+
+/// Largest and smallest values of one quantity over every combination.
+#[derive(Debug, Clone, Serialize)]
+pub struct QuantityEnvelope {
+    /// Name (w, pressure, uplift, mx, my, mxy, qx, qy).
+    pub quantity: &'static str,
+    /// Unit of the values.
+    pub unit: &'static str,
+    /// Largest value.
+    pub max: Extreme,
+    /// Smallest value.
+    pub min: Extreme,
+}
+
+/// Per node or element: largest and smallest over the combinations and which governs each.
+#[derive(Debug, Clone, Default)]
+pub struct PointEnvelope {
+    /// Largest value.
+    pub max: Vec<f64>,
+    /// Combination index of the largest value.
+    pub max_by: Vec<usize>,
+    /// Smallest value.
+    pub min: Vec<f64>,
+    /// Combination index of the smallest value.
+    pub min_by: Vec<usize>,
+}
+
+/// The envelope of a set of converged combinations.
+#[derive(Debug, Clone)]
+pub struct Envelope {
+    /// Combination names, in order (the indices of [`PointEnvelope`]).
+    pub names: Vec<String>,
+    /// Extremes over the plate.
+    pub quantities: Vec<QuantityEnvelope>,
+    /// Node positions.
+    pub node_xy: Vec<(f64, f64)>,
+    /// Element centres.
+    pub element_xy: Vec<(f64, f64)>,
+    /// Node fields: (name, unit, envelope) of w, pressure and uplift.
+    pub nodes: Vec<(&'static str, &'static str, PointEnvelope)>,
+    /// Element fields: mx, my, mxy, qx, qy.
+    pub elements: Vec<(&'static str, &'static str, PointEnvelope)>,
+}
+
+/// Envelope of the converged runs (None when there are none). Fields are taken in physical
+/// units for SI scenes; in a dimensionless scene they are rescaled to the scene's own force
+/// unit (V and σ times each combination's P), since every combination has its own P.
+pub fn envelope(runs: &[CombinationRun]) -> Option<Envelope> {
+    let ok: Vec<(&CombinationRun, &Outcome)> = runs
+        .iter()
+        .filter_map(|r| match &r.outcome {
+            Ok(o) if o.solution.status.converged() => Some((r, o)),
+            _ => None,
+        })
+        .collect();
+    let (first, first_o) = ok.first()?;
+    let physical = first.model.physical.is_some();
+    let units = |si: &'static str, dimless: &'static str| if physical { si } else { dimless };
+    let field = &first_o.report.field;
+    let node_xy: Vec<(f64, f64)> = field
+        .x
+        .iter()
+        .copied()
+        .zip(field.y.iter().copied())
+        .collect();
+    let el = &first_o.report.elements;
+    let element_xy: Vec<(f64, f64)> = el.x.iter().copied().zip(el.y.iter().copied()).collect();
+    let names: Vec<String> = ok.iter().map(|(r, _)| r.name.clone()).collect();
+    // A dimensionless scene's fields are in units of each combination's own P.
+    let scale = |r: &CombinationRun| if physical { 1.0 } else { r.model.load_scale };
+    type Getter = fn(&Outcome) -> &[f64];
+    let node_fields: [(&'static str, &'static str, &'static str, Getter); 3] = [
+        ("w", "m", "F·L²/D", |o| &o.report.field.w),
+        ("pressure", "Pa", "F/L²", |o| &o.report.field.pressure),
+        ("uplift", "m", "F·L²/D", |o| &o.report.field.gap),
+    ];
+    let element_fields: [(&'static str, &'static str, &'static str, Getter); 5] = [
+        ("mx", "N·m/m", "F", |o| &o.report.elements.mx),
+        ("my", "N·m/m", "F", |o| &o.report.elements.my),
+        ("mxy", "N·m/m", "F", |o| &o.report.elements.mxy),
+        ("qx", "N/m", "F/L", |o| &o.report.elements.qx),
+        ("qy", "N/m", "F/L", |o| &o.report.elements.qy),
+    ];
+    let point = |get: Getter| -> PointEnvelope {
+        let n = get(first_o).len();
+        let mut e = PointEnvelope {
+            max: vec![f64::NEG_INFINITY; n],
+            max_by: vec![0; n],
+            min: vec![f64::INFINITY; n],
+            min_by: vec![0; n],
+        };
+        for (k, (r, o)) in ok.iter().enumerate() {
+            let s = scale(r);
+            for (i, &v) in get(o).iter().enumerate().take(n) {
+                let v = v * s;
+                if v > e.max[i] {
+                    e.max[i] = v;
+                    e.max_by[i] = k;
+                }
+                if v < e.min[i] {
+                    e.min[i] = v;
+                    e.min_by[i] = k;
+                }
+            }
+        }
+        e
+    };
+    let mut quantities = Vec::new();
+    let mut summarise = |name, unit, e: &PointEnvelope, xy: &[(f64, f64)]| {
+        let imax = argmax(&e.max);
+        let imin = argmin(&e.min);
+        if let (Some(a), Some(b)) = (imax, imin) {
+            quantities.push(QuantityEnvelope {
+                quantity: name,
+                unit,
+                max: Extreme {
+                    value: e.max[a],
+                    combination: names[e.max_by[a]].clone(),
+                    x: xy[a].0,
+                    y: xy[a].1,
+                },
+                min: Extreme {
+                    value: e.min[b],
+                    combination: names[e.min_by[b]].clone(),
+                    x: xy[b].0,
+                    y: xy[b].1,
+                },
+            });
+        }
+    };
+    let nodes: Vec<_> = node_fields
+        .iter()
+        .map(|&(n, si, dl, g)| (n, units(si, dl), point(g)))
+        .collect();
+    let elements: Vec<_> = element_fields
+        .iter()
+        .map(|&(n, si, dl, g)| (n, units(si, dl), point(g)))
+        .collect();
+    for (n, u, e) in &nodes {
+        summarise(*n, *u, e, &node_xy);
+    }
+    for (n, u, e) in &elements {
+        summarise(*n, *u, e, &element_xy);
+    }
+    Some(Envelope {
+        names,
+        quantities,
+        node_xy,
+        element_xy,
+        nodes,
+        elements,
+    })
+}
+
+fn argmax(v: &[f64]) -> Option<usize> {
+    (0..v.len()).max_by(|&a, &b| v[a].total_cmp(&v[b]))
+}
+
+fn argmin(v: &[f64]) -> Option<usize> {
+    (0..v.len()).min_by(|&a, &b| v[a].total_cmp(&v[b]))
+}

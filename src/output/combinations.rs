@@ -1,0 +1,239 @@
+//! Files and the CLI table of a run over load combinations: a sub-folder per combination with
+//! the standard result set, and the envelope (`envelope.json`, `envelope.csv` and the per-node
+//! and per-element envelopes with the governing combination).
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use serde::Serialize;
+
+use super::{stage_all, Staged};
+use crate::combination::{Combinations, Envelope, PointEnvelope, QuantityEnvelope};
+use crate::error::{Error, Result};
+
+fn csv_err(path: &Path) -> impl Fn(csv::Error) -> Error + '_ {
+    move |e| Error::Io {
+        path: path.display().to_string(),
+        source: std::io::Error::other(e.to_string()),
+    }
+}
+
+/// envelope.json.
+#[derive(Serialize)]
+struct EnvelopeJson<'a> {
+    combinations: Vec<CombinationJson<'a>>,
+    assemble_s: f64,
+    total_s: f64,
+    extremes: &'a [QuantityEnvelope],
+}
+
+#[derive(Serialize)]
+struct CombinationJson<'a> {
+    name: &'a str,
+    factors: std::collections::BTreeMap<&'a str, f64>,
+    converged: bool,
+    status: String,
+    time_s: f64,
+}
+
+/// Write every combination's files into `dir/NAME/` and the envelope beside them, all staged
+/// and moved into place together. Returns the paths written.
+pub fn write_combinations(dir: &Path, c: &Combinations, env: &Envelope) -> Result<Vec<PathBuf>> {
+    let mut st = Staged::new(dir)?;
+    for run in &c.runs {
+        if let Ok(o) = &run.outcome {
+            stage_all(&mut st, &format!("{}/", run.name), &o.report, &o.summary)?;
+        }
+    }
+    let json = EnvelopeJson {
+        combinations: c
+            .runs
+            .iter()
+            .map(|r| CombinationJson {
+                name: &r.name,
+                factors: r.factors.iter().map(|(k, v)| (k.as_str(), *v)).collect(),
+                converged: matches!(&r.outcome, Ok(o) if o.solution.status.converged()),
+                status: match &r.outcome {
+                    Ok(o) => o.solution.status.describe(),
+                    Err(e) => e.to_string(),
+                },
+                time_s: r.seconds,
+            })
+            .collect(),
+        assemble_s: c.assemble_s,
+        total_s: c.total_s,
+        extremes: &env.quantities,
+    };
+    let text = serde_json::to_string_pretty(&json)
+        .map_err(|e| Error::numerical("envelope", format!("cannot serialise: {e}")))?;
+    st.write_text("envelope.json", &text)?;
+
+    let p = st.path("envelope.csv");
+    let mut w = csv::Writer::from_path(&p).map_err(csv_err(&p))?;
+    w.write_record([
+        "quantity",
+        "unit",
+        "extreme",
+        "value",
+        "combination",
+        "x",
+        "y",
+    ])
+    .map_err(csv_err(&p))?;
+    for q in &env.quantities {
+        for (which, e) in [("max", &q.max), ("min", &q.min)] {
+            w.write_record([
+                q.quantity.to_string(),
+                q.unit.to_string(),
+                which.to_string(),
+                format!("{:e}", e.value),
+                e.combination.clone(),
+                format!("{}", e.x),
+                format!("{}", e.y),
+            ])
+            .map_err(csv_err(&p))?;
+        }
+    }
+    w.flush().map_err(|e| Error::Io {
+        path: p.display().to_string(),
+        source: e,
+    })?;
+    for (file, xy, fields) in [
+        ("envelope_nodes.csv", &env.node_xy, &env.nodes),
+        ("envelope_elements.csv", &env.element_xy, &env.elements),
+    ] {
+        let p = st.path(file);
+        write_points(&p, xy, fields, &env.names)?;
+    }
+    st.commit()
+}
+
+/// Per point: x, y, and for each field its max, min and the governing combinations.
+fn write_points(
+    p: &Path,
+    xy: &[(f64, f64)],
+    fields: &[(&'static str, &'static str, PointEnvelope)],
+    names: &[String],
+) -> Result<()> {
+    let mut w = csv::Writer::from_path(p).map_err(csv_err(p))?;
+    let mut header = vec!["x".to_string(), "y".to_string()];
+    for (n, u, _) in fields {
+        header.push(format!("{n}_max [{u}]"));
+        header.push(format!("{n}_max_by"));
+        header.push(format!("{n}_min [{u}]"));
+        header.push(format!("{n}_min_by"));
+    }
+    w.write_record(&header).map_err(csv_err(p))?;
+    for (i, &(x, y)) in xy.iter().enumerate() {
+        let mut row = vec![format!("{x}"), format!("{y}")];
+        for (_, _, e) in fields {
+            row.push(format!("{:e}", e.max[i]));
+            row.push(names[e.max_by[i]].clone());
+            row.push(format!("{:e}", e.min[i]));
+            row.push(names[e.min_by[i]].clone());
+        }
+        w.write_record(&row).map_err(csv_err(p))?;
+    }
+    w.flush().map_err(|e| Error::Io {
+        path: p.display().to_string(),
+        source: e,
+    })
+}
+
+/// The CLI's table: a line per combination, then the governing extremes.
+pub fn combinations_table(
+    title: &str,
+    c: &Combinations,
+    env: Option<&Envelope>,
+    files: Option<(usize, &Path)>,
+) -> String {
+    let mut s = String::new();
+    let physical = c.runs.first().is_some_and(|r| r.model.physical.is_some());
+    let _ = writeln!(s, "liftoff — {title}: {} load combinations", c.runs.len());
+    let _ = writeln!(
+        s,
+        "  operators assembled once in {:.3} s; combinations solved {} at a time; total {:.3} s",
+        c.assemble_s,
+        rayon::current_num_threads(),
+        c.total_s
+    );
+    let (wu, pu, mu_) = if physical {
+        ("w_max mm", "p_max kPa", "m_max kN·m/m")
+    } else {
+        ("V_max", "σ_max", "m_max P")
+    };
+    let _ = writeln!(
+        s,
+        "  {:<16} {:<12} {:>7} {:>10} {:>10} {:>12} {:>8} {:>9}  factors",
+        "combination", "status", "time s", wu, pu, mu_, "contact", "bearing"
+    );
+    for r in &c.runs {
+        let factors: Vec<String> = r.factors.iter().map(|(k, v)| format!("{v}×{k}")).collect();
+        match &r.outcome {
+            Ok(o) => {
+                let sm = &o.summary;
+                let (w, p, m) = if physical {
+                    (
+                        sm.w_max * 1e3,
+                        sm.pressure_max / 1e3,
+                        sm.moments.mx[1].max(sm.moments.my[1]) / 1e3,
+                    )
+                } else {
+                    (
+                        sm.V_max,
+                        sm.pressure_max * sm.dimensionless.mu,
+                        sm.moments.mx[1].max(sm.moments.my[1]),
+                    )
+                };
+                let bearing = sm.bearing.map_or("—".to_string(), |b| {
+                    format!("{:.0} %", 100.0 * b.utilisation)
+                });
+                let status = if sm.converged {
+                    "converged"
+                } else {
+                    "NOT CONVERGED"
+                };
+                let _ = writeln!(
+                    s,
+                    "  {:<16} {:<12} {:>7.3} {:>10.4} {:>10.2} {:>12.3} {:>7.1}% {:>9}  {}",
+                    r.name,
+                    status,
+                    r.seconds,
+                    w,
+                    p,
+                    m,
+                    100.0 * sm.contact_fraction,
+                    bearing,
+                    factors.join(" + ")
+                );
+            }
+            Err(e) => {
+                let _ = writeln!(s, "  {:<16} FAILED: {e}", r.name);
+            }
+        }
+    }
+    if let Some(env) = env {
+        let _ = writeln!(s, "  envelope (governing combination):");
+        for q in &env.quantities {
+            let _ = writeln!(
+                s,
+                "    {:<9} max {:>12.4e} {:<7} ({:<12}) min {:>12.4e} {:<7} ({})",
+                q.quantity,
+                q.max.value,
+                q.unit,
+                q.max.combination,
+                q.min.value,
+                q.unit,
+                q.min.combination
+            );
+        }
+    }
+    if let Some((n, dir)) = files {
+        let _ = writeln!(
+            s,
+            "  files      : {n} in {} (a folder per combination, envelope.json/.csv)",
+            dir.display()
+        );
+    }
+    s
+}
