@@ -360,7 +360,9 @@ fn solve(args: SolveArgs) -> Result<(), Failure> {
     let summary = &analysis.summary;
     // A result that did not converge is not a solution: no files are written for it.
     let written = match (&args.out, summary.converged) {
-        (Some(dir), true) => output::write_all(dir, &analysis.report, summary)?.len(),
+        (Some(dir), true) => {
+            output::write_all(dir, &problem.model, &analysis.report, summary)?.len()
+        }
         _ => 0,
     };
     if args.json {
