@@ -10,7 +10,9 @@
 use liftoff::combination::{self, CombinationRun};
 use liftoff::error::Error;
 use liftoff::method::{Contact, MethodKind};
-use liftoff::model::Model;
+use liftoff::mesh::Mesh;
+use liftoff::model::{Model, SymmetryMode};
+use liftoff::operators::{line_integrals, patch_integrals};
 use liftoff::post::Report;
 use liftoff::scene::{FoundationSpec, ModelBuilder, PlateSpec};
 use liftoff::{analyse, Analysis, Method, Problem};
@@ -457,5 +459,287 @@ fn unbonded_cases_do_not_superpose_but_bonded_ones_do() {
                 method.name()
             );
         }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// 4. Voids.
+// ---------------------------------------------------------------------------------------------
+
+/// A void wider than the bending wavelength under a uniform load. On Winkler soil the
+/// deflection near a disturbance oscillates with wavelength 2π √2 ℓ ≈ 8.9 ℓ; an 8 m void
+/// (≈ 10 ℓ) in a 24 m slab leaves the plate over its middle spanning freely, well away from the
+/// slab's edges. Depth 0.04 m = 200 q/K: a simply supported 8 m square plate would sag
+/// 0.00406 q a⁴ / D ≈ 8 mm (Timoshenko's table), so the void stays open with a margin of 5.
+///
+/// Checks: no pressure at any node whose shape function lies inside the void (QP: its
+/// interior-point tolerance, 1e-6 of q; penalty: the residual tension of its penalty springs,
+/// which the automatic ε̄ drives below 1e-5 of the peak pressure, so 1e-4 of q); there the gap
+/// is the void depth plus the soil's settlement p/K minus the deflection (the gap is measured
+/// from the lowered soil surface; depth as written, in m); equilibrium ∫ p dA = q A with the
+/// integral taken by the trapezoid rule here; and both methods agree.
+#[test]
+fn a_wide_deep_void_carries_nothing_and_stays_open() {
+    let (side, half_void, q) = (24.0, 4.0, 1.0e4);
+    let depth = 200.0 * q / K;
+    let b = slab(side, side)
+        .uniform_load(q)
+        .void([-half_void, half_void], [-half_void, half_void], depth)
+        .elements(60, 60);
+    let pen = solve_with(&b, Method::penalty());
+    let qp = solve_with(&b, Method::qp());
+    let h = side / 60.0;
+    let ell = ell();
+    for (a, p_tol) in [(&pen, 1e-4 * q), (&qp, 1e-6 * q)] {
+        let r = &a.report;
+        let f = &r.field;
+        let name = a.solution.method.name();
+        assert_eq!(a.summary.symmetry, "quarter", "{name}: a centred void keeps the quarter");
+        let mut inside = 0;
+        let mut p_max: f64 = 0.0;
+        let mut gap_err: f64 = 0.0;
+        let mut gap_min = f64::INFINITY;
+        for n in 0..f.x.len() {
+            let d = half_void - f.x[n].abs().max(f.y[n].abs()); // distance inside the void
+            if d >= h - 1e-9 {
+                inside += 1;
+                p_max = p_max.max(f.pressure[n].abs());
+                gap_min = gap_min.min(f.gap[n]);
+                // Winkler: gap = settlement − w + depth = p/K − w + depth.
+                let expected = f.pressure[n] / K - f.w[n] + depth;
+                gap_err = gap_err.max((f.gap[n] - expected).abs());
+            }
+            if d >= ell {
+                assert!(f.gap[n] > 0.0, "{name}: gap at ({}, {})", f.x[n], f.y[n]);
+            }
+        }
+        let load = q * side * side;
+        let reaction = integral(r, &f.pressure);
+        let w_void = f.w[node_at(r, 0.0, 0.0)];
+        eprintln!(
+            "void {name}: {inside} nodes inside, max |p| {p_max:.2e} Pa, min gap {gap_min:.3e} m, |gap − (d + p/K − w)| {gap_err:.2e}, w centre {w_void:.3e}, reaction error {:.2e}, peak p {:.3e}",
+            (reaction - load).abs() / load,
+            r.pressure_max
+        );
+        assert_eq!(inside, 19 * 19, "{name}: nodes inside the void");
+        assert!(p_max < p_tol, "{name}: pressure {p_max:e} Pa inside the void");
+        assert!(gap_min > 0.0, "{name}: the plate touches the void's bottom");
+        assert!(
+            gap_err < 1e-9 * depth,
+            "{name}: gap ≠ depth + p/K − w inside the void ({gap_err:e} m)"
+        );
+        assert!(
+            (reaction - load).abs() < 1e-8 * load,
+            "{name}: ∫ p dA = {reaction} N, load {load} N"
+        );
+        // The plate spans the void: its edges carry the void's share of the load.
+        assert!(r.pressure_max > 1.5 * q, "{name}: no edge reaction around the void");
+    }
+    let dw = rel_diff(&pen.report.field.w, &qp.report.field.w);
+    let dp = rel_diff(&pen.report.field.pressure, &qp.report.field.pressure);
+    eprintln!("void penalty vs qp: w {dw:.2e}, pressure {dp:.2e}");
+    // Measured 6e-6: the penalty's O(ε̄) error at the automatic ε̄.
+    assert!(dw < 1e-4 && dp < 1e-4, "penalty vs QP over a void: w {dw:e}, p {dp:e}");
+}
+
+// ---------------------------------------------------------------------------------------------
+// 5. Line loads.
+// ---------------------------------------------------------------------------------------------
+
+/// (node, value) pairs summed into a vector over the mesh's nodes.
+fn dense(mesh: &Mesh, pairs: Vec<(usize, f64)>) -> Vec<f64> {
+    let mut v = vec![0.0; mesh.n_nodes()];
+    for (n, x) in pairs {
+        v[n] += x;
+    }
+    v
+}
+
+/// Σ v_i, Σ v_i x_i, Σ v_i y_i of a nodal vector.
+fn moments(mesh: &Mesh, v: &[f64]) -> [f64; 3] {
+    let mut m = [0.0; 3];
+    for (n, &x) in v.iter().enumerate() {
+        let (px, py) = mesh.node_xy(n);
+        m[0] += x;
+        m[1] += x * px;
+        m[2] += x * py;
+    }
+    m
+}
+
+/// The consistent nodal vector of a unit line load, ∫ f_i ds, sums to the segment's length
+/// (partition of unity) and its first moments Σ x_i ∫ f_i ds = ∫ x ds put the resultant at the
+/// segment's midpoint (bilinear shape functions reproduce x and y exactly). Oblique segments
+/// crossing many element lines, one lying on a grid line, one through grid vertices, one
+/// inside a single element; on a half model, the part of a segment on the kept side, and half
+/// of one lying on the symmetry line. Reference: the segment's geometry; round-off 1e-13.
+#[test]
+fn line_load_vector_has_the_segments_resultant_and_centroid() {
+    // μ = 0.6 plate, 10 × 6 elements of 0.2 × 0.2 (unit system: lengths / L).
+    let full = Mesh::new(2.0, 1.2, [10, 6], false, false);
+    let segments: [([f64; 2], [f64; 2]); 5] = [
+        ([-0.83, -0.41], [0.67, 0.52]),
+        ([0.95, 0.2], [-0.9, 0.2]),
+        ([-1.0, -0.6], [1.0, 0.6]),
+        ([0.31, 0.05], [0.38, 0.12]),
+        ([-1.0, 0.6], [1.0, 0.6]),
+    ];
+    let check = |mesh: &Mesh, from: [f64; 2], to: [f64; 2], want: [f64; 3], what: &str| {
+        let v = dense(mesh, line_integrals(mesh, from, to));
+        let got = moments(mesh, &v);
+        for k in 0..3 {
+            assert!(
+                (got[k] - want[k]).abs() < 1e-13 * want[0],
+                "line {from:?} → {to:?} ({what}): moment {k} = {}, want {}",
+                got[k],
+                want[k]
+            );
+        }
+    };
+    for (from, to) in segments {
+        let len = (to[0] - from[0]).hypot(to[1] - from[1]);
+        let mid = [0.5 * (from[0] + to[0]), 0.5 * (from[1] + to[1])];
+        check(&full, from, to, [len, len * mid[0], len * mid[1]], "full");
+    }
+    // Half model about x = 0 (keeps x ≥ 0): the part from x = 0 on.
+    let half = Mesh::new(2.0, 1.2, [10, 6], true, false);
+    let (from, to): ([f64; 2], [f64; 2]) = ([-0.5, 0.1], [0.7, 0.34]);
+    let s0 = 0.5 / 1.2; // where the segment crosses x = 0
+    let cut = [0.0, from[1] + s0 * (to[1] - from[1])];
+    let len = (to[0] - cut[0]).hypot(to[1] - cut[1]);
+    check(
+        &half,
+        from,
+        to,
+        [len, len * 0.5 * to[0], len * 0.5 * (cut[1] + to[1])],
+        "half, crossing",
+    );
+    // On the symmetry line: half of it belongs to the model.
+    check(
+        &half,
+        [0.0, -0.5],
+        [0.0, 0.3],
+        [0.4, 0.0, 0.4 * -0.1],
+        "half, on the line",
+    );
+}
+
+/// A line load is the limit of a thin patch of width δ carrying the same force per length
+/// (pressure q/δ) on the same mesh. Inside an element row the shape functions are linear
+/// across the strip, so its average equals the value on the line: the vectors agree to
+/// round-off for any δ. On a grid line the strip straddles the kink of the nodes' hat
+/// functions: their average over the strip is 1 − δ/(4h) on the line and δ/(8h) next to it,
+/// so the largest difference is exactly δ/(4h) of the largest entry — linear in δ, to zero.
+#[test]
+fn line_load_is_the_limit_of_a_thin_patch() {
+    let mesh = Mesh::new(2.0, 1.2, [10, 6], false, false);
+    let h = 0.2;
+    let (x0, x1) = (-0.7, 0.5);
+    // Largest difference between the strip's vector (divided by δ) and the line's, relative.
+    let mismatch = |y0: f64, delta: f64| {
+        let y = [y0 - 0.5 * delta, y0 + 0.5 * delta];
+        let patch = dense(&mesh, patch_integrals(&mesh, [x0, x1], y));
+        let patch: Vec<f64> = patch.iter().map(|a| a / delta).collect();
+        let line = dense(&mesh, line_integrals(&mesh, [x0, y0], [x1, y0]));
+        rel_diff(&patch, &line)
+    };
+    for delta in [0.1, 0.01, 1e-4] {
+        // The strip's edges y0 ± δ/2 are rounded to ~1e-16 (lengths are O(1) here), which the
+        // division by δ turns into ~1e-16/δ of the average: 1e-12 at δ = 1e-4.
+        let round_off = 1e-16 / delta;
+        let d = mismatch(0.13, delta);
+        eprintln!("strip inside a row, δ = {delta}: {d:.2e}");
+        assert!(
+            d < 10.0 * round_off,
+            "thin patch vs line inside a row, δ = {delta}: {d:e}"
+        );
+        let d = mismatch(0.2, delta);
+        let want = delta / (4.0 * h);
+        eprintln!("strip on a grid line, δ = {delta}: {d:.6e}, δ/(4h) = {want:.6e}");
+        assert!(
+            (d - want).abs() < 10.0 * round_off,
+            "thin patch vs line on a grid line, δ = {delta}: {d:e}, want δ/(4h) = {want:e}"
+        );
+    }
+}
+
+/// The same limit on whole solves: a 100 kN/m line load 0.4 m from the edge of a 6 × 4 m slab
+/// (it lifts the far side) and the 5 cm strip of 2 MPa that carries it, with 25 cm elements,
+/// the strip inside an element row: the load vectors agree to round-off (previous test), so
+/// the unbonded answers must too (1e-10: the inputs differ only in their last bits).
+#[test]
+fn a_line_load_scene_matches_its_thin_patch_scene() {
+    let (y0, delta, q_line) = (1.6, 0.05, 1.0e5);
+    let base = || slab(6.0, 4.0).uniform_load(SELF_WEIGHT).elements(24, 16);
+    let line = base().line_load([-2.2, y0], [1.9, y0], q_line);
+    let strip = base().patch_load(
+        [-2.2, 1.9],
+        [y0 - 0.5 * delta, y0 + 0.5 * delta],
+        q_line / delta,
+    );
+    for method in [Method::penalty(), Method::qp()] {
+        let a = solve_with(&line, method.clone());
+        let b = solve_with(&strip, method.clone());
+        let dw = rel_diff(&a.report.field.w, &b.report.field.w);
+        let dp = rel_diff(&a.report.field.pressure, &b.report.field.pressure);
+        eprintln!(
+            "{} line vs strip: w {dw:.2e}, p {dp:.2e}, contact {:.3}",
+            method.name(),
+            a.report.contact_fraction
+        );
+        assert!(
+            a.report.contact_fraction < 0.9,
+            "the line load should lift part of the slab"
+        );
+        assert!(
+            dw < 1e-10 && dp < 1e-10,
+            "{}: line vs thin strip: w {dw:e}, pressure {dp:e}",
+            method.name()
+        );
+    }
+}
+
+/// A wall along the symmetry line x = 0 of a half model: the model carries half of it (the
+/// half on its side of the line) and must reproduce the whole-plate model. A column on the
+/// wall off the y axis keeps the scene from being quartered. The full model is the reference;
+/// bonded and penalty solve the same equations (1e-10), the QP to its tolerance (1e-7).
+#[test]
+fn a_wall_on_the_symmetry_line_of_a_half_model_matches_the_full_model() {
+    let b = slab(6.0, 4.0)
+        .uniform_load(SELF_WEIGHT)
+        .line_load([0.0, -2.0], [0.0, 2.0], 5.0e4)
+        .point_load(0.0, 1.0, 1.0e5)
+        .elements(24, 16);
+    let full = b.clone().symmetry(SymmetryMode::None);
+    for (method, tol) in [
+        (Method::Bonded, 1e-10),
+        (Method::penalty(), 1e-10),
+        (Method::qp(), 1e-7),
+    ] {
+        let h = solve_with(&b, method.clone());
+        let f = solve_with(&full, method.clone());
+        assert_eq!(h.summary.symmetry, "half-x", "{}: wall on x = 0", method.name());
+        assert_eq!(f.summary.symmetry, "full");
+        let dw = rel_diff(&h.report.field.w, &f.report.field.w);
+        let dp = rel_diff(&h.report.field.pressure, &f.report.field.pressure);
+        let dm = rel_diff(&h.report.elements.mx, &f.report.elements.mx);
+        eprintln!(
+            "{} half vs full: w {dw:.2e}, p {dp:.2e}, mx {dm:.2e}, contact {:.3}",
+            method.name(),
+            f.report.contact_fraction
+        );
+        assert!(
+            dw < tol && dp < tol && dm < tol,
+            "{}: half vs full model: w {dw:e}, pressure {dp:e}, mx {dm:e}",
+            method.name()
+        );
+        // The wall's load is all there: 4 × 50 kN + 100 kN + self-weight.
+        let load = 4.0 * 5.0e4 + 1.0e5 + SELF_WEIGHT * 24.0;
+        let reaction = integral(&h.report, &h.report.field.pressure);
+        assert!(
+            (reaction - load).abs() < 1e-8 * load,
+            "{}: half model reaction {reaction} N, load {load} N",
+            method.name()
+        );
     }
 }
