@@ -743,3 +743,184 @@ fn a_wall_on_the_symmetry_line_of_a_half_model_matches_the_full_model() {
         );
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// 6. Winkler zones.
+// ---------------------------------------------------------------------------------------------
+
+/// A zone of modulus K2 over the whole plate is the uniform subgrade K2: the zoned compliance
+/// (1/K) ∫ f_i (K/K2) equals (1/K2) ∫ f_i up to round-off. A column near the edge lifts part of
+/// the slab, so the unbonded answers test the contact problem too. Bonded and QP solve the same
+/// equations (1e-10; QP to its tolerance, 1e-7); the penalty iteration scales its springs by
+/// the scene's reference modulus K, not K2, so it agrees to its O(ε̄) error (1e-4).
+#[test]
+fn a_zone_over_the_whole_plate_is_the_uniform_subgrade() {
+    let k2 = 2.0e7;
+    let loads = |b: ModelBuilder| {
+        b.uniform_load(SELF_WEIGHT)
+            .point_load(2.5, 0.5, 2.0e5)
+            .elements(24, 16)
+    };
+    let zoned = loads(slab(6.0, 4.0).zone([-3.0, 3.0], [-2.0, 2.0], k2));
+    let mut plate = PlateSpec::new(6.0, 4.0, H, E, NU);
+    plate.thermal_expansion = Some(ALPHA);
+    let uniform = loads(
+        Model::builder()
+            .plate(plate)
+            .foundation(FoundationSpec::winkler(k2)),
+    );
+    for (method, tol) in [
+        (Method::Bonded, 1e-10),
+        (Method::qp(), 1e-7),
+        (Method::penalty(), 1e-4),
+    ] {
+        let z = solve_with(&zoned, method.clone());
+        let u = solve_with(&uniform, method.clone());
+        let dw = rel_diff(&z.report.field.w, &u.report.field.w);
+        let dp = rel_diff(&z.report.field.pressure, &u.report.field.pressure);
+        eprintln!(
+            "{} zone everywhere vs K2: w {dw:.2e}, p {dp:.2e}, contact {:.3}",
+            method.name(),
+            u.report.contact_fraction
+        );
+        assert!(
+            dw < tol && dp < tol,
+            "{}: whole-plate zone vs uniform K2: w {dw:e}, pressure {dp:e}",
+            method.name()
+        );
+    }
+}
+
+/// A soft zone under one side settles that side more. Bonded, uniform load q on a 40 × 16 m
+/// slab whose right half rests on K2 = K/2: far from the zone's edge each half translates
+/// rigidly, w = q/K on the left and q/K2 on the right, pressure q on both. The step's
+/// disturbance is at most the jump q/K2 − q/K = q/K and decays like √2 e^(−x/(√2 ℓ_i)), slowest
+/// on the soft side (ℓ2 = 2^¼ ℓ); 10 m from the step (12.4 ℓ, 10.5 ℓ2) that is below
+/// 9e-4 q/K, so 2e-3 of q/K bounds both deflections (and, times K or K2, the pressures).
+#[test]
+fn a_soft_zone_settles_its_side_by_q_over_its_modulus() {
+    let (q, k2) = (1.0e4, 0.5 * K);
+    let b = slab(40.0, 16.0)
+        .uniform_load(q)
+        .zone([0.0, 20.0], [-8.0, 8.0], k2)
+        .elements(100, 40);
+    let a = solve_with(&b, Method::Bonded);
+    assert_eq!(a.summary.symmetry, "half-y", "a zone on one side keeps only y = 0");
+    let r = &a.report;
+    let (left, right) = (node_at(r, -10.0, 0.0), node_at(r, 10.0, 0.0));
+    let (wl, wr) = (r.field.w[left], r.field.w[right]);
+    eprintln!(
+        "soft zone: w left {wl:.6e} (q/K {:.6e}), right {wr:.6e} (q/K2 {:.6e}), ratio {:.5}, p {:.2} {:.2}",
+        q / K,
+        q / k2,
+        wr / wl,
+        r.field.pressure[left],
+        r.field.pressure[right]
+    );
+    assert!(
+        (wl - q / K).abs() < 2e-3 * q / K,
+        "stiff side: w = {wl:e}, q/K = {:e}",
+        q / K
+    );
+    assert!(
+        (wr - q / k2).abs() < 2e-3 * q / K,
+        "soft side: w = {wr:e}, q/K2 = {:e}",
+        q / k2
+    );
+    for (side, n) in [("stiff", left), ("soft", right)] {
+        let p = r.field.pressure[n];
+        assert!((p - q).abs() < 2e-3 * q, "{side} side: pressure {p} Pa, q = {q}");
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// 7. Symmetry with voids and zones.
+// ---------------------------------------------------------------------------------------------
+
+/// Voids and zones enter the symmetry decision like loads: one off an axis turns that
+/// reduction off, a mirrored pair (same depth, same modulus) keeps it, a pair that differs
+/// does not. Self-weight alone would quarter the 6 × 4 m slab.
+#[test]
+fn voids_and_zones_off_an_axis_turn_the_reduction_off() {
+    let base = || slab(6.0, 4.0).uniform_load(SELF_WEIGHT).elements(24, 16);
+    let d = 1e-3;
+    let cases: [(&str, ModelBuilder, &str); 10] = [
+        ("no void", base(), "quarter"),
+        ("centred void", base().void([-1.0, 1.0], [-0.5, 0.5], d), "quarter"),
+        ("void right of x = 0", base().void([0.5, 1.5], [-0.5, 0.5], d), "half-y"),
+        ("void above y = 0", base().void([-0.5, 0.5], [0.2, 0.8], d), "half-x"),
+        ("void off both", base().void([0.5, 1.5], [0.2, 0.8], d), "full"),
+        (
+            "mirrored voids",
+            base()
+                .void([0.5, 1.5], [-0.5, 0.5], d)
+                .void([-1.5, -0.5], [-0.5, 0.5], d),
+            "quarter",
+        ),
+        (
+            "mirrored voids, other depth",
+            base()
+                .void([0.5, 1.5], [-0.5, 0.5], d)
+                .void([-1.5, -0.5], [-0.5, 0.5], 2.0 * d),
+            "half-y",
+        ),
+        ("zone right of x = 0", base().zone([1.0, 3.0], [-2.0, 2.0], 2e7), "half-y"),
+        (
+            "mirrored zones",
+            base()
+                .zone([1.0, 3.0], [-2.0, 2.0], 2e7)
+                .zone([-3.0, -1.0], [-2.0, 2.0], 2e7),
+            "quarter",
+        ),
+        (
+            "mirrored zones, other modulus",
+            base()
+                .zone([1.0, 3.0], [-2.0, 2.0], 2e7)
+                .zone([-3.0, -1.0], [-2.0, 2.0], 3e7),
+            "half-y",
+        ),
+    ];
+    for (what, b, want) in cases {
+        let model = b
+            .build()
+            .unwrap_or_else(|e| panic!("{what}: scene rejected: {e}"));
+        let (mesh, _) = model.plan_mesh();
+        assert_eq!(mesh.symmetry_name(), want, "{what}: planned mesh");
+    }
+    // And the solve uses it: the summary of an off-axis void.
+    let a = solve_with(&base().void([0.5, 1.5], [0.2, 0.8], d), Method::penalty());
+    assert_eq!(a.summary.symmetry, "full", "off-axis void: the solve's model");
+    assert!(!a.ops.mesh.sym_x && !a.ops.mesh.sym_y);
+}
+
+/// A quarter model with a mirrored pair of voids and of zones must give the whole-plate
+/// model's answer: the reduced model integrates the voids' initial gap and the zones'
+/// compliance over its own part only. Same equations, penalty iteration (1e-10).
+#[test]
+fn mirrored_voids_and_zones_in_a_quarter_model_match_the_full_model() {
+    let q = 2.0e4;
+    let b = slab(6.0, 4.0)
+        .uniform_load(q)
+        .void([0.7, 1.6], [-0.6, 0.6], 2.0 * q / K)
+        .void([-1.6, -0.7], [-0.6, 0.6], 2.0 * q / K)
+        .zone([-3.0, -2.1], [-2.0, 2.0], 1.5e7)
+        .zone([2.1, 3.0], [-2.0, 2.0], 1.5e7)
+        .elements(24, 16);
+    let quarter = solve_with(&b, Method::penalty());
+    let full = solve_with(&b.clone().symmetry(SymmetryMode::None), Method::penalty());
+    assert_eq!(quarter.summary.symmetry, "quarter");
+    assert_eq!(full.summary.symmetry, "full");
+    let dw = rel_diff(&quarter.report.field.w, &full.report.field.w);
+    let dp = rel_diff(&quarter.report.field.pressure, &full.report.field.pressure);
+    let dg = rel_diff(&quarter.report.field.gap, &full.report.field.gap);
+    eprintln!(
+        "quarter vs full with voids and zones: w {dw:.2e}, p {dp:.2e}, gap {dg:.2e}, contact {:.3}",
+        full.report.contact_fraction
+    );
+    // The voids (2 q/K deep) stay partly open: some contact there, some gap.
+    assert!(full.report.contact_fraction < 1.0 && max_abs(&full.report.field.gap) > 0.0);
+    assert!(
+        dw < 1e-10 && dp < 1e-10 && dg < 1e-10,
+        "quarter vs full: w {dw:e}, pressure {dp:e}, gap {dg:e}"
+    );
+}
