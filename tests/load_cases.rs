@@ -9,8 +9,8 @@
 
 use liftoff::combination::{self, CombinationRun};
 use liftoff::error::Error;
-use liftoff::method::{Contact, MethodKind};
 use liftoff::mesh::Mesh;
+use liftoff::method::{Contact, MethodKind};
 use liftoff::model::{Model, SymmetryMode};
 use liftoff::operators::{line_integrals, patch_integrals};
 use liftoff::post::Report;
@@ -265,14 +265,22 @@ fn free_curling_lifts_corners_at_night_and_the_centre_by_day() {
     let (cn, kn) = (node_at(rn, 0.0, 0.0), node_at(rn, side / 2.0, side / 2.0));
     let (cd, kd) = (node_at(rd, 0.0, 0.0), node_at(rd, side / 2.0, side / 2.0));
     // Night: corners up (w < 0 on Winkler is a gap), centre bearing.
-    assert!(rn.field.w[kn] < 0.0, "night: corner w = {:e}", rn.field.w[kn]);
+    assert!(
+        rn.field.w[kn] < 0.0,
+        "night: corner w = {:e}",
+        rn.field.w[kn]
+    );
     assert!(rn.field.gap[kn] > 0.0, "night: corner gap");
     assert!(
         rn.field.pressure[cn] > SELF_WEIGHT,
         "night: the centre carries more than the self-weight"
     );
     // Day: centre up, corners bearing.
-    assert!(rd.field.gap[cd] > 0.0, "day: centre gap = {:e}", rd.field.gap[cd]);
+    assert!(
+        rd.field.gap[cd] > 0.0,
+        "day: centre gap = {:e}",
+        rd.field.gap[cd]
+    );
     assert!(
         rd.field.pressure[cd].abs() < 1e-3 * SELF_WEIGHT,
         "day: no pressure at the lifted centre"
@@ -287,10 +295,17 @@ fn free_curling_lifts_corners_at_night_and_the_centre_by_day() {
 // 2–3. Combinations: each is its own contact problem; superposition holds only when bonded.
 // ---------------------------------------------------------------------------------------------
 
-/// Dead (self-weight), live (a column and a wall) and temperature cases on a 6 × 4 m slab; the
-/// column is off both axes, so every combination is solved on the whole plate.
+/// A void 0.2 mm deep (about twice the self-weight's settlement q/K) under part of the slab:
+/// its initial gap, in units of each combination's own P L²/D, differs from one combination to
+/// the next.
+fn with_void(b: ModelBuilder) -> ModelBuilder {
+    b.void([-2.5, -1.0], [0.25, 1.5], 2.0e-4)
+}
+
+/// Dead (self-weight), live (a column and a wall) and temperature cases on a 6 × 4 m slab with
+/// a void; the column is off both axes, so every combination is solved on the whole plate.
 fn cased_slab() -> ModelBuilder {
-    slab(6.0, 4.0)
+    with_void(slab(6.0, 4.0))
         .uniform_load(SELF_WEIGHT)
         .in_case("dead")
         .point_load(1.5, 1.0, 2.0e5)
@@ -304,7 +319,7 @@ fn cased_slab() -> ModelBuilder {
 
 /// The loads of `cased_slab` with the factors applied by hand, as one scene without cases.
 fn factored_slab(dead: f64, live: f64, temp: f64) -> ModelBuilder {
-    let mut b = slab(6.0, 4.0).uniform_load(dead * SELF_WEIGHT);
+    let mut b = with_void(slab(6.0, 4.0)).uniform_load(dead * SELF_WEIGHT);
     if live != 0.0 {
         b = b
             .point_load(1.5, 1.0, live * 2.0e5)
@@ -373,8 +388,17 @@ fn a_combination_equals_its_factored_loads_as_one_scene() {
             assert_eq!(run.name, name);
             let single = solve_with(&factored_slab(dead, live, temp), method.clone());
             let (rc, rs) = (report_of(run), &single.report);
-            let fields: [(&str, &[f64], &[f64]); 6] = [
+            let open = node_at(rs, -1.75, 0.75);
+            eprintln!(
+                "{} {name}: contact {:.3}, gap in the void {:.2e} m",
+                method.name(),
+                rs.contact_fraction,
+                rs.field.gap[open]
+            );
+            assert!(rs.field.gap[open] > 0.0, "{name}: the void stays partly open");
+            let fields: [(&str, &[f64], &[f64]); 7] = [
                 ("V", &rc.field.v, &rs.field.v),
+                ("gap", &rc.field.gap, &rs.field.gap),
                 ("σ", &rc.field.sigma, &rs.field.sigma),
                 ("w", &rc.field.w, &rs.field.w),
                 ("pressure", &rc.field.pressure, &rs.field.pressure),
@@ -420,7 +444,11 @@ fn unbonded_cases_do_not_superpose_but_bonded_ones_do() {
         .combination("column", &[("column", 1.0)])
         .combination("both", &[("dead", 1.0), ("column", 1.0)]);
     let mismatch = |runs: &[CombinationRun]| {
-        let (a, c, both) = (report_of(&runs[0]), report_of(&runs[1]), report_of(&runs[2]));
+        let (a, c, both) = (
+            report_of(&runs[0]),
+            report_of(&runs[1]),
+            report_of(&runs[2]),
+        );
         let sum = |f: fn(&Report) -> &[f64]| -> Vec<f64> {
             f(a).iter().zip(f(c)).map(|(x, y)| x + y).collect()
         };
@@ -494,7 +522,10 @@ fn a_wide_deep_void_carries_nothing_and_stays_open() {
         let r = &a.report;
         let f = &r.field;
         let name = a.solution.method.name();
-        assert_eq!(a.summary.symmetry, "quarter", "{name}: a centred void keeps the quarter");
+        assert_eq!(
+            a.summary.symmetry, "quarter",
+            "{name}: a centred void keeps the quarter"
+        );
         let mut inside = 0;
         let mut p_max: f64 = 0.0;
         let mut gap_err: f64 = 0.0;
@@ -522,7 +553,10 @@ fn a_wide_deep_void_carries_nothing_and_stays_open() {
             r.pressure_max
         );
         assert_eq!(inside, 19 * 19, "{name}: nodes inside the void");
-        assert!(p_max < p_tol, "{name}: pressure {p_max:e} Pa inside the void");
+        assert!(
+            p_max < p_tol,
+            "{name}: pressure {p_max:e} Pa inside the void"
+        );
         assert!(gap_min > 0.0, "{name}: the plate touches the void's bottom");
         assert!(
             gap_err < 1e-9 * depth,
@@ -533,13 +567,19 @@ fn a_wide_deep_void_carries_nothing_and_stays_open() {
             "{name}: ∫ p dA = {reaction} N, load {load} N"
         );
         // The plate spans the void: its edges carry the void's share of the load.
-        assert!(r.pressure_max > 1.5 * q, "{name}: no edge reaction around the void");
+        assert!(
+            r.pressure_max > 1.5 * q,
+            "{name}: no edge reaction around the void"
+        );
     }
     let dw = rel_diff(&pen.report.field.w, &qp.report.field.w);
     let dp = rel_diff(&pen.report.field.pressure, &qp.report.field.pressure);
     eprintln!("void penalty vs qp: w {dw:.2e}, pressure {dp:.2e}");
     // Measured 6e-6: the penalty's O(ε̄) error at the automatic ε̄.
-    assert!(dw < 1e-4 && dp < 1e-4, "penalty vs QP over a void: w {dw:e}, p {dp:e}");
+    assert!(
+        dw < 1e-4 && dp < 1e-4,
+        "penalty vs QP over a void: w {dw:e}, p {dp:e}"
+    );
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -718,7 +758,12 @@ fn a_wall_on_the_symmetry_line_of_a_half_model_matches_the_full_model() {
     ] {
         let h = solve_with(&b, method.clone());
         let f = solve_with(&full, method.clone());
-        assert_eq!(h.summary.symmetry, "half-x", "{}: wall on x = 0", method.name());
+        assert_eq!(
+            h.summary.symmetry,
+            "half-x",
+            "{}: wall on x = 0",
+            method.name()
+        );
         assert_eq!(f.summary.symmetry, "full");
         let dw = rel_diff(&h.report.field.w, &f.report.field.w);
         let dp = rel_diff(&h.report.field.pressure, &f.report.field.pressure);
@@ -805,7 +850,10 @@ fn a_soft_zone_settles_its_side_by_q_over_its_modulus() {
         .zone([0.0, 20.0], [-8.0, 8.0], k2)
         .elements(100, 40);
     let a = solve_with(&b, Method::Bonded);
-    assert_eq!(a.summary.symmetry, "half-y", "a zone on one side keeps only y = 0");
+    assert_eq!(
+        a.summary.symmetry, "half-y",
+        "a zone on one side keeps only y = 0"
+    );
     let r = &a.report;
     let (left, right) = (node_at(r, -10.0, 0.0), node_at(r, 10.0, 0.0));
     let (wl, wr) = (r.field.w[left], r.field.w[right]);
@@ -829,7 +877,10 @@ fn a_soft_zone_settles_its_side_by_q_over_its_modulus() {
     );
     for (side, n) in [("stiff", left), ("soft", right)] {
         let p = r.field.pressure[n];
-        assert!((p - q).abs() < 2e-3 * q, "{side} side: pressure {p} Pa, q = {q}");
+        assert!(
+            (p - q).abs() < 2e-3 * q,
+            "{side} side: pressure {p} Pa, q = {q}"
+        );
     }
 }
 
@@ -846,10 +897,26 @@ fn voids_and_zones_off_an_axis_turn_the_reduction_off() {
     let d = 1e-3;
     let cases: [(&str, ModelBuilder, &str); 10] = [
         ("no void", base(), "quarter"),
-        ("centred void", base().void([-1.0, 1.0], [-0.5, 0.5], d), "quarter"),
-        ("void right of x = 0", base().void([0.5, 1.5], [-0.5, 0.5], d), "half-y"),
-        ("void above y = 0", base().void([-0.5, 0.5], [0.2, 0.8], d), "half-x"),
-        ("void off both", base().void([0.5, 1.5], [0.2, 0.8], d), "full"),
+        (
+            "centred void",
+            base().void([-1.0, 1.0], [-0.5, 0.5], d),
+            "quarter",
+        ),
+        (
+            "void right of x = 0",
+            base().void([0.5, 1.5], [-0.5, 0.5], d),
+            "half-y",
+        ),
+        (
+            "void above y = 0",
+            base().void([-0.5, 0.5], [0.2, 0.8], d),
+            "half-x",
+        ),
+        (
+            "void off both",
+            base().void([0.5, 1.5], [0.2, 0.8], d),
+            "full",
+        ),
         (
             "mirrored voids",
             base()
@@ -864,7 +931,11 @@ fn voids_and_zones_off_an_axis_turn_the_reduction_off() {
                 .void([-1.5, -0.5], [-0.5, 0.5], 2.0 * d),
             "half-y",
         ),
-        ("zone right of x = 0", base().zone([1.0, 3.0], [-2.0, 2.0], 2e7), "half-y"),
+        (
+            "zone right of x = 0",
+            base().zone([1.0, 3.0], [-2.0, 2.0], 2e7),
+            "half-y",
+        ),
         (
             "mirrored zones",
             base()
@@ -889,7 +960,10 @@ fn voids_and_zones_off_an_axis_turn_the_reduction_off() {
     }
     // And the solve uses it: the summary of an off-axis void.
     let a = solve_with(&base().void([0.5, 1.5], [0.2, 0.8], d), Method::penalty());
-    assert_eq!(a.summary.symmetry, "full", "off-axis void: the solve's model");
+    assert_eq!(
+        a.summary.symmetry, "full",
+        "off-axis void: the solve's model"
+    );
     assert!(!a.ops.mesh.sym_x && !a.ops.mesh.sym_y);
 }
 
@@ -923,4 +997,253 @@ fn mirrored_voids_and_zones_in_a_quarter_model_match_the_full_model() {
         dw < 1e-10 && dp < 1e-10 && dg < 1e-10,
         "quarter vs full: w {dw:e}, pressure {dp:e}, gap {dg:e}"
     );
+}
+
+// ---------------------------------------------------------------------------------------------
+// 8. Errors: typed, naming the field.
+// ---------------------------------------------------------------------------------------------
+
+/// The field and message of an `Error::Invalid`, or a panic naming what came instead.
+fn invalid<T>(what: &str, r: liftoff::Result<T>) -> (String, String) {
+    match r {
+        Err(Error::Invalid { field, message }) => (field, message),
+        Err(e) => panic!("{what}: expected Error::Invalid, got {e}"),
+        Ok(_) => panic!("{what}: accepted"),
+    }
+}
+
+#[test]
+fn malformed_cases_combinations_voids_and_zones_are_rejected_with_their_field() {
+    let q = SELF_WEIGHT;
+    let base = || {
+        slab(6.0, 4.0)
+            .uniform_load(q)
+            .in_case("dead")
+            .elements(8, 8)
+    };
+    let mut no_alpha = Model::builder()
+        .plate(PlateSpec::new(6.0, 4.0, H, E, NU))
+        .foundation(FoundationSpec::winkler(K));
+    no_alpha = no_alpha.uniform_load(q).temperature_load(10.0);
+    let cases: Vec<(&str, ModelBuilder, &str, &[&str])> = vec![
+        (
+            "combination naming an unknown case",
+            base().combination("ULS", &[("dead", 1.35), ("live", 1.5)]),
+            "combination[0].factors",
+            &["`live`", "dead"],
+        ),
+        (
+            "temperature load without thermal_expansion",
+            no_alpha,
+            "plate.thermal_expansion",
+            &["load[1]", "1/K"],
+        ),
+        (
+            "zone on a half-space",
+            Model::builder()
+                .plate(PlateSpec::new(6.0, 4.0, H, E, NU))
+                .foundation(FoundationSpec::half_space(1e8, 0.3))
+                .uniform_load(q)
+                .zone([0.0, 1.0], [0.0, 1.0], 2e7),
+            "foundation.zone[0]",
+            &["Winkler"],
+        ),
+        (
+            "void with bonded contact",
+            base()
+                .void([0.0, 1.0], [0.0, 1.0], 1e-3)
+                .solver(Contact::Bonded, MethodKind::Penalty),
+            "void",
+            &["unbonded"],
+        ),
+        (
+            "overlapping zones",
+            base()
+                .zone([0.0, 1.0], [0.0, 1.0], 2e7)
+                .zone([0.5, 1.5], [0.5, 1.5], 3e7),
+            "foundation.zone[1]",
+            &["overlaps foundation.zone[0]"],
+        ),
+        (
+            "duplicate combination names",
+            base()
+                .combination("ULS", &[("dead", 1.35)])
+                .combination("ULS", &[("dead", 1.0)]),
+            "combination[1].name",
+            &["`ULS`", "combination[0]"],
+        ),
+        (
+            "a combination of a temperature case alone",
+            base()
+                .temperature_load(10.0)
+                .in_case("temp")
+                .combination("night", &[("temp", 1.0)]),
+            "load",
+            &["combination `night`", "self-weight"],
+        ),
+    ];
+    for (what, b, field, needles) in cases {
+        let (f, m) = invalid(what, b.build_problem());
+        eprintln!("{what}: `{f}`: {m}");
+        assert_eq!(f, field, "{what}: field (message: {m})");
+        for n in needles {
+            assert!(m.contains(n), "{what}: message lacks `{n}`: {m}");
+        }
+    }
+}
+
+/// A void far deeper than the plate can settle is refused, and the message gives the scale it
+/// was compared with: the mean settlement under the loads, q/K = 9.6e-5 m here, in metres.
+/// A dimensionless scene states it in the unit of V of its loads.
+#[test]
+fn a_void_far_deeper_than_the_settlement_is_refused_with_the_scale() {
+    let settlement = SELF_WEIGHT / K;
+    let b = slab(6.0, 4.0)
+        .uniform_load(SELF_WEIGHT)
+        .void([0.0, 1.0], [0.0, 1.0], 2000.0 * settlement)
+        .elements(8, 8);
+    let (f, m) = invalid("deep void", b.build_problem());
+    eprintln!("deep void: `{f}`: {m}");
+    assert_eq!(f, "void[0].depth");
+    let scale = format!("{settlement:.3e} m");
+    assert!(
+        m.contains(&scale),
+        "message lacks the settlement {scale}: {m}"
+    );
+    assert!(m.contains("2000 times"), "message lacks the ratio: {m}");
+    // A void 10 times the settlement is accepted.
+    slab(6.0, 4.0)
+        .uniform_load(SELF_WEIGHT)
+        .void([0.0, 1.0], [0.0, 1.0], 10.0 * settlement)
+        .elements(8, 8)
+        .build_problem()
+        .unwrap_or_else(|e| panic!("a 10 q/K void: {e}"));
+    // Dimensionless: Γ_w = 1e-3, μ = 1, a unit uniform load on the 2 × 2 plate: resultant 4, so
+    // P = 1 in the loads' unit and σ = μ L² r / P = 1; the Winkler settlement is V = Γ_w σ =
+    // 1e-3 (times P = 1 in the loads' unit of V), and a depth of 5 is 5000 times that.
+    let text = r#"
+[dimensionless]
+foundation = "winkler"
+gamma = 1e-3
+delta = 1e-3
+mu = 1.0
+nu = 0.3
+[[load]]
+kind = "uniform"
+pressure = 1.0
+[[void]]
+x = [0.0, 0.5]
+y = [0.0, 0.5]
+depth = 5.0
+"#;
+    let (f, m) = invalid("deep void, dimensionless", Problem::from_toml(text));
+    eprintln!("deep void dimensionless: `{f}`: {m}");
+    assert_eq!(f, "void[0].depth");
+    for n in ["1.000e-3 (loads' unit of V)", "5000 times"] {
+        assert!(
+            m.contains(n),
+            "dimensionless deep void: message lacks `{n}`: {m}"
+        );
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// 9. Bearing check.
+// ---------------------------------------------------------------------------------------------
+
+/// Bonded self-weight on a uniform Winkler slab presses exactly q everywhere (see above): an
+/// allowable pressure 1 % below q is exceeded over the whole plate (24 m²), 1 % above it
+/// nowhere, with utilisation q / allowable. All to round-off.
+#[test]
+fn bearing_under_uniform_pressure_is_all_or_nothing() {
+    let q = SELF_WEIGHT;
+    for (allowable, area) in [(0.99 * q, 24.0), (1.01 * q, 0.0)] {
+        let b = slab(6.0, 4.0)
+            .allowable_pressure(allowable)
+            .uniform_load(q)
+            .elements(12, 8);
+        let a = solve_with(&b, Method::Bonded);
+        let bearing = a
+            .report
+            .bearing
+            .unwrap_or_else(|| panic!("no bearing check with allowable {allowable}"));
+        eprintln!("uniform bearing: {bearing:?}");
+        assert!((bearing.allowable - allowable).abs() < 1e-12 * allowable);
+        assert!(
+            (bearing.utilisation - q / allowable).abs() < 1e-10,
+            "utilisation {} vs q / allowable {}",
+            bearing.utilisation,
+            q / allowable
+        );
+        assert!(
+            (bearing.area_exceeding - area).abs() < 1e-10 * 24.0,
+            "area exceeding {} m², want {area}",
+            bearing.area_exceeding
+        );
+        assert!((bearing.fraction_exceeding - area / 24.0).abs() < 1e-12);
+    }
+    // Without an allowable pressure there is no check.
+    let a = solve_with(
+        &slab(6.0, 4.0).uniform_load(q).elements(12, 8),
+        Method::Bonded,
+    );
+    assert!(a.report.bearing.is_none());
+}
+
+/// A nearly rigid plate (4 × 2 × 1 m on K = 1 MPa/m: K L⁴ / D = 6e-3) under a 100 kN patch
+/// centred 0.5 m off the y axis presses the soil linearly, p(x) = F/A + F e x / I, with
+/// I = Σ A_i x_i² of the lumped springs (the trapezoid weights of the grid). The allowable
+/// pressure p(1 m) is then exceeded exactly on 1 m < x ≤ 2 m: a quarter of the plate, 2 m²
+/// (a linear nodal field has a straight contour, so the bilinear area is exact), and the
+/// utilisation is p(2 m) / p(1 m). Bending and shear bend the pressure by ~1e-3 of F/A, which
+/// moves the contour by ~1e-3 I / (A e) ≈ 3 mm, 0.3 % of the area: tolerance 1 %.
+#[test]
+fn bearing_exceedance_area_of_a_rigid_plate_under_an_eccentric_load() {
+    let (force, e, k) = (1.0e5, 0.5, 1.0e6);
+    let (half_l, half_w) = (2.0, 1.0);
+    let p_of = |x: f64, i: f64| force / (4.0 * half_l * half_w) + force * e * x / i;
+    // I of the lumped springs on the 40 × 20 grid: trapezoid weights.
+    let (nx, ny) = (40usize, 20usize);
+    let (hx, hy) = (2.0 * half_l / nx as f64, 2.0 * half_w / ny as f64);
+    let mut i_lumped = 0.0;
+    for j in 0..=ny {
+        for i in 0..=nx {
+            let wx = if i == 0 || i == nx { 0.5 } else { 1.0 };
+            let wy = if j == 0 || j == ny { 0.5 } else { 1.0 };
+            let x = -half_l + i as f64 * hx;
+            i_lumped += wx * wy * hx * hy * x * x;
+        }
+    }
+    let allowable = p_of(1.0, i_lumped);
+    let b = Model::builder()
+        .plate(PlateSpec::new(4.0, 2.0, 1.0, E, NU))
+        .foundation(FoundationSpec::winkler(k))
+        .allowable_pressure(allowable)
+        .patch_load([e - 0.25, e + 0.25], [-0.25, 0.25], force / 0.25)
+        .elements(nx, ny);
+    for method in [Method::Bonded, Method::qp()] {
+        let a = solve_with(&b, method.clone());
+        let bearing = a
+            .report
+            .bearing
+            .unwrap_or_else(|| panic!("no bearing check"));
+        let want_util = p_of(half_l, i_lumped) / allowable;
+        eprintln!(
+            "{} rigid-plate bearing: {bearing:?}; want area 2, utilisation {want_util:.5}, min p {:.1}",
+            method.name(),
+            a.report.field.pressure.iter().cloned().fold(f64::INFINITY, f64::min)
+        );
+        assert!(
+            (bearing.area_exceeding - 2.0).abs() < 0.01 * 2.0,
+            "{}: area exceeding {} m², want 2",
+            method.name(),
+            bearing.area_exceeding
+        );
+        assert!(
+            (bearing.utilisation - want_util).abs() < 0.01 * want_util,
+            "{}: utilisation {}, want {want_util}",
+            method.name(),
+            bearing.utilisation
+        );
+    }
 }
