@@ -130,9 +130,10 @@ fn integral(r: &Report, values: &[f64]) -> f64 {
 /// wants to lengthen — is compressed and its soil-side face is stretched: with the report's
 /// convention (positive = tension on the soil side) m > 0.
 ///
-/// The slab is 30 ℓ square: the edge disturbance decays like e^(−x/(ℓ√2)), ≈ 2.5e-5 at the
-/// centre 15 ℓ in, so 1e-3 is a tolerance with margin and still far below the 100 % error of
-/// a wrong sign or a missing (1 + ν).
+/// The slab is 30 ℓ square: the free edges' disturbance decays like e^(−x/(ℓ√2)), to
+/// e^(−10.6) ≈ 2.5e-5 of the thermal moment 15 ℓ in, from each of four edges (measured: 8e-5),
+/// so 1e-3 is a tolerance with margin, far below the 200 % error of a wrong sign or the 17 %
+/// of a missing (1 + ν).
 #[test]
 fn bonded_slab_interior_carries_westergaards_curling_stress() {
     let ell = ell();
@@ -281,6 +282,7 @@ fn free_curling_lifts_corners_at_night_and_the_centre_by_day() {
         "day: centre gap = {:e}",
         rd.field.gap[cd]
     );
+    // The penalty leaves a small tension on lifted points (measured −0.8 Pa here).
     assert!(
         rd.field.pressure[cd].abs() < 1e-3 * SELF_WEIGHT,
         "day: no pressure at the lifted centre"
@@ -395,7 +397,10 @@ fn a_combination_equals_its_factored_loads_as_one_scene() {
                 rs.contact_fraction,
                 rs.field.gap[open]
             );
-            assert!(rs.field.gap[open] > 0.0, "{name}: the void stays partly open");
+            assert!(
+                rs.field.gap[open] > 0.0,
+                "{name}: the void stays partly open"
+            );
             let fields: [(&str, &[f64], &[f64]); 7] = [
                 ("V", &rc.field.v, &rs.field.v),
                 ("gap", &rc.field.gap, &rs.field.gap),
