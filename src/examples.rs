@@ -13,6 +13,16 @@ pub const SCENES: &[(&str, &str, &str)] = &[
         include_str!("../examples/footing.toml"),
     ),
     (
+        "pavement-curling",
+        "4.5 m × 3.5 m concrete panel, self-weight with day and night temperature gradients (combinations)",
+        include_str!("../examples/pavement-curling.toml"),
+    ),
+    (
+        "raft-combinations",
+        "16 m × 12 m raft: dead, imposed and wind cases in four combinations, a void and a soft zone",
+        include_str!("../examples/raft-combinations.toml"),
+    ),
+    (
         "paper-halfspace",
         "the paper's square plate, central point load, half-space, Γ_h = 0.25e-3 (dimensionless)",
         include_str!("../examples/paper/fig3-halfspace-point.toml"),

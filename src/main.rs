@@ -412,8 +412,22 @@ fn solve_combinations(args: &SolveArgs, problem: &Problem) -> Result<(), Failure
     };
     let title = problem.model.title.split(" — ").next().unwrap_or("");
     if args.json {
+        let runs: Vec<serde_json::Value> = run
+            .runs
+            .iter()
+            .map(|r| {
+                let summary = r
+                    .outcome
+                    .as_ref()
+                    .ok()
+                    .and_then(|o| serde_json::to_value(&o.summary).ok());
+                let error = r.outcome.as_ref().err().map(|e| e.to_string());
+                serde_json::json!({ "name": r.name, "summary": summary, "error": error })
+            })
+            .collect();
         let quantities = env.as_ref().map(|e| &e.quantities);
-        let json = serde_json::to_string_pretty(&quantities)
+        let doc = serde_json::json!({ "combinations": runs, "envelope": quantities });
+        let json = serde_json::to_string_pretty(&doc)
             .map_err(|e| Failure::new(exit::IO, format!("cannot serialise the envelope: {e}")))?;
         println!("{json}");
     } else {

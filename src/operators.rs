@@ -29,6 +29,46 @@ pub struct Constraints {
     pub points: Vec<(f64, f64)>,
 }
 
+/// Load-independent products of the operators that a method computes once and every copy of
+/// the operators made by [`Operators::loaded`] reuses (the half-space Schur complement
+/// S = T + BᵀK⁻B with the plate factor behind it, the bonded Winkler spring factor that starts
+/// the penalty iteration), one per type. Type-erased so that this module need not know the
+/// solver's types.
+#[derive(Clone, Default)]
+pub struct SharedCache(Arc<std::sync::Mutex<SharedSlots>>);
+
+/// One value per type.
+type SharedSlots =
+    std::collections::HashMap<std::any::TypeId, Arc<dyn std::any::Any + Send + Sync>>;
+
+impl std::fmt::Debug for SharedCache {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("SharedCache")
+    }
+}
+
+impl SharedCache {
+    /// The cached value of type `T`, computing it with `init` the first time (other threads
+    /// asking at the same time wait for it). Returns whether it was computed by this call. A
+    /// failed `init` stores nothing.
+    pub fn get_or_try_init<T: Send + Sync + 'static, E>(
+        &self,
+        init: impl FnOnce() -> Result<T, E>,
+    ) -> Result<(Arc<T>, bool), E> {
+        let mut slots = match self.0.lock() {
+            Ok(g) => g,
+            Err(poisoned) => poisoned.into_inner(),
+        };
+        let key = std::any::TypeId::of::<T>();
+        if let Some(v) = slots.get(&key).and_then(|v| v.clone().downcast::<T>().ok()) {
+            return Ok((v, false));
+        }
+        let v = Arc::new(init()?);
+        slots.insert(key, v.clone());
+        Ok((v, true))
+    }
+}
+
 /// Everything a method needs, assembled once.
 #[derive(Debug, Clone)]
 pub struct Operators {
@@ -62,6 +102,8 @@ pub struct Operators {
     pub foundation_constant: f64,
     /// Notes on modelling decisions (symmetry fall-backs …).
     pub notes: Vec<String>,
+    /// Load-independent products shared by every load combination (see [`SharedCache`]).
+    pub cache: SharedCache,
 }
 
 /// y = A x with sprs's product (CSC or CSR storage alike).
@@ -202,6 +244,7 @@ impl Operators {
             fixed,
             foundation_constant,
             notes,
+            cache: SharedCache::default(),
         }
     }
 

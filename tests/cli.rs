@@ -25,8 +25,12 @@ fn stderr(o: &std::process::Output) -> String {
 #[test]
 fn bundled_examples_run_and_write_their_files() {
     let dir = tempfile::tempdir().expect("tempdir");
-    for (name, _, _) in liftoff::examples::SCENES {
-        let out = dir.path().join(name);
+    for (name, _, text) in liftoff::examples::SCENES {
+        let root = dir.path().join(name);
+        let combinations: Vec<String> = liftoff::Problem::from_toml(text)
+            .map(|p| p.combinations.into_iter().map(|c| c.name).collect())
+            .unwrap_or_default();
+        let out = root.clone();
         let o = liftoff(&[
             "solve",
             &format!("example:{name}"),
@@ -38,22 +42,44 @@ fn bundled_examples_run_and_write_their_files() {
             stdout(&o).contains("Sign convention"),
             "{name}: table ends with the sign convention"
         );
-        for f in [
-            "summary.json",
-            "nodes.csv",
-            "elements.csv",
-            "profiles.csv",
-            "plate.vtu",
-            "profiles.svg",
-            "contact.svg",
-            "contact.png",
-        ] {
-            let p = out.join(f);
-            assert!(
-                p.metadata().map(|m| m.len() > 0).unwrap_or(false),
-                "{name}: {f} written"
-            );
+        // A scene with combinations writes a folder per combination and the envelope.
+        let folders: Vec<std::path::PathBuf> = if combinations.is_empty() {
+            vec![root.clone()]
+        } else {
+            for f in [
+                "envelope.json",
+                "envelope.csv",
+                "envelope_nodes.csv",
+                "envelope_elements.csv",
+            ] {
+                let p = root.join(f);
+                assert!(
+                    p.metadata().map(|m| m.len() > 0).unwrap_or(false),
+                    "{name}: {f} written"
+                );
+            }
+            combinations.iter().map(|c| root.join(c)).collect()
+        };
+        for out in &folders {
+            for f in [
+                "summary.json",
+                "nodes.csv",
+                "elements.csv",
+                "profiles.csv",
+                "plate.vtu",
+                "profiles.svg",
+                "contact.svg",
+                "contact.png",
+            ] {
+                let p = out.join(f);
+                assert!(
+                    p.metadata().map(|m| m.len() > 0).unwrap_or(false),
+                    "{name}: {} written",
+                    p.display()
+                );
+            }
         }
+        let out = folders[0].clone();
         let s: serde_json::Value =
             serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).expect("read"))
                 .expect("json");
@@ -94,6 +120,12 @@ fn bundled_examples_run_and_write_their_files() {
         ]);
         assert!(qp.status.success(), "{name} qp: {}", stderr(&qp));
         let q: serde_json::Value = serde_json::from_str(&stdout(&qp)).expect("json");
+        // With combinations the JSON lists each one's summary: compare the first.
+        let q = if combinations.is_empty() {
+            q
+        } else {
+            q["combinations"][0]["summary"].clone()
+        };
         let (a, b) = (
             s["V_max"].as_f64().unwrap_or(f64::NAN),
             q["V_max"].as_f64().unwrap_or(f64::NAN),

@@ -54,6 +54,12 @@ fn every_catalogue_entry_has_its_exit_code_and_message() {
         Case { id: "E22 iteration cap", scene: Some(format!("{}[solver]\nmax_iterations = 2\n", liftoff::examples::scene("paper-winkler").unwrap_or_default().replace("[solver]\ncontact = \"unbonded\"\nmethod = \"penalty\"\npenalty = 1e-5\nconstraint = \"nodal\"\n", ""))), args: vec![], code: 4, message: "still changing after 2 iterations" },
         Case { id: "E23 penalty too weak", scene: paper("paper-halfspace", "gamma = 0.25e-3", "gamma = 1e-9"), args: vec!["--penalty", "1e-5"], code: 4, message: "--penalty" },
         Case { id: "E25 equilibrium lost", scene: paper("paper-winkler", "gamma = 0.25e-3", "gamma = 1e8"), args: vec![], code: 4, message: "reaction misses the load" },
+        Case { id: "E32 unknown case", scene: edit("force = 2.0e5", "force = 2.0e5\ncase = \"dead\"\n[[combination]]\nname = \"ULS\"\nfactors = { dead = 1.35, lve = 1.5 }"), args: vec![], code: 2, message: "names the case `lve`, which no [[load]] has" },
+        Case { id: "E33 temperature without expansion", scene: edit("force = 2.0e5", "force = 2.0e5\n[[load]]\nkind = \"temperature\"\ndifference = 10.0"), args: vec![], code: 2, message: "plate.thermal_expansion" },
+        Case { id: "E34 void too deep", scene: edit("[mesh]", "[[void]]\nx = [0.0, 1.0]\ny = [0.0, 1.0]\ndepth = 1.0\n[mesh]"), args: vec![], code: 2, message: "times the mean settlement under the loads" },
+        Case { id: "E35 zone on a half-space", scene: edit("model = \"winkler\"\nmodulus = 5e7", "model = \"half-space\"\nyoungs_modulus = 5e7\npoissons_ratio = 0.3\n[[foundation.zone]]\nx = [0.0, 1.0]\ny = [0.0, 1.0]\nmodulus = 1e7"), args: vec![], code: 2, message: "Winkler subgrade only" },
+        Case { id: "E36 void with bonded contact", scene: edit("[mesh]", "[[void]]\nx = [0.0, 1.0]\ny = [0.0, 1.0]\ndepth = 0.001\n[mesh]"), args: vec!["--contact", "bonded"], code: 2, message: "voids need unbonded contact" },
+        Case { id: "E37 overlapping zones", scene: edit("modulus = 5e7", "modulus = 5e7\n[[foundation.zone]]\nx = [0.0, 1.0]\ny = [0.0, 1.0]\nmodulus = 1e7\n[[foundation.zone]]\nx = [0.5, 2.0]\ny = [0.0, 1.0]\nmodulus = 2e7"), args: vec![], code: 2, message: "overlaps" },
         Case { id: "E29 unreadable scene", scene: None, args: vec![], code: 5, message: "cannot read scene file" },
     ];
     let dir = tempfile::tempdir().expect("tempdir");

@@ -140,6 +140,18 @@ fn write_points(
     })
 }
 
+/// The bending moment of largest magnitude (mx or my), with its sign.
+fn extreme_moment(s: &crate::summary::Summary) -> f64 {
+    [
+        s.moments.mx[0],
+        s.moments.mx[1],
+        s.moments.my[0],
+        s.moments.my[1],
+    ]
+    .into_iter()
+    .fold(0.0, |m: f64, v| if v.abs() > m.abs() { v } else { m })
+}
+
 /// The CLI's table: a line per combination, then the governing extremes.
 pub fn combinations_table(
     title: &str,
@@ -158,9 +170,9 @@ pub fn combinations_table(
         c.total_s
     );
     let (wu, pu, mu_) = if physical {
-        ("w_max mm", "p_max kPa", "m_max kN·m/m")
+        ("w_max mm", "p_max kPa", "|m|max kN·m/m")
     } else {
-        ("V_max", "σ_max", "m_max P")
+        ("V_max", "σ_max", "|m|max P")
     };
     let _ = writeln!(
         s,
@@ -176,13 +188,13 @@ pub fn combinations_table(
                     (
                         sm.w_max * 1e3,
                         sm.pressure_max / 1e3,
-                        sm.moments.mx[1].max(sm.moments.my[1]) / 1e3,
+                        extreme_moment(sm) / 1e3,
                     )
                 } else {
                     (
                         sm.V_max,
                         sm.pressure_max * sm.dimensionless.mu,
-                        sm.moments.mx[1].max(sm.moments.my[1]),
+                        extreme_moment(sm),
                     )
                 };
                 let bearing = sm.bearing.map_or("—".to_string(), |b| {

@@ -447,7 +447,7 @@ fn normalise(raw: Vec<(usize, Load)>, what: &str) -> Result<(Vec<Load>, f64)> {
         return Err(Error::invalid(
             "load",
             format!(
-                "{what}: the load magnitudes overflow when added up: check their units (N and Pa)"
+                "{what}the load magnitudes overflow when added up: check their units (N and Pa)"
             ),
         ));
     }
@@ -462,7 +462,7 @@ fn normalise(raw: Vec<(usize, Load)>, what: &str) -> Result<(Vec<Load>, f64)> {
         };
         return Err(Error::invalid(
             "load",
-            format!("{what}: the loads add up to zero (resultant {total:e}); a free plate needs a net vertical load{hint}"),
+            format!("{what}the loads add up to zero (resultant {total:e}); a free plate needs a net vertical load{hint}"),
         ));
     }
     let p_force = total.abs() / 4.0;
@@ -482,7 +482,7 @@ fn normalise(raw: Vec<(usize, Load)>, what: &str) -> Result<(Vec<Load>, f64)> {
         if !v.is_finite() {
             return Err(Error::invalid(
                 format!("load[{k}].{name}"),
-                format!("{what}: the magnitude overflows when expressed per unit of the total load: the patch or line is too small for its load (check its extent and units)"),
+                format!("{what}the magnitude overflows when expressed per unit of the total load: the patch or line is too small for its load (check its extent and units)"),
             ));
         }
     }
@@ -581,7 +581,7 @@ fn voids_for(
                 return Err(Error::invalid(
                     format!("void[{k}].depth"),
                     format!(
-                        "{what}: {} {unit} is {:.0} times the mean settlement under the loads ({:.3e} {unit}): a void that deep never closes and acts like one {MAX_VOID_DEPTH_RATIO:.0} times the settlement; check the units or give at most {:.3e} {unit}",
+                        "{what}{} {unit} is {:.0} times the mean settlement under the loads ({:.3e} {unit}): a void that deep never closes and acts like one {MAX_VOID_DEPTH_RATIO:.0} times the settlement; check the units or give at most {:.3e} {unit}",
                         v.written,
                         depth / settlement,
                         settlement * scale,
@@ -871,7 +871,7 @@ fn scale(load: Load, f: f64) -> Load {
 pub fn model(file: &SceneFile) -> Result<Model> {
     let sh = shared(file)?;
     let all: Vec<(usize, f64)> = (0..sh.raw.len()).map(|k| (k, 1.0)).collect();
-    sh.model(file, sh.title.clone(), &all, "the loads")
+    sh.model(file, sh.title.clone(), &all, "")
 }
 
 /// Longest combination name: it names an output folder.
@@ -943,7 +943,7 @@ pub fn combinations(file: &SceneFile) -> Result<Vec<Combination>> {
             );
         }
         picked.sort_by_key(|&(k, _)| k);
-        let what = format!("combination `{name}`");
+        let what = format!("combination `{name}`: ");
         let model = sh.model(file, format!("{} — {name}", sh.title), &picked, &what)?;
         out.push(Combination {
             name: name.to_string(),

@@ -11,6 +11,7 @@
 //!
 //! solved by a dense Cholesky of S and the small system Cᵀ S⁻¹ C α = Rᵀf − Cᵀ S⁻¹ BᵀK⁻f.
 
+use std::sync::Arc;
 use std::time::Instant;
 
 use faer::Mat;
@@ -111,46 +112,68 @@ fn solve_springs(ops: &Operators, t: &[f64]) -> Result<Solution> {
     })
 }
 
-/// Quantities of the Schur formulation shared by the bonded half-space solve and the QP.
-pub struct SchurSystem {
+/// The load-independent part of the Schur formulation: K⁻, S = T + BᵀK⁻B and C = BᵀR. Formed
+/// once per assembly and shared by every method and load combination on it
+/// ([`crate::operators::SharedCache`]).
+pub struct SchurCore {
     /// Generalised inverse of K.
     pub kinv: PlateInverse,
     /// S = T + BᵀK⁻B.
     pub s: Mat<f64>,
-    /// h = BᵀK⁻f − g₀.
-    pub h: Vec<f64>,
     /// C = BᵀR (n_σ × n_r), column per rigid mode.
     pub c: Vec<Vec<f64>>,
+}
+
+/// Quantities of the Schur formulation shared by the bonded half-space solve and the QP: the
+/// shared [`SchurCore`] (through `Deref`) and this load's right-hand sides.
+pub struct SchurSystem {
+    core: Arc<SchurCore>,
+    /// h = BᵀK⁻f − g₀.
+    pub h: Vec<f64>,
     /// Rᵀf.
     pub rf: Vec<f64>,
-    /// Seconds spent factoring K.
+    /// Seconds spent factoring K by this call (0 when the core was already formed).
     pub time_plate: f64,
-    /// Seconds spent forming S.
+    /// Seconds spent forming S by this call (0 when the core was already formed).
     pub time_schur: f64,
 }
 
+impl std::ops::Deref for SchurSystem {
+    type Target = SchurCore;
+    fn deref(&self) -> &SchurCore {
+        &self.core
+    }
+}
+
 impl SchurSystem {
-    /// Build S and the right-hand sides.
+    /// S and the right-hand sides; S and K⁻ are formed on the first call for these operators
+    /// (or any copy made by [`Operators::loaded`]) and reused after.
     pub fn new(ops: &Operators) -> Result<Self> {
         let t0 = Instant::now();
-        let kinv = PlateInverse::new(ops)?;
-        let time_plate = t0.elapsed().as_secs_f64();
-        let s = schur_complement(ops, &kinv);
-        let time_schur = t0.elapsed().as_secs_f64() - time_plate;
+        let mut time_plate = 0.0;
+        let (core, fresh) = ops.cache.get_or_try_init(|| -> Result<SchurCore> {
+            let kinv = PlateInverse::new(ops)?;
+            time_plate = t0.elapsed().as_secs_f64();
+            let s = schur_complement(ops, &kinv);
+            let c = ops.rigid.iter().map(|r| ops.bt_times(r)).collect();
+            Ok(SchurCore { kinv, s, c })
+        })?;
+        let time_schur = if fresh {
+            t0.elapsed().as_secs_f64() - time_plate
+        } else {
+            0.0
+        };
         // h = BᵀK⁻f − g₀: the voids' initial gap enters as g = Sσ − Cα − h.
         let h = ops
-            .bt_times(&kinv.apply(&ops.f))
+            .bt_times(&core.kinv.apply(&ops.f))
             .iter()
             .zip(&ops.gap0)
             .map(|(a, g)| a - g)
             .collect();
-        let c: Vec<Vec<f64>> = ops.rigid.iter().map(|r| ops.bt_times(r)).collect();
         let rf = ops.rigid.iter().map(|r| dot(r, &ops.f)).collect();
         Ok(Self {
-            kinv,
-            s,
+            core,
             h,
-            c,
             rf,
             time_plate,
             time_schur,

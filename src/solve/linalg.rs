@@ -28,6 +28,7 @@ pub fn faer_view(m: &sprs::CsMat<f64>) -> SparseColMatRef<'_, usize, f64> {
 
 /// Sparse LLᵀ whose symbolic analysis (ordering, elimination tree, supernodes) is done once and
 /// reused for every matrix of the same pattern.
+#[derive(Clone)]
 pub struct SparseCholesky {
     symbolic: Arc<SymbolicCholesky<usize>>,
 }

@@ -17,6 +17,7 @@
 //! solves later steps by low-rank updates of that factor ([`super::low_rank`]).
 
 use std::collections::HashMap;
+use std::sync::Arc;
 use std::time::Instant;
 
 use faer::linalg::solvers::Solve;
@@ -45,6 +46,14 @@ pub const TENSION_TOLERANCE: f64 = 1e-4;
 /// a plate balanced on one corner node of a Winkler bed needs 3 %.
 pub const TENSION_FORCE_TOLERANCE: f64 = 1e-3;
 
+/// The analysed Winkler spring system and its bonded factor (no penalty springs): where every
+/// penalty iteration on an assembly starts.
+struct SpringsStart {
+    chol: SparseCholesky,
+    factor: Arc<SparseFactor>,
+    springs: Vec<f64>,
+}
+
 /// Linear solver of one penalised bilateral problem.
 enum Backend {
     Springs {
@@ -55,7 +64,7 @@ enum Backend {
         t: Vec<f64>,
         chol: SparseCholesky,
         /// The last numeric factor and the spring stiffness per pressure node it was made with.
-        factored: Option<(SparseFactor, Vec<f64>)>,
+        factored: Option<(Arc<SparseFactor>, Vec<f64>)>,
     },
     Saddle {
         m: sprs::CsMat<f64>,
@@ -75,16 +84,35 @@ impl Backend {
                 let diag = diagonal_positions(&k)?;
                 let base = k.data().to_vec();
                 let coupling = lumped_coupling(ops)?;
-                let order = crate::mesh::equation_order(&ops.mesh, &ops.dofs, |_| true);
-                let chol = SparseCholesky::analyse_ordered(&k, Some(&order))?;
+                // The bonded system of step 1 does not depend on the loads: analysed and
+                // factored once per assembly, shared by every load combination.
+                let (start, _) = ops.cache.get_or_try_init(|| -> Result<SpringsStart> {
+                    let order = crate::mesh::equation_order(&ops.mesh, &ops.dofs, |_| true);
+                    let chol = SparseCholesky::analyse_ordered(&k, Some(&order))?;
+                    let springs: Vec<f64> = coupling
+                        .iter()
+                        .zip(t)
+                        .map(|(&(_, b), &c)| b * b / c)
+                        .collect();
+                    let mut bonded = k.clone();
+                    for (j, &(eq, _)) in coupling.iter().enumerate() {
+                        bonded.data_mut()[diag[eq]] += springs[j];
+                    }
+                    let factor = Arc::new(chol.factor(&bonded, "bonded Winkler system")?);
+                    Ok(SpringsStart {
+                        chol,
+                        factor,
+                        springs,
+                    })
+                })?;
                 Ok(Backend::Springs {
                     k,
                     diag,
                     base,
                     coupling,
                     t: t.clone(),
-                    chol,
-                    factored: None,
+                    chol: start.chol.clone(),
+                    factored: Some((start.factor.clone(), start.springs.clone())),
                 })
             }
             (Compliance::Diagonal(t), ConstraintPoints::Gauss) => {
@@ -207,7 +235,7 @@ impl Backend {
                         let llt = chol.factor(k, "penalised Winkler system")?;
                         let mut u = rhs;
                         sparse_solve(&llt, &mut u);
-                        *factored = Some((llt, springs.clone()));
+                        *factored = Some((Arc::new(llt), springs.clone()));
                         u
                     }
                 };
