@@ -5,6 +5,7 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
+use rayon::prelude::*;
 use serde::Serialize;
 
 use super::{stage_all, Staged};
@@ -40,17 +41,26 @@ struct CombinationJson<'a> {
 /// and moved into place together. Returns the paths written.
 pub fn write_combinations(dir: &Path, c: &Combinations, env: &Envelope) -> Result<Vec<PathBuf>> {
     let mut st = Staged::new(dir)?;
-    for run in &c.runs {
-        if let Ok(o) = &run.outcome {
+    // The charts dominate the writing: stage the combinations' folders side by side.
+    let parts: Vec<Result<Staged>> = c
+        .runs
+        .par_iter()
+        .filter_map(|run| run.outcome.as_ref().ok().map(|o| (run, o)))
+        .map(|(run, o)| {
+            let mut part = st.share();
             let overlay = super::chart::Overlay::for_model(&run.model, &o.report);
             stage_all(
-                &mut st,
+                &mut part,
                 &format!("{}/", run.name),
                 &o.report,
                 &o.summary,
                 &overlay,
             )?;
-        }
+            Ok(part)
+        })
+        .collect();
+    for part in parts {
+        st.absorb(part?);
     }
     let json = EnvelopeJson {
         combinations: c
@@ -327,19 +337,33 @@ pub fn combinations_table(
         }
     }
     if let Some(env) = env {
-        let _ = writeln!(s, "  envelope (governing combination):");
+        let _ = writeln!(s, "  envelope (value, where, governing combination):");
         for q in &env.quantities {
-            let _ = writeln!(
-                s,
-                "    {:<9} max {:>12.4e} {:<7} ({:<12}) min {:>12.4e} {:<7} ({})",
+            // The table reads in engineering units; the files keep SI.
+            let (factor, unit) = match q.unit {
+                "m" => (1e3, "mm"),
+                "Pa" => (1e-3, "kPa"),
+                "N·m/m" => (1e-3, "kN·m/m"),
+                "N/m" => (1e-3, "kN/m"),
+                u => (1.0, u),
+            };
+            let at = |e: &crate::combination::Extreme| {
+                format!(
+                    "{:>10.3} at ({:>6.2}, {:>6.2}) {:<14}",
+                    e.value * factor,
+                    e.x,
+                    e.y,
+                    e.combination
+                )
+            };
+            let line = format!(
+                "    {:<9} {:<7} max {} min {}",
                 q.quantity,
-                q.max.value,
-                q.unit,
-                q.max.combination,
-                q.min.value,
-                q.unit,
-                q.min.combination
+                unit,
+                at(&q.max),
+                at(&q.min)
             );
+            let _ = writeln!(s, "{}", line.trim_end());
         }
     }
     if let Some((n, dir)) = files {

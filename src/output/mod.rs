@@ -38,7 +38,7 @@ pub fn prepare_dir(dir: &Path) -> Result<()> {
 /// A set of files written into a staging directory and moved into place together.
 pub struct Staged {
     dir: PathBuf,
-    staging: tempfile::TempDir,
+    staging: std::sync::Arc<tempfile::TempDir>,
     names: Vec<String>,
 }
 
@@ -51,9 +51,24 @@ impl Staged {
             .map_err(io(dir))?;
         Ok(Self {
             dir: dir.to_path_buf(),
-            staging,
+            staging: std::sync::Arc::new(staging),
             names: Vec::new(),
         })
+    }
+
+    /// A second handle on the same staging area, to stage files from another thread; hand it
+    /// back with [`Self::absorb`] so that its files are committed too.
+    pub fn share(&self) -> Self {
+        Self {
+            dir: self.dir.clone(),
+            staging: self.staging.clone(),
+            names: Vec::new(),
+        }
+    }
+
+    /// Take over the files staged through a handle from [`Self::share`].
+    pub fn absorb(&mut self, other: Staged) {
+        self.names.extend(other.names);
     }
 
     /// Path in the staging area for a file that will be called `name` (which may name a
