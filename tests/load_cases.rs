@@ -9,10 +9,10 @@
 
 use liftoff::combination::{self, CombinationRun};
 use liftoff::error::Error;
+use liftoff::integrals::{line_integrals, patch_integrals};
 use liftoff::mesh::Mesh;
 use liftoff::method::{Contact, MethodKind};
 use liftoff::model::{Model, SymmetryMode};
-use liftoff::operators::{line_integrals, patch_integrals};
 use liftoff::post::Report;
 use liftoff::scene::{FoundationSpec, ModelBuilder, PlateSpec};
 use liftoff::{analyse, Analysis, Method, Problem};
