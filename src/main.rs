@@ -321,6 +321,17 @@ fn load_problem(spec: &str, edit: impl FnOnce(&mut SceneFile)) -> Result<Problem
     file.validate().map_err(|e| Failure::in_scene(spec, e))
 }
 
+/// The studies compare methods on one load set: say which one a scene with combinations gives.
+fn note_first_combination(problem: &Problem) {
+    if let Some(first) = problem.combinations.first() {
+        eprintln!(
+            "note: the scene has {} load combinations; this study uses the first, `{}` (`liftoff solve` runs them all)",
+            problem.combinations.len(),
+            first.name
+        );
+    }
+}
+
 /// Run a library study under a progress bar of `len` steps; each progress line is one step.
 fn with_progress<T>(len: usize, run: impl FnOnce(&mut dyn FnMut(&str)) -> T) -> T {
     let pb = indicatif::ProgressBar::new(len as u64);
@@ -460,6 +471,7 @@ fn solve_combinations(args: &SolveArgs, problem: &Problem) -> Result<(), Failure
 
 fn compare(args: CompareArgs) -> Result<(), Failure> {
     let problem = load_problem(&args.scene, |file| args.overrides.apply(file))?;
+    note_first_combination(&problem);
     output::prepare_dir(&args.out)?;
     let c = liftoff::compare::compare(&problem)?;
     let json = serde_json::to_string_pretty(&c)
@@ -487,6 +499,7 @@ fn eps_sweep(args: EpsSweepArgs) -> Result<(), Failure> {
     };
     options.validate().map_err(Failure::option)?;
     let problem = load_problem(&args.scene, |_| {})?;
+    note_first_combination(&problem);
     output::prepare_dir(&args.out)?;
     let sweep = with_progress(options.progress_steps(), |p| options.run(&problem, p))?;
     let title = &problem.model.title;
@@ -503,6 +516,7 @@ fn tradeoff(args: TradeoffArgs) -> Result<(), Failure> {
     };
     options.validate().map_err(Failure::option)?;
     let problem = load_problem(&args.scene, |_| {})?;
+    note_first_combination(&problem);
     output::prepare_dir(&args.out)?;
     let t = with_progress(options.progress_steps(), |p| options.run(&problem, p))?;
     let title = &problem.model.title;
