@@ -32,6 +32,7 @@ pub mod compare;
 pub mod error;
 pub mod examples;
 pub mod foundation;
+pub mod integrals;
 pub mod mesh;
 pub mod method;
 pub mod metrics;

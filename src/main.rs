@@ -329,6 +329,17 @@ fn load_problem(spec: &str, edit: impl FnOnce(&mut SceneFile)) -> Result<Problem
     file.validate().map_err(|e| Failure::in_scene(spec, e))
 }
 
+/// The studies compare methods on one load set: say which one a scene with combinations gives.
+fn note_first_combination(problem: &Problem) {
+    if let Some(first) = problem.combinations.first() {
+        eprintln!(
+            "note: the scene has {} load combinations; this study uses the first, `{}` (`liftoff solve` runs them all)",
+            problem.combinations.len(),
+            first.name
+        );
+    }
+}
+
 /// Run a library study under a progress bar of `len` steps; each progress line is one step.
 fn with_progress<T>(len: usize, run: impl FnOnce(&mut dyn FnMut(&str)) -> T) -> T {
     let pb = indicatif::ProgressBar::new(len as u64);
@@ -368,7 +379,9 @@ fn solve(args: SolveArgs) -> Result<(), Failure> {
     let summary = &analysis.summary;
     // A result that did not converge is not a solution: no files are written for it.
     let written = match (&args.out, summary.converged) {
-        (Some(dir), true) => output::write_all(dir, &analysis.report, summary)?.len(),
+        (Some(dir), true) => {
+            output::write_all(dir, &problem.model, &analysis.report, summary)?.len()
+        }
         _ => 0,
     };
     if args.json {
@@ -466,6 +479,7 @@ fn solve_combinations(args: &SolveArgs, problem: &Problem) -> Result<(), Failure
 
 fn compare(args: CompareArgs) -> Result<(), Failure> {
     let problem = load_problem(&args.scene, |file| args.overrides.apply(file))?;
+    note_first_combination(&problem);
     output::prepare_dir(&args.out)?;
     let c = liftoff::compare::compare(&problem)?;
     let json = serde_json::to_string_pretty(&c)
@@ -493,6 +507,7 @@ fn eps_sweep(args: EpsSweepArgs) -> Result<(), Failure> {
     };
     options.validate().map_err(Failure::option)?;
     let problem = load_problem(&args.scene, |_| {})?;
+    note_first_combination(&problem);
     output::prepare_dir(&args.out)?;
     let sweep = with_progress(options.progress_steps(), |p| options.run(&problem, p))?;
     let title = &problem.model.title;
@@ -509,6 +524,7 @@ fn tradeoff(args: TradeoffArgs) -> Result<(), Failure> {
     };
     options.validate().map_err(Failure::option)?;
     let problem = load_problem(&args.scene, |_| {})?;
+    note_first_combination(&problem);
     output::prepare_dir(&args.out)?;
     let t = with_progress(options.progress_steps(), |p| options.run(&problem, p))?;
     let title = &problem.model.title;

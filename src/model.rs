@@ -159,16 +159,7 @@ pub struct Void {
     pub depth: f64,
 }
 
-/// A patch of Winkler subgrade with another modulus.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Zone {
-    /// [x0, x1] / L.
-    pub x: [f64; 2],
-    /// [y0, y1] / L.
-    pub y: [f64; 2],
-    /// Reference modulus over the zone's modulus: the factor on the compliance inside it.
-    pub compliance_ratio: f64,
-}
+pub use crate::foundation::winkler::Zone;
 
 /// True when the rectangle is its own mirror image about x = 0 (`about_x`) or y = 0.
 fn rect_symmetric(x: [f64; 2], y: [f64; 2], about_x: bool, tol: f64) -> bool {

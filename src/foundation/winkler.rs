@@ -12,14 +12,25 @@ pub fn compliance(mesh: &Mesh, k: f64) -> Compliance {
     Compliance::Diagonal(nodal_areas(mesh).into_iter().map(|a| a / k).collect())
 }
 
+/// A patch of Winkler subgrade with another modulus.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Zone {
+    /// [x0, x1] / L.
+    pub x: [f64; 2],
+    /// [y0, y1] / L.
+    pub y: [f64; 2],
+    /// Reference modulus over the zone's modulus: the factor on the compliance inside it.
+    pub compliance_ratio: f64,
+}
+
 /// T with zones of another modulus: T_ii = (1/K) ∫ f_i r(x) dA, where r is the reference
 /// modulus over the local one (1 outside the zones). The integral is exact for rectangular
 /// zones, so a zone boundary between nodes shares a node's spring between the two moduli by
 /// area instead of snapping to the nearest node. Zones must not overlap.
-pub fn zoned_compliance(mesh: &Mesh, k: f64, zones: &[crate::model::Zone]) -> Compliance {
+pub fn zoned_compliance(mesh: &Mesh, k: f64, zones: &[Zone]) -> Compliance {
     let mut t: Vec<f64> = nodal_areas(mesh);
     for z in zones {
-        for (node, a) in crate::operators::patch_integrals(mesh, z.x, z.y) {
+        for (node, a) in crate::integrals::patch_integrals(mesh, z.x, z.y) {
             t[node] += (z.compliance_ratio - 1.0) * a;
         }
     }

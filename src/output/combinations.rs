@@ -5,6 +5,7 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
+use rayon::prelude::*;
 use serde::Serialize;
 
 use super::{stage_all, Staged};
@@ -40,10 +41,26 @@ struct CombinationJson<'a> {
 /// and moved into place together. Returns the paths written.
 pub fn write_combinations(dir: &Path, c: &Combinations, env: &Envelope) -> Result<Vec<PathBuf>> {
     let mut st = Staged::new(dir)?;
-    for run in &c.runs {
-        if let Ok(o) = &run.outcome {
-            stage_all(&mut st, &format!("{}/", run.name), &o.report, &o.summary)?;
-        }
+    // The charts dominate the writing: stage the combinations' folders side by side.
+    let parts: Vec<Result<Staged>> = c
+        .runs
+        .par_iter()
+        .filter_map(|run| run.outcome.as_ref().ok().map(|o| (run, o)))
+        .map(|(run, o)| {
+            let mut part = st.share();
+            let overlay = super::chart::Overlay::for_model(&run.model, &o.report);
+            stage_all(
+                &mut part,
+                &format!("{}/", run.name),
+                &o.report,
+                &o.summary,
+                &overlay,
+            )?;
+            Ok(part)
+        })
+        .collect();
+    for part in parts {
+        st.absorb(part?);
     }
     let json = EnvelopeJson {
         combinations: c
@@ -98,6 +115,7 @@ pub fn write_combinations(dir: &Path, c: &Combinations, env: &Envelope) -> Resul
         path: p.display().to_string(),
         source: e,
     })?;
+    stage_envelope_maps(&mut st, c, env)?;
     for (file, xy, fields) in [
         ("envelope_nodes.csv", &env.node_xy, &env.nodes),
         ("envelope_elements.csv", &env.element_xy, &env.elements),
@@ -106,6 +124,100 @@ pub fn write_combinations(dir: &Path, c: &Combinations, env: &Envelope) -> Resul
         write_points(&p, xy, fields, &env.names)?;
     }
     st.commit()
+}
+
+/// Plan-view maps of the envelope (SI scenes): the largest pressure with the bearing limit,
+/// voids, zones and line loads, the largest deflection, and the extreme moments.
+fn stage_envelope_maps(st: &mut Staged, c: &Combinations, env: &Envelope) -> Result<()> {
+    use super::chart::{self, MapValues, Overlay, Units};
+    let Some((run, o)) = c
+        .runs
+        .iter()
+        .find_map(|r| r.outcome.as_ref().ok().map(|o| (r, o)))
+    else {
+        return Ok(());
+    };
+    let Some(physical) = run.model.physical else {
+        // Each combination of a dimensionless scene has its own P: the CSV files carry the
+        // envelope in the scene's force unit, the maps would mislabel it.
+        return Ok(());
+    };
+    let units = Units::new(Some(physical), run.model.groups.mu);
+    let overlay = Overlay::for_model(&run.model, &o.report);
+    let title = run.model.title.split(" — ").next().unwrap_or("");
+    let field = &o.report.field;
+    let pick = |fields: &[(&'static str, &'static str, PointEnvelope)], name: &str| {
+        fields
+            .iter()
+            .find(|(n, _, _)| *n == name)
+            .map(|(_, _, e)| e.clone())
+    };
+    let mut maps: Vec<(String, String, Vec<f64>, chart::Scale, bool)> = Vec::new();
+    if let Some(e) = pick(&env.nodes, "pressure") {
+        maps.push((
+            "pressure-max".into(),
+            "largest pressure".into(),
+            e.max,
+            units.pressure(),
+            true,
+        ));
+    }
+    if let Some(e) = pick(&env.nodes, "w") {
+        maps.push((
+            "w-max".into(),
+            "largest deflection".into(),
+            e.max,
+            units.deflection(),
+            false,
+        ));
+    }
+    for m in ["mx", "my"] {
+        if let Some(e) = pick(&env.elements, m) {
+            maps.push((
+                format!("{m}-max"),
+                format!("largest {m}"),
+                e.max,
+                units.moment(),
+                false,
+            ));
+            maps.push((
+                format!("{m}-min"),
+                format!("smallest {m}"),
+                e.min,
+                units.moment(),
+                false,
+            ));
+        }
+    }
+    for (file, what, values, scale, with_limit) in maps {
+        let svg = st.path(&format!("envelope-{file}.svg"));
+        let png = st.path(&format!("envelope-{file}.png"));
+        let overlay = if with_limit {
+            overlay.clone()
+        } else {
+            Overlay {
+                allowable_pressure: None,
+                ..overlay.clone()
+            }
+        };
+        chart::write_field_map(
+            &svg,
+            &png,
+            field,
+            &MapValues {
+                values: &values,
+                name: &what,
+                scale,
+            },
+            &format!(
+                "{title} — envelope of {} combinations: {what}",
+                env.names.len()
+            ),
+            &units,
+            &overlay,
+        )?;
+    }
+    Ok(())
 }
 
 /// Per point: x, y, and for each field its max, min and the governing combinations.
@@ -225,19 +337,33 @@ pub fn combinations_table(
         }
     }
     if let Some(env) = env {
-        let _ = writeln!(s, "  envelope (governing combination):");
+        let _ = writeln!(s, "  envelope (value, where, governing combination):");
         for q in &env.quantities {
-            let _ = writeln!(
-                s,
-                "    {:<9} max {:>12.4e} {:<7} ({:<12}) min {:>12.4e} {:<7} ({})",
+            // The table reads in engineering units; the files keep SI.
+            let (factor, unit) = match q.unit {
+                "m" => (1e3, "mm"),
+                "Pa" => (1e-3, "kPa"),
+                "N·m/m" => (1e-3, "kN·m/m"),
+                "N/m" => (1e-3, "kN/m"),
+                u => (1.0, u),
+            };
+            let at = |e: &crate::combination::Extreme| {
+                format!(
+                    "{:>10.3} at ({:>6.2}, {:>6.2}) {:<14}",
+                    e.value * factor,
+                    e.x,
+                    e.y,
+                    e.combination
+                )
+            };
+            let line = format!(
+                "    {:<9} {:<7} max {} min {}",
                 q.quantity,
-                q.max.value,
-                q.unit,
-                q.max.combination,
-                q.min.value,
-                q.unit,
-                q.min.combination
+                unit,
+                at(&q.max),
+                at(&q.min)
             );
+            let _ = writeln!(s, "{}", line.trim_end());
         }
     }
     if let Some((n, dir)) = files {

@@ -38,7 +38,7 @@ pub fn prepare_dir(dir: &Path) -> Result<()> {
 /// A set of files written into a staging directory and moved into place together.
 pub struct Staged {
     dir: PathBuf,
-    staging: tempfile::TempDir,
+    staging: std::sync::Arc<tempfile::TempDir>,
     names: Vec<String>,
 }
 
@@ -51,9 +51,24 @@ impl Staged {
             .map_err(io(dir))?;
         Ok(Self {
             dir: dir.to_path_buf(),
-            staging,
+            staging: std::sync::Arc::new(staging),
             names: Vec::new(),
         })
+    }
+
+    /// A second handle on the same staging area, to stage files from another thread; hand it
+    /// back with [`Self::absorb`] so that its files are committed too.
+    pub fn share(&self) -> Self {
+        Self {
+            dir: self.dir.clone(),
+            staging: self.staging.clone(),
+            names: Vec::new(),
+        }
+    }
+
+    /// Take over the files staged through a handle from [`Self::share`].
+    pub fn absorb(&mut self, other: Staged) {
+        self.names.extend(other.names);
     }
 
     /// Path in the staging area for a file that will be called `name` (which may name a
@@ -91,15 +106,29 @@ impl Staged {
 }
 
 /// Write the standard result set of one solve into `dir`: summary.json, nodes.csv,
-/// elements.csv, profiles.csv, plate.vtu, profiles.svg, contact.svg and contact.png.
-pub fn write_all(dir: &Path, report: &Report, summary: &Summary) -> Result<Vec<PathBuf>> {
+/// elements.csv, profiles.csv, plate.vtu, profiles.svg, contact.svg and contact.png; the
+/// contact map shows the model's voids, zones, line loads and bearing limit.
+pub fn write_all(
+    dir: &Path,
+    model: &crate::model::Model,
+    report: &Report,
+    summary: &Summary,
+) -> Result<Vec<PathBuf>> {
+    let overlay = chart::Overlay::for_model(model, report);
+    let overlay = &overlay;
     let mut st = Staged::new(dir)?;
-    stage_all(&mut st, "", report, summary)?;
+    stage_all(&mut st, "", report, summary, overlay)?;
     st.commit()
 }
 
 /// Stage the standard result set under `prefix` (empty, or a sub-folder ending in '/').
-pub fn stage_all(st: &mut Staged, prefix: &str, report: &Report, summary: &Summary) -> Result<()> {
+pub fn stage_all(
+    st: &mut Staged,
+    prefix: &str,
+    report: &Report,
+    summary: &Summary,
+    overlay: &chart::Overlay,
+) -> Result<()> {
     st.write_text(&format!("{prefix}summary.json"), &summary.to_json()?)?;
     let p = st.path(&format!("{prefix}nodes.csv"));
     tables::write_nodes(&p, &report.field)?;
@@ -110,10 +139,11 @@ pub fn stage_all(st: &mut Staged, prefix: &str, report: &Report, summary: &Summa
     let p = st.path(&format!("{prefix}plate.vtu"));
     vtk::write_vtu(&p, &report.field, &report.elements)?;
     let title = format!("{} — {}", summary.title, summary.headline());
+    let units = chart::Units::new(summary.physical, summary.dimensionless.mu);
     let p = st.path(&format!("{prefix}profiles.svg"));
-    chart::write_profiles_svg(&p, &report.profiles, &title)?;
+    chart::write_profiles_svg(&p, &report.profiles, &title, &units)?;
     let svg = st.path(&format!("{prefix}contact.svg"));
     let png = st.path(&format!("{prefix}contact.png"));
-    chart::write_contact_map(&svg, &png, &report.field, &title)?;
+    chart::write_contact_map(&svg, &png, &report.field, &title, &units, overlay)?;
     Ok(())
 }

@@ -6,6 +6,7 @@ use std::path::Path;
 
 use crate::compare::Comparison;
 use crate::error::{Error, Result};
+use crate::output::chart::Units;
 use crate::output::Summary;
 use crate::post::{ElementField, FullField, Profile};
 use crate::study::{StabilityRow, Sweep, Tradeoff};
@@ -101,9 +102,11 @@ fn text(lines: Vec<String>) -> String {
 /// The sign convention, printed under every solve table.
 pub const SIGN_CONVENTION: &str = "Sign convention: deflection w and loads are positive downward (into the soil), pressure is positive in compression, and a positive gap means the plate has lifted off the soil.";
 
-/// The table of `liftoff solve`: model, method, status, penalty history, timings, results in
-/// physical units (scenes given in SI) and dimensionless ones, residuals; then `files` (how
-/// many were written, and where) if any, and the sign convention.
+/// The table of `liftoff solve`: model, method, status, penalty history, timings, results —
+/// in engineering units for a scene given in SI (deflections in mm, pressure in kPa, moments in
+/// kN·m/m, forces in kN, contact area, radius and extents in m² and m), in the paper's V, σ and
+/// fractions of L for a dimensionless one — and residuals (dimensionless: they measure the
+/// solver); then `files` (how many were written, and where) if any, and the sign convention.
 pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
     let g = &s.dimensionless;
     let mut l = vec![format!("liftoff — {}", s.title)];
@@ -173,51 +176,82 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
         s.time_s.assemble, s.time_s.solve, s.time_s.total
     ));
     let r = &s.resultant;
-    if s.physical.is_some() {
-        l.push(format!("  w_max      : {:.3} mm (downward)", s.w_max * 1e3));
+    let units = Units::new(s.physical, g.mu);
+    let e = &s.contact_extent;
+    if units.is_physical() {
+        // Engineering units; the dimensionless V and σ stay in summary.json.
+        let (defl, pres, mom, force) = (
+            units.deflection(),
+            units.pressure(),
+            units.moment(),
+            units.force(),
+        );
         l.push(format!(
-            "  pressure   : max {:.1} kPa",
-            s.pressure_max / 1e3
+            "  deflection : max {:.3} {u}, centre {:.3} {u}, corner {:.3} {u} (downward)",
+            defl.apply(s.w_max),
+            units.from_v(s.V_center),
+            units.from_v(s.V_corner),
+            u = defl.unit
         ));
         l.push(format!(
-            "  moments    : mx {:.1} … {:.1} kN·m/m, my {:.1} … {:.1} kN·m/m (positive: tension on the soil side)",
-            s.moments.mx[0] / 1e3,
-            s.moments.mx[1] / 1e3,
-            s.moments.my[0] / 1e3,
-            s.moments.my[1] / 1e3
+            "  pressure   : max {:.1} {}",
+            pres.apply(s.pressure_max),
+            pres.unit
         ));
         l.push(format!(
-            "  resultant  : load {:.2} kN, reaction {:.2} kN (relative error {:.1e})",
-            r.load / 1e3,
-            r.reaction / 1e3,
-            r.relative_error
+            "  moments    : mx {:.1} … {:.1} {u}, my {:.1} … {:.1} {u} (positive: tension on the soil side)",
+            mom.apply(s.moments.mx[0]),
+            mom.apply(s.moments.mx[1]),
+            mom.apply(s.moments.my[0]),
+            mom.apply(s.moments.my[1]),
+            u = mom.unit
+        ));
+        l.push(format!(
+            "  resultant  : load {:.2} {u}, reaction {:.2} {u} (relative error {:.1e})",
+            force.apply(r.load),
+            force.apply(r.reaction),
+            r.relative_error,
+            u = force.unit
+        ));
+        // Plate area 2L × 2μL; extents are fractions of L, μL and the half-diagonal.
+        let mu = g.mu;
+        let plate_area = units.from_l(2.0) * units.from_l(2.0 * mu);
+        l.push(format!(
+            "  contact    : {:.1} % of the plate ({:.2} m²), radius {:.2} m, extent x {:.2} m, y {:.2} m, diagonal {:.2} m from the centre",
+            100.0 * s.contact_fraction,
+            s.contact_fraction * plate_area,
+            units.from_l(s.contact_radius),
+            units.from_l(e.x),
+            units.from_l(mu * e.y),
+            units.from_l((1.0 + mu * mu).sqrt() * e.diagonal),
         ));
     } else {
         l.push(format!(
             "  resultant  : load {:.6} P, reaction {:.6} P (relative error {:.1e})",
             r.load, r.reaction, r.relative_error
         ));
+        l.push(format!(
+            "  V          : max {:.5e}, centre {:.5e}, corner {:.5e}  (V = D w / (P L²))",
+            s.V_max, s.V_center, s.V_corner
+        ));
+        l.push(format!(
+            "  contact    : {:.1} % of the plate, radius {:.3} L, extent x {:.3}, y {:.3}, diagonal {:.3}",
+            100.0 * s.contact_fraction,
+            s.contact_radius,
+            e.x,
+            e.y,
+            e.diagonal
+        ));
     }
-    l.push(format!(
-        "  V          : max {:.5e}, centre {:.5e}, corner {:.5e}  (V = D w / (P L²))",
-        s.V_max, s.V_center, s.V_corner
-    ));
-    l.push(format!(
-        "  contact    : {:.1} % of the plate, radius {:.3} L, extent x {:.3}, y {:.3}, diagonal {:.3}",
-        100.0 * s.contact_fraction,
-        s.contact_radius,
-        s.contact_extent.x,
-        s.contact_extent.y,
-        s.contact_extent.diagonal
-    ));
     if let Some(b) = &s.bearing {
+        // Dimensionless scenes show σ = μ r, as the contact map does.
         let (scale, unit, area) = if s.physical.is_some() {
             (1e-3, "kPa", "m²")
         } else {
-            (1.0, "P/L²", "L²")
+            (g.mu, "(σ)", "L²")
         };
         l.push(format!(
-            "  bearing    : max {:.1} of {:.1} {unit} allowed, utilisation {:.0} %, {:.3} {area} ({:.1} % of the plate) above it{}",
+            "  bearing    : max {:.3} of {:.3} {unit} allowed, utilisation {:.0} %, {:.3} {area} ({:.1} % of the plate) above it{}",
             b.max * scale,
             b.allowable * scale,
             100.0 * b.utilisation,

@@ -10,6 +10,7 @@
 //! V = D w / (P L²), σ = μ L² r / P.
 
 pub mod boundary;
+pub mod exceed;
 
 use serde::Serialize;
 
@@ -237,21 +238,6 @@ pub struct Bearing {
     pub fraction_exceeding: f64,
 }
 
-/// Area of the plate where a bilinear nodal field exceeds `level`, exactly: per element the
-/// fraction of its square where the interpolant of (level − field) is negative.
-pub fn area_above(field: &FullField, values: &[f64], level: f64) -> f64 {
-    let nnx = field.nx + 1;
-    let mut fraction = 0.0;
-    for j in 0..field.ny {
-        for i in 0..field.nx {
-            let n = |a: usize, b: usize| level - values[(i + a) + (j + b) * nnx];
-            fraction += boundary::negative_fraction([n(0, 0), n(1, 0), n(1, 1), n(0, 1)]);
-        }
-    }
-    let (lx, ly) = plate_sides(field);
-    fraction * lx * ly / (field.nx * field.ny) as f64
-}
-
 /// Sides of the plate in the units of `field.x`, `field.y`.
 fn plate_sides(field: &FullField) -> (f64, f64) {
     let span = |v: &[f64]| {
@@ -414,7 +400,8 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
     };
     let bearing = model.allowable_pressure.map(|a| {
         let allowable = a * ph.pressure();
-        let area = area_above(&field, &field.pressure, allowable);
+        // The field's arrays all have (nx + 1)(ny + 1) entries: area_above cannot fail here.
+        let area = exceed::area_above(&field, &field.pressure, allowable).unwrap_or(f64::NAN);
         let (lx, ly) = plate_sides(&field);
         Bearing {
             allowable,

@@ -11,10 +11,12 @@
 //! * [`builder`]: [`Model::builder`], the same validation from Rust without writing TOML.
 
 pub mod builder;
+mod loads;
 pub mod spec;
 pub mod validate;
 
 pub use builder::ModelBuilder;
+pub use loads::{DEFAULT_CASE, MAX_VOID_DEPTH_RATIO};
 pub use spec::*;
 
 use crate::error::{Error, Result};

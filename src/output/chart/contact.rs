@@ -1,264 +1,242 @@
-//! Plan views of the plate, drawn to equal scale on x and y: the contact-pressure map of one
-//! solve ([`write_contact_map`]) and the contact boundaries of several solves over their loaded
-//! areas ([`write_contact_regions`], the paper's Fig. 6). Both draw the contact boundary as the
-//! located contact boundary ([`FullField::contact_boundary`]).
+//! Plan views of one or several solves: the contact-pressure map of one solve
+//! ([`write_contact_map`]), a colour map of any field ([`write_field_map`], e.g. an envelope
+//! over load cases), both drawn by the shared [`ColourMap`] with an [`Overlay`], and the contact
+//! boundaries of several solves over their loaded areas ([`write_contact_regions`], the
+//! paper's Fig. 6). Contact boundaries are the located ones ([`FullField::contact_boundary`]).
 
 use std::path::Path;
 
-use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::axis::{finite_extent, tick_format};
-use super::style::{self, DESC_FONT, LABEL_FONT};
+use super::overlay::Overlay;
+use super::plan::{
+    boundary, cell_nodes, outline, plan_axes, ColourMap, ColourScale, Palette, MARGIN,
+};
+use super::style::{self, LABEL_FONT};
+use super::units::{Scale, Units};
 use super::{titled, txt, write_png, write_svg, DrawResult, Picture, FONT};
 use crate::error::{Error, Result};
 use crate::post::FullField;
 
-/// Outer margin of a plan view, pixels.
-const MARGIN: i32 = 15;
-/// Height of the x label area, pixels.
-const X_AREA: i32 = 50;
-/// Width of the y label area, pixels.
-const Y_AREA: i32 = 70;
-
-/// A plan-view chart in the plate's coordinates.
-type Plan<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
-
-/// Axes for the rectangle [x0, x1] × [y0, y1] on `area` with equal scales on x and y, centred;
-/// also returns the vertical room left above and below the drawing, pixels.
-fn plan_axes<'a, DB: DrawingBackend>(
-    area: &'a DrawingArea<DB, Shift>,
-    (x0, x1): (f64, f64),
-    (y0, y1): (f64, f64),
-    (x_desc, y_desc): (&str, &str),
-) -> DrawResult<(Plan<'a, DB>, i32)> {
-    let (aw, ah) = area.dim_in_pixel();
-    let avail_w = (aw as i32 - 2 * MARGIN - Y_AREA).max(10) as f64;
-    let avail_h = (ah as i32 - 2 * MARGIN - X_AREA).max(10) as f64;
-    let px = (avail_w / (x1 - x0)).min(avail_h / (y1 - y0));
-    let extra_w = ((avail_w - px * (x1 - x0)) / 2.0).max(0.0) as i32;
-    let extra_h = ((avail_h - px * (y1 - y0)) / 2.0).max(0.0) as i32;
-    let mut chart = ChartBuilder::on(area)
-        .margin_left(MARGIN + extra_w)
-        .margin_right(MARGIN + extra_w)
-        .margin_top(MARGIN + extra_h)
-        .margin_bottom(MARGIN + extra_h)
-        .x_label_area_size(X_AREA)
-        .y_label_area_size(Y_AREA)
-        .build_cartesian_2d(x0..x1, y0..y1)
-        .map_err(txt)?;
-    let x_fmt = tick_format(x0, x1);
-    let y_fmt = tick_format(y0, y1);
-    chart
-        .configure_mesh()
-        .disable_mesh()
-        .x_desc(x_desc)
-        .y_desc(y_desc)
-        .x_label_formatter(&x_fmt)
-        .y_label_formatter(&y_fmt)
-        .label_style((FONT, LABEL_FONT))
-        .axis_desc_style((FONT, DESC_FONT))
-        .draw()
-        .map_err(txt)?;
-    Ok((chart, extra_h))
+/// An invalid-input error on `path`.
+fn invalid(path: &Path, what: String) -> Error {
+    Error::Io {
+        path: path.display().to_string(),
+        source: std::io::Error::new(std::io::ErrorKind::InvalidInput, what),
+    }
 }
 
-/// Draw the outline of the rectangle [x0, x1] × [y0, y1].
-fn outline<DB: DrawingBackend>(
-    chart: &mut Plan<'_, DB>,
-    (x0, x1): (f64, f64),
-    (y0, y1): (f64, f64),
-) -> DrawResult<()> {
-    chart
-        .draw_series(std::iter::once(PathElement::new(
-            [(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)],
-            style::OUTLINE.stroke_width(1),
-        )))
-        .map_err(txt)?;
-    Ok(())
-}
-
-/// Draw the contact boundary of `field` in `colour` and `width` (nothing if σ is nowhere
-/// positive).
-fn boundary<DB: DrawingBackend>(
-    chart: &mut Plan<'_, DB>,
-    field: &FullField,
-    colour: RGBColor,
-    width: u32,
-) -> DrawResult<()> {
-    let segments = field.contact_boundary();
-    chart
-        .draw_series(
-            segments
-                .into_iter()
-                .map(|s| PathElement::new(s.xy, colour.stroke_width(width))),
-        )
-        .map_err(txt)?;
-    Ok(())
-}
-
-/// One cell of the map: its corner node indices (counter-clockwise from (i, j)).
-fn cell_nodes(field: &FullField, i: usize, j: usize) -> [usize; 4] {
-    let n = field.nx + 1;
-    [
-        i + j * n,
-        i + 1 + j * n,
-        i + 1 + (j + 1) * n,
-        i + (j + 1) * n,
-    ]
-}
-
-/// Check that every nodal array of `field` covers the grid.
-fn check_field(path: &Path, field: &FullField) -> Result<()> {
-    let n = field
+/// Nodes and elements of the grid of `field`, if they can be counted.
+fn grid_size(path: &Path, field: &FullField) -> Result<(usize, usize)> {
+    let nodes = field
         .nx
         .checked_add(1)
         .zip(field.ny.checked_add(1))
         .and_then(|(a, b)| a.checked_mul(b));
-    let ok = n.is_some_and(|n| {
-        field.x.len() == n
-            && field.y.len() == n
-            && field.sigma.len() == n
-            && field.contact.len() == n
-    });
-    if ok {
+    nodes
+        .zip(field.nx.checked_mul(field.ny))
+        .ok_or_else(|| invalid(path, format!("a {} × {} grid", field.nx, field.ny)))
+}
+
+/// Check that every nodal array a plan view reads covers the grid.
+fn check_field(path: &Path, field: &FullField) -> Result<()> {
+    let (n, _) = grid_size(path, field)?;
+    let lengths = [
+        field.x.len(),
+        field.y.len(),
+        field.sigma.len(),
+        field.pressure.len(),
+        field.contact.len(),
+    ];
+    if lengths.iter().all(|&l| l == n) {
         Ok(())
     } else {
-        Err(Error::Io {
-            path: path.display().to_string(),
-            source: std::io::Error::new(
-                std::io::ErrorKind::InvalidInput,
-                format!(
-                    "field arrays do not match the {} × {} element grid",
-                    field.nx, field.ny
-                ),
+        Err(invalid(
+            path,
+            format!(
+                "field arrays do not match the {} × {} element grid",
+                field.nx, field.ny
             ),
-        })
+        ))
     }
 }
 
-/// The contact-pressure map of one solve.
-struct ContactMap<'a> {
+/// The colour map of the contact pressure of one solve: lifted cells (mean σ ≤ 0, or no node
+/// in contact) grey, the others on the sequential scale from 0 to the largest cell mean.
+fn contact_picture<'a>(
     field: &'a FullField,
     title: &'a str,
-}
-
-impl Picture for ContactMap<'_> {
-    fn size(&self) -> (u32, u32) {
-        (900, 700)
-    }
-
-    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult<()> {
-        let field = self.field;
-        let body = titled(root, self.title)?;
-        let (body_w, _) = body.dim_in_pixel();
-        let bar_w = 130_u32.min(body_w / 3);
-        let (map_area, bar_area) = body.split_horizontally(body_w.saturating_sub(bar_w));
-
-        // Cells: mean σ and whether lifted.
-        let mut cells = Vec::with_capacity(field.nx * field.ny);
-        for j in 0..field.ny {
-            for i in 0..field.nx {
-                let c = cell_nodes(field, i, j);
-                let mean = c.iter().map(|&k| field.sigma[k]).sum::<f64>() / 4.0;
-                let lifted = mean.is_nan() || mean <= 0.0 || c.iter().all(|&k| !field.contact[k]);
-                cells.push((c, mean, lifted));
-            }
+    units: &Units,
+    overlay: &'a Overlay,
+) -> ColourMap<'a> {
+    let shown = units.pressure();
+    // Dimensionless scenes show σ itself (byte for byte the map drawn before units existed).
+    let values: Vec<f64> = if units.is_physical() {
+        field.pressure.iter().map(|&p| shown.apply(p)).collect()
+    } else {
+        field.sigma.clone()
+    };
+    let mut cells = Vec::with_capacity(field.nx * field.ny);
+    for j in 0..field.ny {
+        for i in 0..field.nx {
+            let c = cell_nodes(field, i, j);
+            let mean = c.iter().map(|&k| values[k]).sum::<f64>() / 4.0;
+            let lifted = mean.is_nan() || mean <= 0.0 || c.iter().all(|&k| !field.contact[k]);
+            let corners = [
+                (field.x[c[0]], field.y[c[0]]),
+                (field.x[c[2]], field.y[c[2]]),
+            ];
+            cells.push((corners, (!lifted).then_some(mean)));
         }
-        let top = cells
-            .iter()
-            .filter(|(_, m, lifted)| !lifted && m.is_finite())
-            .map(|(_, m, _)| *m)
-            .fold(0.0_f64, f64::max);
-        let scale = if top > 0.0 { top } else { 1.0 };
-
-        let (xr, yr) = (finite_extent(&field.x), finite_extent(&field.y));
-        let (mut chart, extra_h) = plan_axes(&map_area, xr, yr, ("x", "y"))?;
-        chart
-            .draw_series(cells.iter().map(|&(c, mean, lifted)| {
-                let colour = if lifted {
-                    style::LIFTED
-                } else {
-                    style::ramp(mean / scale)
-                };
-                Rectangle::new(
-                    [
-                        (field.x[c[0]], field.y[c[0]]),
-                        (field.x[c[2]], field.y[c[2]]),
-                    ],
-                    colour.filled(),
-                )
-            }))
-            .map_err(txt)?;
-        boundary(&mut chart, field, style::BOUNDARY, 2)?;
-        outline(&mut chart, xr, yr)?;
-
-        // Colour bar, its ends level with the map's (up to a quarter of the height).
-        let (_, ah) = map_area.dim_in_pixel();
-        let inset = MARGIN + extra_h.min(ah as i32 / 4);
-        let mut bar = ChartBuilder::on(&bar_area)
-            .margin_top(inset)
-            .margin_bottom(inset + X_AREA)
-            .margin_left(10)
-            .margin_right(5)
-            .right_y_label_area_size(75)
-            .build_cartesian_2d(0.0..1.0, 0.0..scale)
-            .map_err(txt)?;
-        let bar_fmt = tick_format(0.0, scale);
-        bar.configure_mesh()
-            .disable_mesh()
-            .disable_x_axis()
-            .y_label_formatter(&bar_fmt)
-            .label_style((FONT, LABEL_FONT))
-            .axis_desc_style((FONT, DESC_FONT))
-            .draw()
-            .map_err(txt)?;
-        let steps = 100;
-        bar.draw_series((0..steps).map(|k| {
-            let a = k as f64 / steps as f64;
-            let b = (k + 1) as f64 / steps as f64;
-            Rectangle::new(
-                [(0.0, a * scale), (1.0, b * scale)],
-                style::ramp((a + b) / 2.0).filled(),
-            )
-        }))
-        .map_err(txt)?;
-        bar.draw_series(std::iter::once(Rectangle::new(
-            [(0.0, 0.0), (1.0, scale)],
-            style::OUTLINE.stroke_width(1),
-        )))
-        .map_err(txt)?;
-        // Bar caption, centred above the bar.
-        let (bar_x, bar_y) = bar.plotting_area().get_pixel_range();
-        let text =
-            TextStyle::from((FONT, 18).into_font()).pos(Pos::new(HPos::Center, VPos::Bottom));
-        root.draw_text("σ", &text, ((bar_x.start + bar_x.end) / 2, bar_y.start - 6))
-            .map_err(txt)?;
-        Ok(())
+    }
+    let top = cells
+        .iter()
+        .filter_map(|&(_, m)| m)
+        .filter(|m| m.is_finite())
+        .fold(0.0_f64, f64::max);
+    let hi = if top > 0.0 { top } else { 1.0 };
+    let length = units.length();
+    ColourMap {
+        title,
+        field,
+        cells,
+        scale: ColourScale {
+            lo: 0.0,
+            hi,
+            palette: Palette::Sequential,
+        },
+        bar_caption: if units.is_physical() {
+            shown.label("pressure")
+        } else {
+            "σ".to_string()
+        },
+        axes: (length.label("x"), length.label("y")),
+        boundary: true,
+        overlay,
+        levelled: Some((&field.pressure, shown)),
     }
 }
 
-/// Write a filled colour map of the dimensionless contact pressure σ over the plate, once as SVG
-/// (`svg`) and once as PNG (`png`, 900 × 700 pixels, drawn by the same code).
+/// Write a filled colour map of the contact pressure over the plate, once as SVG (`svg`) and
+/// once as PNG (`png`, 900 × 700 pixels, drawn by the same code), in `units`: kPa over axes in
+/// m for a physical scene, the dimensionless σ over x, y in units of L otherwise.
 ///
 /// Each grid cell is a rectangle in physical (x, y) coordinates, drawn to equal scale, coloured
-/// by the mean σ of its four nodes on a sequential yellow-to-red scale from 0 to the largest cell
-/// mean (see the colour bar); lifted cells (mean σ ≤ 0, or no node in contact) are light grey.
-/// The contact boundary, located inside the elements where the would-be gap changes sign
-/// ([`FullField::contact_boundary`]), is drawn as a dark line, the plate outline as a thin one.
+/// by the mean pressure of its four nodes on a sequential yellow-to-red scale from 0 to the
+/// largest cell mean (see the colour bar); lifted cells (mean σ ≤ 0, or no node in contact) are
+/// light grey. The contact boundary, located inside the elements where the would-be gap changes
+/// sign ([`FullField::contact_boundary`]), is drawn as a dark line, the plate outline as a thin
+/// one.
+///
+/// `overlay` adds, each named in a legend below the map when present: the area where the
+/// bilinear nodal pressure exceeds `overlay.allowable_pressure` (units of
+/// [`FullField::pressure`]) hatched and outlined by a dashed magenta contour, with the level
+/// marked on the colour bar; voids as dashed rectangles, soft or stiff zones as dotted ones,
+/// line loads as thick dark lines. `Overlay::default()` draws the map alone, without a legend.
 ///
 /// The PNG path must end in `.png` (the encoder is chosen by the extension).
 ///
 /// # Errors
 /// [`Error::Io`] if a file cannot be written or drawing fails, or if the arrays of `field` do
 /// not all have (nx + 1)(ny + 1) entries.
-pub fn write_contact_map(svg: &Path, png: &Path, field: &FullField, title: &str) -> Result<()> {
+pub fn write_contact_map(
+    svg: &Path,
+    png: &Path,
+    field: &FullField,
+    title: &str,
+    units: &Units,
+    overlay: &Overlay,
+) -> Result<()> {
     check_field(svg, field)?;
-    let map = ContactMap { field, title };
+    let map = contact_picture(field, title, units, overlay);
     write_svg(svg, &map)?;
     write_png(png, &map)
+}
+
+/// Values to colour a plan view by ([`write_field_map`]).
+#[derive(Debug, Clone, Copy)]
+pub struct MapValues<'a> {
+    /// One value per node ((nx + 1)(ny + 1), index i + j (nx + 1); each cell takes the mean of
+    /// its corners) or per element (nx ny, index ie + je nx, as [`crate::post::ElementField`]),
+    /// in the field's units (SI for a physical scene).
+    pub values: &'a [f64],
+    /// Name on the colour bar, e.g. "mx"; the unit of `scale` follows it.
+    pub name: &'a str,
+    /// How the values are shown, e.g. [`Units::moment`]: shown value = value × factor.
+    pub scale: Scale,
+}
+
+/// Write a plan-view colour map of any field over the plate as SVG (`svg`) and PNG (`png`,
+/// 900 × 700 pixels) — the contact map's drawing without its contact boundary and lifted cells:
+/// an envelope of pressures, deflections or moments over load cases, say.
+///
+/// Cells take the mean of their corner values (nodal values) or their element value. Values of
+/// one sign are drawn on the sequential yellow-to-red scale from 0 (the largest magnitude
+/// darkest); values of both signs on a blue-white-red scale symmetric about 0. Axes are in
+/// `units` (m for a physical scene). With nodal values, `overlay.allowable_pressure` (units of
+/// `map.values`) hatches and outlines the area above it as on the contact map; with element
+/// values no level is drawn. Voids, zones and line loads are drawn as on the contact map.
+///
+/// # Errors
+/// [`Error::Io`] if a file cannot be written or drawing fails, if the coordinates of `field`
+/// do not cover its grid, or if `map.values` has neither one entry per node nor one per element.
+pub fn write_field_map(
+    svg: &Path,
+    png: &Path,
+    field: &FullField,
+    map: &MapValues<'_>,
+    title: &str,
+    units: &Units,
+    overlay: &Overlay,
+) -> Result<()> {
+    let (nodes, elements) = grid_size(svg, field)?;
+    let bad = |what: String| invalid(svg, what);
+    if field.x.len() != nodes || field.y.len() != nodes {
+        return Err(bad(format!(
+            "coordinates do not match the {} × {} element grid",
+            field.nx, field.ny
+        )));
+    }
+    let nodal = map.values.len() == nodes;
+    if !nodal && map.values.len() != elements {
+        return Err(bad(format!(
+            "{} values for {nodes} nodes and {elements} elements",
+            map.values.len()
+        )));
+    }
+    let shown = map.scale;
+    let mut cells = Vec::with_capacity(elements);
+    for j in 0..field.ny {
+        for i in 0..field.nx {
+            let c = cell_nodes(field, i, j);
+            let value = if nodal {
+                c.iter().map(|&k| map.values[k]).sum::<f64>() / 4.0
+            } else {
+                map.values[i + j * field.nx]
+            };
+            let corners = [
+                (field.x[c[0]], field.y[c[0]]),
+                (field.x[c[2]], field.y[c[2]]),
+            ];
+            cells.push((corners, Some(shown.apply(value))));
+        }
+    }
+    let scale = ColourScale::of(cells.iter().filter_map(|c| c.1));
+    let length = units.length();
+    let picture = ColourMap {
+        title,
+        field,
+        cells,
+        scale,
+        bar_caption: shown.label(map.name),
+        axes: (length.label("x"), length.label("y")),
+        boundary: false,
+        overlay,
+        levelled: nodal.then_some((map.values, shown)),
+    };
+    write_svg(svg, &picture)?;
+    write_png(png, &picture)
 }
 
 /// One solve on the contact-region chart: legend text, colour, field.
@@ -377,17 +355,149 @@ mod tests {
         crate::post::test_fixtures::bump().0
     }
 
+    /// Dimensionless units of the test plate (μ = 1/2: 4 × 2 over [−2, 2] × [−1, 1]).
+    fn unitless() -> Units {
+        Units::dimensionless(0.5)
+    }
+
+    /// Physical units: L = 2 m, P = 1 kN, D = 1 kN·m.
+    fn metric() -> Units {
+        Units::new(
+            Some(crate::model::Physical {
+                half_length: 2.0,
+                force: 1e3,
+                rigidity: 1e3,
+            }),
+            0.5,
+        )
+    }
+
+    /// A map with no overlay and the map with one (allowable pressure `level`): `draw` writes
+    /// both and returns their SVGs.
+    fn both(level: f64, draw: impl Fn(&Path, &Path, &Overlay) -> Result<()>) -> (String, String) {
+        let dir = tempfile::tempdir().expect("tempdir");
+        let (svg, png) = (dir.path().join("m.svg"), dir.path().join("m.png"));
+        draw(&svg, &png, &Overlay::default()).expect("plain map");
+        let plain = std::fs::read_to_string(&svg).expect("read svg");
+        let overlay = Overlay {
+            allowable_pressure: Some(level),
+            voids: vec![[(-1.5, -0.5), (-0.5, 0.5)]],
+            zones: vec![[(0.5, -0.8), (1.8, 0.2)]],
+            lines: vec![[(-2.0, 0.8), (2.0, 0.8)]],
+        };
+        draw(&svg, &png, &overlay).expect("map with overlay");
+        let over = std::fs::read_to_string(&svg).expect("read svg");
+        let bytes = std::fs::read(&png).expect("read png");
+        assert!(bytes.starts_with(&[0x89, b'P', b'N', b'G']));
+        (plain, over)
+    }
+
     #[test]
     fn contact_map_is_written() {
         let dir = tempfile::tempdir().expect("tempdir");
         let svg = dir.path().join("contact.svg");
         let png = dir.path().join("contact.png");
-        write_contact_map(&svg, &png, &bump_field(), "Contact map title").expect("write");
+        write_contact_map(
+            &svg,
+            &png,
+            &bump_field(),
+            "Contact map title",
+            &unitless(),
+            &Overlay::default(),
+        )
+        .expect("write");
         let text = std::fs::read_to_string(&svg).expect("read svg");
         assert!(text.contains("<svg"));
         assert!(text.contains("Contact map title"));
+        assert!(text.contains(">\nσ\n<"), "dimensionless colour bar");
         let bytes = std::fs::read(&png).expect("read png");
         assert!(bytes.starts_with(&[0x89, b'P', b'N', b'G', 0x0D, 0x0A, 0x1A, 0x0A]));
+    }
+
+    /// Physical units on the axes and the bar; the overlay adds its legend entries, and
+    /// nothing of it appears without one.
+    #[test]
+    fn contact_map_draws_units_and_overlay() {
+        let mut f = bump_field();
+        // Pressure peaking at 100 kPa; allowable 50 kPa.
+        f.pressure.iter_mut().for_each(|p| *p *= 1e5);
+        let (plain, over) = both(5e4, |svg, png, o| {
+            write_contact_map(svg, png, &f, "T", &metric(), o)
+        });
+        for needle in ["x (m)", "y (m)", "pressure (kPa)"] {
+            assert!(
+                plain.contains(needle),
+                "physical contact map lacks {needle:?}"
+            );
+        }
+        for needle in [
+            "contact boundary",
+            "pressure &gt; allowable (50 kPa)",
+            "void",
+            "soft or stiff zone",
+            "line load",
+        ] {
+            assert!(!plain.contains(needle), "plain map has {needle:?}");
+            assert!(over.contains(needle), "overlay legend lacks {needle:?}");
+        }
+        // The allowable level above the peak: named as not exceeded.
+        let dir = tempfile::tempdir().expect("tempdir");
+        let (svg, png) = (dir.path().join("n.svg"), dir.path().join("n.png"));
+        let high = Overlay {
+            allowable_pressure: Some(1e5 * 2.0),
+            ..Overlay::default()
+        };
+        write_contact_map(&svg, &png, &f, "T", &unitless(), &high).expect("write");
+        let text = std::fs::read_to_string(&svg).expect("read svg");
+        assert!(
+            text.contains("allowable pressure 1.00e5: not exceeded"),
+            "dimensionless: σ = μ r = 0.5 · 2e5"
+        );
+    }
+
+    /// A field map of element values (both signs: diverging scale) and of nodal ones; values of
+    /// the wrong length are an error.
+    #[test]
+    fn field_map_is_written_for_node_and_element_values() {
+        let (f, e) = crate::post::test_fixtures::bump();
+        let u = metric();
+        let moments: Vec<f64> = e.mx.iter().map(|m| 1e3 * (m - 3.0)).collect();
+        let map = MapValues {
+            values: &moments,
+            name: "mx",
+            scale: u.moment(),
+        };
+        let (plain, over) = both(0.5, |svg, png, o| {
+            write_field_map(svg, png, &f, &map, "Moments", &u, o)
+        });
+        assert!(plain.contains("mx (kN·m/m)") && plain.contains("Moments"));
+        assert!(!plain.contains("contact boundary") && !over.contains("contact boundary"));
+        assert!(
+            !over.contains("allowable"),
+            "no level on element values: {over}"
+        );
+        let map = MapValues {
+            values: &f.w,
+            name: "w",
+            scale: u.deflection(),
+        };
+        // The bump's w peaks at 0.01 m; 0.005 m is 5 mm on the map.
+        let (_, over) = both(0.005, |svg, png, o| {
+            write_field_map(svg, png, &f, &map, "w", &u, o)
+        });
+        assert!(
+            over.contains("pressure &gt; allowable (5 mm)"),
+            "nodal values carry the level"
+        );
+
+        let dir = tempfile::tempdir().expect("tempdir");
+        let (svg, png) = (dir.path().join("b.svg"), dir.path().join("b.png"));
+        let bad = MapValues {
+            values: &f.w[1..],
+            name: "w",
+            scale: u.deflection(),
+        };
+        assert!(write_field_map(&svg, &png, &f, &bad, "bad", &u, &Overlay::default()).is_err());
     }
 
     #[test]
@@ -400,26 +510,33 @@ mod tests {
         let mut f = bump_field();
         f.sigma.iter_mut().for_each(|s| *s = 0.0);
         f.contact.iter_mut().for_each(|c| *c = false);
-        write_contact_map(&svg, &png, &f, "zero").expect("all zero");
+        let (u, none) = (unitless(), Overlay::default());
+        write_contact_map(&svg, &png, &f, "zero", &u, &none).expect("all zero");
 
         // All σ equal and in contact.
         f.sigma.iter_mut().for_each(|s| *s = 0.5);
         f.contact.iter_mut().for_each(|c| *c = true);
-        write_contact_map(&svg, &png, &f, "uniform").expect("uniform");
+        write_contact_map(&svg, &png, &f, "uniform", &u, &none).expect("uniform");
 
         // Inconsistent arrays: an error, not a panic.
         f.sigma.pop();
-        assert!(write_contact_map(&svg, &png, &f, "bad").is_err());
+        assert!(write_contact_map(&svg, &png, &f, "bad", &u, &none).is_err());
 
         // No cells at all.
         let mut g = bump_field();
         g.nx = 0;
         g.ny = 0;
-        for v in [&mut g.x, &mut g.y, &mut g.sigma] {
+        for v in [&mut g.x, &mut g.y, &mut g.sigma, &mut g.pressure] {
             v.truncate(1);
         }
         g.contact.truncate(1);
-        write_contact_map(&svg, &png, &g, "point").expect("single node");
+        write_contact_map(&svg, &png, &g, "point", &u, &none).expect("single node");
+        let over = Overlay {
+            allowable_pressure: Some(0.1),
+            voids: vec![[(0.0, 0.0), (1.0, 1.0)]],
+            ..Overlay::default()
+        };
+        write_contact_map(&svg, &png, &g, "point", &metric(), &over).expect("single node");
     }
 
     #[test]

@@ -2,8 +2,13 @@
 //!
 //! * `profile.rs`: V and σ along the plate's lines — [`write_profiles_svg`] for a solve, and
 //!   the paper's Figs. 3–5 and 7;
-//! * `contact.rs`: plan views of the plate — [`write_contact_map`] for a solve, and the paper's
-//!   Fig. 6 (contact boundaries of several solves);
+//! * `contact.rs`: plan views of the plate — [`write_contact_map`] for a solve,
+//!   [`write_field_map`] for any field (an envelope, say), and the paper's Fig. 6 (contact
+//!   boundaries of several solves); `plan.rs`: the equal-scale axes and the colour map they
+//!   share; `overlay.rs`: what an [`Overlay`] draws over them (pressure above the allowable
+//!   one, voids, zones, line loads);
+//! * `units.rs`: [`Units`], engineering units (m, mm, kPa, kN·m/m) for a physical scene and the
+//!   paper's V and σ for a dimensionless one, shared with the CLI tables;
 //! * `loglog.rs`: [`write_loglog_svg`], series with notes (ε̄ sweep, speed against accuracy);
 //! * `category.rs`: [`write_category_map_svg`], run outcomes over a parameter grid (stability);
 //! * `style.rs`: the one colour and line table; `axis.rs`: ranges and tick labels; this file:
@@ -17,8 +22,11 @@ mod axis;
 mod category;
 mod contact;
 mod loglog;
+mod overlay;
+mod plan;
 mod profile;
 pub(crate) mod style;
+mod units;
 
 use std::path::Path;
 use std::sync::OnceLock;
@@ -31,11 +39,13 @@ use plotters::style::FontStyle;
 use crate::error::{Error, Result};
 
 pub use category::write_category_map_svg;
-pub use contact::write_contact_map;
+pub use contact::{write_contact_map, write_field_map, MapValues};
 pub(crate) use contact::{write_contact_regions, Region};
 pub use loglog::{write_loglog_svg, Series};
+pub use overlay::Overlay;
 pub use profile::write_profiles_svg;
 pub(crate) use profile::{write_profile_comparison, Curve};
+pub use units::{Scale, Units};
 
 /// The embedded font.
 static FONT_BYTES: &[u8] = include_bytes!("../../../assets/DejaVuSans.ttf");

@@ -1,10 +1,12 @@
 //! Profile charts: V = D w / (P L²) (top row, axis pointing down: positive V is a downward
-//! deflection) and σ = μ L² r / P (bottom row) along the plate's lines, with zero lines.
+//! deflection) and σ = μ L² r / P (bottom row) along the plate's lines, with zero lines — or,
+//! for a physical scene, the deflection w in mm and the contact pressure in kPa against the
+//! position along the line in m.
 //!
 //! One chart serves two pictures:
 //!
 //! * [`write_profiles_svg`], the `profiles.svg` of a solve: one column over the whole lines
-//!   (coordinate −1 to 1), one curve per line;
+//!   (coordinate −1 to 1, or ± the half-length of the longest line in m), one curve per line;
 //! * [`write_profile_comparison`], the paper's Figs. 3–5 and 7: one column per line over its
 //!   half (coordinate 0 to 1, the plate being symmetric), one curve per solve.
 //!
@@ -19,18 +21,46 @@ use plotters::prelude::*;
 
 use super::axis::{padded_range, tick_format};
 use super::style::{self, DESC_FONT, LABEL_FONT, LINE_WIDTH};
+use super::units::Units;
 use super::{titled, txt, write_png, write_svg, DrawResult, Picture, FONT};
 use crate::error::Result;
 use crate::post::{Profile, ProfilePoint};
 
-/// Legend text of a profile line on a whole-line chart.
-fn line_label(line: &str) -> String {
+/// Legend text of a profile line on a whole-line chart: where it runs, in s and t or in m.
+fn line_label(line: &str, units: &Units) -> String {
+    if let Some(ph) = units.physical() {
+        let l = ph.half_length;
+        let m = |v: f64| format!("{} m", super::plan::short(v));
+        return match line {
+            "x-axis" => "x-axis (y = 0)".to_string(),
+            "y-axis" => "y-axis (x = 0)".to_string(),
+            "edge-x" => format!("edge-x (y = {})", m(units.mu() * l)),
+            "edge-y" => format!("edge-y (x = {})", m(l)),
+            other => other.to_string(),
+        };
+    }
     match line {
         "x-axis" => "x-axis (t = 0)".to_string(),
         "y-axis" => "y-axis (s = 0)".to_string(),
         "edge-x" => "edge-x (t = 1)".to_string(),
         "edge-y" => "edge-y (s = 1)".to_string(),
         other => other.to_string(),
+    }
+}
+
+/// Shown length of a unit of a line's coordinate: L along x, μL along y, the half-diagonal
+/// L √(1 + μ²) along the diagonal (in m; 1 for a dimensionless scene, whose coordinates are
+/// s, t and the fraction of the half-diagonal).
+fn line_length(line: &str, units: &Units) -> f64 {
+    let mu = units.mu();
+    if !units.is_physical() {
+        return 1.0;
+    }
+    match line {
+        "x-axis" | "edge-x" => units.from_l(1.0),
+        "y-axis" | "edge-y" => units.from_l(mu),
+        "diagonal" => units.from_l((1.0 + mu * mu).sqrt()),
+        _ => 1.0,
     }
 }
 
@@ -48,6 +78,8 @@ struct Line<'a> {
     label: String,
     colour: RGBColor,
     dashed: bool,
+    /// Shown position per unit of the points' coordinate.
+    length: f64,
     points: &'a [ProfilePoint],
 }
 
@@ -75,16 +107,25 @@ struct Look {
     y_labels: usize,
 }
 
-/// The profile chart: columns of V and σ panels over the coordinate range `x`.
+/// The profile chart: columns of V and σ panels (or w and pressure) over the coordinate range
+/// `x`.
 struct ProfileChart<'a> {
     title: &'a str,
+    /// Range of the points' own coordinate drawn.
+    coords: (f64, f64),
+    /// Range of the x axis, shown units.
     x: (f64, f64),
     columns: Vec<Column<'a>>,
+    /// How values are shown.
+    units: Units,
 }
 
 /// V and σ axis descriptions (on the first column).
 const V_DESC: &str = "V = D w / (P L²), downward";
 const SIGMA_DESC: &str = "σ = μ L² r / P";
+/// Their physical counterparts.
+const W_DESC: &str = "deflection w (mm), downward";
+const PRESSURE_DESC: &str = "contact pressure (kPa)";
 
 impl ProfileChart<'_> {
     fn look(&self) -> Look {
@@ -118,13 +159,21 @@ impl ProfileChart<'_> {
         }
     }
 
-    /// Finite (coord, value) points of `line` inside the coordinate range.
+    /// Finite (position, value) points of `line` inside the coordinate range, in shown units.
     fn points(&self, line: &Line<'_>, sigma: bool) -> Vec<(f64, f64)> {
-        let (x0, x1) = self.x;
+        let (x0, x1) = self.coords;
+        let u = &self.units;
         line.points
             .iter()
             .filter(|p| p.coord >= x0 - 1e-12 && p.coord <= x1 + 1e-12)
-            .map(|p| (p.coord, if sigma { p.sigma } else { p.v }))
+            .map(|p| {
+                let value = if sigma {
+                    u.from_sigma(p.sigma)
+                } else {
+                    u.from_v(p.v)
+                };
+                (p.coord * line.length, value)
+            })
             .filter(|(c, v)| c.is_finite() && v.is_finite())
             .collect()
     }
@@ -195,7 +244,12 @@ impl Picture for ProfileChart<'_> {
                     .x_labels(look.x_labels)
                     .y_labels(look.y_labels);
                 if col == 0 {
-                    mesh.y_desc(if sigma { SIGMA_DESC } else { V_DESC });
+                    mesh.y_desc(match (sigma, self.units.is_physical()) {
+                        (true, false) => SIGMA_DESC,
+                        (false, false) => V_DESC,
+                        (true, true) => PRESSURE_DESC,
+                        (false, true) => W_DESC,
+                    });
                 }
                 mesh.draw().map_err(txt)?;
                 chart
@@ -245,34 +299,60 @@ impl Picture for ProfileChart<'_> {
 }
 
 /// Write the deflection and pressure profiles of one solve along the paper's lines as an SVG
-/// figure like the paper's Figs. 3–5.
+/// figure like the paper's Figs. 3–5, in `units`.
 ///
-/// The top panel shows V = D w / (P L²) against the line coordinate ∈ [−1, 1] with the V axis
-/// pointing down (positive V is a downward deflection), the bottom panel σ = μ L² r / P with a
-/// zero line; each [`Profile`] is one coloured series, named in the legend. Empty profiles (or
-/// an empty slice) give empty axes. Non-finite points are skipped.
+/// Dimensionless scene: the top panel shows V = D w / (P L²) against the line coordinate
+/// ∈ [−1, 1] (s, t, or the fraction of the half-diagonal) with the V axis pointing down
+/// (positive V is a downward deflection), the bottom panel σ = μ L² r / P with a zero line.
+/// Physical scene: the deflection w in mm (pointing down) and the contact pressure in kPa
+/// against the position along the line from the plate's centre in m (x along x-lines, y along
+/// y-lines, the distance along the diagonal). Each [`Profile`] is one coloured series, named in
+/// the legend. Empty profiles (or an empty slice) give empty axes. Non-finite points are
+/// skipped.
 ///
 /// # Errors
 /// [`crate::Error::Io`] if the file cannot be written or drawing fails.
-pub fn write_profiles_svg(path: &Path, profiles: &[Profile], title: &str) -> Result<()> {
-    let lines = profiles
+pub fn write_profiles_svg(
+    path: &Path,
+    profiles: &[Profile],
+    title: &str,
+    units: &Units,
+) -> Result<()> {
+    let lines: Vec<Line<'_>> = profiles
         .iter()
         .enumerate()
         .map(|(k, p)| Line {
-            label: line_label(p.line),
+            label: line_label(p.line, units),
             colour: style::series_colour(k),
             dashed: false,
+            length: line_length(p.line, units),
             points: &p.points,
         })
         .collect();
+    let (x, x_desc) = if units.is_physical() {
+        let half = lines.iter().map(|l| l.length).fold(0.0_f64, f64::max);
+        let half = if half > 0.0 && half.is_finite() {
+            half
+        } else {
+            1.0
+        };
+        (
+            (-half, half),
+            "x, y or distance along the diagonal, from the centre (m)",
+        )
+    } else {
+        ((-1.0, 1.0), "s, t or diagonal fraction")
+    };
     let chart = ProfileChart {
         title,
-        x: (-1.0, 1.0),
+        coords: (-1.0, 1.0),
+        x,
         columns: vec![Column {
             caption: None,
-            x_desc: "s, t or diagonal fraction".to_string(),
+            x_desc: x_desc.to_string(),
             lines,
         }],
+        units: *units,
     };
     write_svg(path, &chart)
 }
@@ -313,6 +393,7 @@ pub(crate) fn write_profile_comparison(
                     label: c.label.clone(),
                     colour: c.colour,
                     dashed: c.dashed,
+                    length: 1.0,
                     points: c
                         .profiles
                         .iter()
@@ -324,8 +405,10 @@ pub(crate) fn write_profile_comparison(
         .collect();
     let chart = ProfileChart {
         title,
+        coords: (0.0, 1.0),
         x: (0.0, 1.0),
         columns,
+        units: Units::dimensionless(1.0),
     };
     write_svg(svg, &chart)?;
     write_png(png, &chart)
@@ -358,11 +441,77 @@ mod tests {
             .collect()
     }
 
+    fn unitless() -> Units {
+        Units::dimensionless(0.5)
+    }
+
+    /// L = 6 m, μ = 2/3, P = 100 kN, D = 20 MN·m: w = 180 V mm, r = 4.1667 σ kPa (see
+    /// `units.rs`).
+    fn slab() -> Units {
+        Units::new(
+            Some(crate::model::Physical {
+                half_length: 6.0,
+                force: 1e5,
+                rigidity: 2e7,
+            }),
+            2.0 / 3.0,
+        )
+    }
+
+    /// Physical profiles: axes in m, mm and kPa, edges named by their position, and the points
+    /// converted: the diagonal's end at L √(1 + μ²) = 2 √13 m, its σ = 1 at the centre shown as
+    /// 1e5 / 24 Pa = 4.1667 kPa.
+    #[test]
+    fn physical_profiles_are_drawn_in_metres_mm_and_kpa() {
+        let dir = tempfile::tempdir().expect("tempdir");
+        let path = dir.path().join("p.svg");
+        let u = slab();
+        write_profiles_svg(&path, &profiles(), "physical", &u).expect("write");
+        let text = std::fs::read_to_string(&path).expect("read");
+        for needle in [
+            "deflection w (mm), downward",
+            "contact pressure (kPa)",
+            "edge-x (y = 4 m)",
+            "edge-y (x = 6 m)",
+            "from the centre (m)",
+        ] {
+            assert!(text.contains(needle), "physical profiles lack {needle:?}");
+        }
+        let p = profiles();
+        let line = Line {
+            label: String::new(),
+            colour: style::SERIES[0],
+            dashed: false,
+            length: line_length("diagonal", &u),
+            points: &p[4].points,
+        };
+        let chart = ProfileChart {
+            title: "",
+            coords: (-1.0, 1.0),
+            x: (-1.0, 1.0),
+            columns: Vec::new(),
+            units: u,
+        };
+        let pts = chart.points(&line, true);
+        let end = 2.0 * 13.0_f64.sqrt();
+        assert!(
+            (pts[20].0 - end).abs() < 1e-12,
+            "diagonal end {}",
+            pts[20].0
+        );
+        // σ at the centre of the diagonal profile: (1 − 0 − 0.8)⁺ = 0.2 → 0.2 · 1e5 / 24 Pa.
+        let want = 0.2 * 1e5 / 24.0 * 1e-3;
+        assert!((pts[10].1 - want).abs() < 1e-12, "{} vs {want}", pts[10].1);
+        let v = chart.points(&line, false);
+        // V at the centre: 0.1 − 0.04 = 0.06 → 180 · 0.06 mm.
+        assert!((v[10].1 - 10.8).abs() < 1e-12, "{}", v[10].1);
+    }
+
     #[test]
     fn profiles_svg_is_written() {
         let dir = tempfile::tempdir().expect("tempdir");
         let path = dir.path().join("profiles.svg");
-        write_profiles_svg(&path, &profiles(), "Profiles test title").expect("write");
+        write_profiles_svg(&path, &profiles(), "Profiles test title", &unitless()).expect("write");
         let text = std::fs::read_to_string(&path).expect("read");
         assert!(text.contains("<svg"));
         assert!(text.contains("Profiles test title"));
@@ -373,7 +522,7 @@ mod tests {
     fn profiles_svg_handles_degenerate_input() {
         let dir = tempfile::tempdir().expect("tempdir");
         let empty = dir.path().join("empty.svg");
-        write_profiles_svg(&empty, &[], "empty").expect("no profiles");
+        write_profiles_svg(&empty, &[], "empty", &unitless()).expect("no profiles");
         assert!(std::fs::metadata(&empty).expect("meta").len() > 0);
 
         let flat = vec![
@@ -395,7 +544,7 @@ mod tests {
             },
         ];
         let path = dir.path().join("flat.svg");
-        write_profiles_svg(&path, &flat, "flat").expect("flat profiles");
+        write_profiles_svg(&path, &flat, "flat", &unitless()).expect("flat profiles");
         assert!(std::fs::read_to_string(&path)
             .expect("read")
             .contains("<svg"));
@@ -443,13 +592,16 @@ mod tests {
         let p = profiles();
         let chart = ProfileChart {
             title: "",
+            coords: (0.0, 1.0),
             x: (0.0, 1.0),
             columns: Vec::new(),
+            units: Units::dimensionless(1.0),
         };
         let line = Line {
             label: String::new(),
             colour: style::SERIES[0],
             dashed: false,
+            length: 1.0,
             points: &p[0].points,
         };
         let pts = chart.points(&line, true);

@@ -80,21 +80,46 @@ const RAMP: [(u8, u8, u8); 8] = [
     (128, 0, 38),
 ];
 
-/// Colour of the normalised value `f` ∈ [0, 1] on [`RAMP`] (linear between its classes;
-/// values outside are clamped, NaN is 0).
-pub(crate) fn ramp(f: f64) -> RGBColor {
+/// Diverging colour map (ColorBrewer RdBu, reversed): blue for negative, white at zero, red for
+/// positive.
+const DIVERGING: [(u8, u8, u8); 9] = [
+    (33, 102, 172),
+    (67, 147, 195),
+    (146, 197, 222),
+    (209, 229, 240),
+    (247, 247, 247),
+    (253, 219, 199),
+    (244, 165, 130),
+    (214, 96, 77),
+    (178, 24, 43),
+];
+
+/// Colour of the normalised value `f` ∈ [0, 1] on `table` (linear between its classes; values
+/// outside are clamped, NaN is 0).
+fn interpolate(table: &[(u8, u8, u8)], f: f64) -> RGBColor {
     let f = if f.is_finite() {
         f.clamp(0.0, 1.0)
     } else {
         0.0
     };
-    let pos = f * (RAMP.len() - 1) as f64;
-    let k = (pos.floor() as usize).min(RAMP.len() - 2);
+    let pos = f * (table.len() - 1) as f64;
+    let k = (pos.floor() as usize).min(table.len() - 2);
     let a = pos - k as f64;
-    let (r0, g0, b0) = RAMP[k];
-    let (r1, g1, b1) = RAMP[k + 1];
+    let (r0, g0, b0) = table[k];
+    let (r1, g1, b1) = table[k + 1];
     let mix = |u: u8, v: u8| (f64::from(u) * (1.0 - a) + f64::from(v) * a).round() as u8;
     RGBColor(mix(r0, r1), mix(g0, g1), mix(b0, b1))
+}
+
+/// Colour of the normalised value `f` ∈ [0, 1] on [`RAMP`] (linear between its classes;
+/// values outside are clamped, NaN is 0).
+pub(crate) fn ramp(f: f64) -> RGBColor {
+    interpolate(&RAMP, f)
+}
+
+/// Colour of the normalised value `f` ∈ [0, 1] on [`DIVERGING`] (½ is zero, white).
+pub(crate) fn diverging(f: f64) -> RGBColor {
+    interpolate(&DIVERGING, f)
 }
 
 /// Relative luminance-like brightness of a colour, 0–255 (to pick black or white text on it).
@@ -108,6 +133,20 @@ pub(crate) const LIFTED: RGBColor = RGBColor(215, 215, 215);
 pub(crate) const LOADED: RGBColor = RGBColor(205, 205, 205);
 /// The contact boundary on the contact map.
 pub(crate) const BOUNDARY: RGBColor = RGBColor(20, 20, 20);
+
+/// The contour where the pressure reaches the allowable one (dashed) and the hatching of the
+/// area above it.
+pub(crate) const EXCEEDED: RGBColor = RGBColor(200, 0, 200);
+/// A white band under dashed contours, so that they read on dark cells.
+pub(crate) const HALO: RGBAColor = RGBAColor(255, 255, 255, 0.85);
+/// A lighter white band under hatch lines, so that the colours beneath still read.
+pub(crate) const HATCH_HALO: RGBAColor = RGBAColor(255, 255, 255, 0.55);
+/// Outline of voids under the plate (dashed).
+pub(crate) const VOID: RGBColor = RGBColor(40, 40, 40);
+/// Outline of soft or stiff foundation zones (dotted).
+pub(crate) const ZONE: RGBColor = RGBColor(20, 70, 160);
+/// Line loads.
+pub(crate) const LINE_LOAD: RGBColor = RGBColor(25, 25, 90);
 
 /// Major grid lines of cartesian charts.
 pub(crate) const GRID_MAJOR: RGBColor = RGBColor(215, 215, 215);
@@ -184,5 +223,8 @@ mod tests {
         assert_eq!(ramp(7.0), ramp(1.0));
         // 0.5 · 7 = 3.5: halfway between classes 3 (253, 141, 60) and 4 (252, 78, 42).
         assert_eq!(ramp(0.5), RGBColor(253, 110, 51));
+        assert_eq!(diverging(0.5), RGBColor(247, 247, 247), "zero is white");
+        assert_eq!(diverging(0.0), RGBColor(33, 102, 172));
+        assert_eq!(diverging(1.0), RGBColor(178, 24, 43));
     }
 }

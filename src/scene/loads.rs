@@ -1,0 +1,528 @@
+//! Validation of the load-related sections of a scene: `[[load]]` with its cases, `[[void]]`,
+//! the Winkler zones and the allowable pressure — in unit geometry with magnitudes not yet
+//! divided by P, since every combination has its own P ([`super::validate`] does that).
+
+use super::spec::{Coord, LoadKind, LoadSpec};
+use super::validate::finite_positive;
+use super::SceneFile;
+use crate::error::{Error, Result};
+use crate::foundation::FoundationKind;
+use crate::model::{Groups, Load, Void, Zone};
+
+/// A load as written, in unit-system geometry, its magnitude not yet divided by P: newtons (SI
+/// scenes: forces in N, patches in N per unit of (x/L)(y/L), lines in N per unit of length/L,
+/// temperatures as D κ in N) or the loads' own relative unit (dimensionless scenes).
+#[derive(Debug, Clone)]
+pub(super) struct RawLoad {
+    pub(super) load: Load,
+    pub(super) case: String,
+}
+
+/// What turns SI temperature differences into curvatures: α (if given), H and D.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Thermal {
+    pub(super) alpha: Option<f64>,
+    pub(super) thickness: f64,
+    pub(super) rigidity: f64,
+}
+
+/// Name of the case of loads that name none.
+pub const DEFAULT_CASE: &str = "default";
+
+/// `[[load]]`: every load in unit geometry with its raw magnitude and its case.
+pub(super) fn raw_loads(
+    specs: &[LoadSpec],
+    groups: &Groups,
+    physical: Option<(f64, f64)>,
+    thermal: Option<Thermal>,
+    scale_xy: [f64; 2],
+) -> Result<Vec<RawLoad>> {
+    let mu = groups.mu;
+    let mut loads = Vec::with_capacity(specs.len());
+    if specs.is_empty() {
+        return Err(Error::invalid(
+            "load",
+            "no [[load]] entries: add at least one point, patch, uniform or line load",
+        ));
+    }
+    let (hx, hy) = (1.0, mu);
+    let tol = 1e-9;
+    let coord_unit = if physical.is_some() {
+        "m"
+    } else {
+        "s or t, in [−1, 1]"
+    };
+    // Physical pressures are per m², unit geometry has areas in L²; lines per m, lengths in L.
+    let (area_scale, length_scale) = match physical {
+        Some((l, _)) => (l * l, l),
+        None => (1.0 / mu, 1.0),
+    };
+    for (k, l) in specs.iter().enumerate() {
+        let field = |name: &str| format!("load[{k}].{name}");
+        let value = |name: &str, c: Option<Coord>, scale: f64, half: f64| -> Result<f64> {
+            match c {
+                Some(Coord::Value(v)) => {
+                    if !v.is_finite() {
+                        return Err(Error::invalid(
+                            field(name),
+                            format!("must be finite, got {v}"),
+                        ));
+                    }
+                    let u = v * scale;
+                    if u.abs() > half * (1.0 + tol) {
+                        return Err(Error::invalid(
+                            field(name),
+                            format!(
+                                "{v} {coord_unit} lies outside the plate (|{name}| ≤ {:.6})",
+                                half / scale
+                            ),
+                        ));
+                    }
+                    Ok(u.clamp(-half, half))
+                }
+                Some(Coord::Range(_)) => Err(Error::invalid(
+                    field(name),
+                    "a point load takes a single coordinate, not a range",
+                )),
+                None => Err(Error::invalid(field(name), "missing: the load's position")),
+            }
+        };
+        let range = |name: &str, c: Option<Coord>, scale: f64, half: f64| -> Result<[f64; 2]> {
+            match c {
+                Some(Coord::Range(r)) => rect_range(&field(name), r, scale, half, coord_unit),
+                Some(Coord::Value(_)) => Err(Error::invalid(
+                    field(name),
+                    "a patch load takes a range [lo, hi]",
+                )),
+                None => Err(Error::invalid(
+                    field(name),
+                    "missing: the patch's extent [lo, hi]",
+                )),
+            }
+        };
+        let magnitude = |name: &str, v: Option<f64>| -> Result<f64> {
+            let v = v.ok_or_else(|| Error::invalid(field(name), "missing"))?;
+            if !v.is_finite() {
+                return Err(Error::invalid(
+                    field(name),
+                    format!("must be finite, got {v}"),
+                ));
+            }
+            Ok(v)
+        };
+        let forbid = |name: &str, present: bool, kind: &str| -> Result<()> {
+            if present {
+                Err(Error::invalid(
+                    field(name),
+                    format!("does not apply to a {kind} load"),
+                ))
+            } else {
+                Ok(())
+            }
+        };
+        let kind_name = match l.kind {
+            LoadKind::Point => "point",
+            LoadKind::Patch => "patch",
+            LoadKind::Uniform => "uniform",
+            LoadKind::Line => "line",
+            LoadKind::Temperature => "temperature",
+        };
+        // Fields that belong to other kinds.
+        let line = matches!(l.kind, LoadKind::Line);
+        let temp = matches!(l.kind, LoadKind::Temperature);
+        forbid("from", l.from.is_some() && !line, kind_name)?;
+        forbid("to", l.to.is_some() && !line, kind_name)?;
+        forbid(
+            "force_per_length",
+            l.force_per_length.is_some() && !line,
+            kind_name,
+        )?;
+        forbid("difference", l.difference.is_some() && !temp, kind_name)?;
+        forbid("curvature", l.curvature.is_some() && !temp, kind_name)?;
+        if line || temp {
+            forbid("x", l.x.is_some(), kind_name)?;
+            forbid("y", l.y.is_some(), kind_name)?;
+            forbid("force", l.force.is_some(), kind_name)?;
+            forbid("pressure", l.pressure.is_some(), kind_name)?;
+        }
+        let load = match l.kind {
+            LoadKind::Point => {
+                forbid("pressure", l.pressure.is_some(), "point")?;
+                Load::Point {
+                    x: value("x", l.x, scale_xy[0], hx)?,
+                    y: value("y", l.y, scale_xy[1], hy)?,
+                    force: magnitude("force", l.force)?,
+                }
+            }
+            LoadKind::Patch => {
+                forbid("force", l.force.is_some(), "patch")?;
+                Load::Patch {
+                    x: range("x", l.x, scale_xy[0], hx)?,
+                    y: range("y", l.y, scale_xy[1], hy)?,
+                    pressure: magnitude("pressure", l.pressure)? * area_scale,
+                }
+            }
+            LoadKind::Uniform => {
+                forbid("force", l.force.is_some(), "uniform")?;
+                forbid("x", l.x.is_some(), "uniform")?;
+                forbid("y", l.y.is_some(), "uniform")?;
+                Load::Patch {
+                    x: [-hx, hx],
+                    y: [-hy, hy],
+                    pressure: magnitude("pressure", l.pressure)? * area_scale,
+                }
+            }
+            LoadKind::Line => {
+                let end = |name: &str, p: Option<[f64; 2]>| -> Result<[f64; 2]> {
+                    let p = p.ok_or_else(|| {
+                        Error::invalid(field(name), "missing: the line's end point [x, y]")
+                    })?;
+                    let x = value(name, Some(Coord::Value(p[0])), scale_xy[0], hx)?;
+                    let y = value(name, Some(Coord::Value(p[1])), scale_xy[1], hy)?;
+                    Ok([x, y])
+                };
+                let (from, to) = (end("from", l.from)?, end("to", l.to)?);
+                if (to[0] - from[0]).hypot(to[1] - from[1]) <= 1e-9 {
+                    return Err(Error::invalid(
+                        field("to"),
+                        "the line's ends coincide: give a segment of non-zero length (or a point load)",
+                    ));
+                }
+                Load::Line {
+                    from,
+                    to,
+                    force_per_length: magnitude("force_per_length", l.force_per_length)?
+                        * length_scale,
+                }
+            }
+            LoadKind::Temperature => {
+                let curvature = match (thermal, l.difference, l.curvature) {
+                    (Some(th), Some(dt), None) => {
+                        let dt = magnitude("difference", Some(dt))?;
+                        let alpha = th.alpha.ok_or_else(|| {
+                            Error::invalid(
+                                "plate.thermal_expansion",
+                                format!("missing: load[{k}] is a temperature load; give the plate's coefficient of thermal expansion in 1/K (concrete ≈ 1.0e-5)"),
+                            )
+                        })?;
+                        th.rigidity * alpha * dt / th.thickness
+                    }
+                    (Some(_), _, Some(_)) => {
+                        return Err(Error::invalid(
+                            field("curvature"),
+                            "belongs to dimensionless scenes; an SI scene gives `difference` in K",
+                        ))
+                    }
+                    (None, Some(_), _) => {
+                        return Err(Error::invalid(
+                            field("difference"),
+                            "belongs to SI scenes; a dimensionless scene gives `curvature` (∂²V/∂s² of free curling, in the loads' force unit)",
+                        ))
+                    }
+                    (None, None, Some(c)) => magnitude("curvature", Some(c))?,
+                    (_, None, None) => {
+                        return Err(Error::invalid(
+                            field("difference"),
+                            "missing: the temperature difference top minus bottom, K (dimensionless scenes: `curvature`)",
+                        ))
+                    }
+                };
+                Load::Temperature { curvature }
+            }
+        };
+        let case = match &l.case {
+            Some(c) if c.trim().is_empty() => {
+                return Err(Error::invalid(
+                    field("case"),
+                    "is empty: name the case (e.g. \"dead\") or leave it out for \"default\"",
+                ))
+            }
+            Some(c) => c.trim().to_string(),
+            None => DEFAULT_CASE.to_string(),
+        };
+        loads.push(RawLoad { load, case });
+    }
+    Ok(loads)
+}
+
+/// A range [lo, hi] of a rectangle, checked to be finite, increasing and on the plate, in unit
+/// geometry.
+pub(super) fn rect_range(
+    field: &str,
+    r: [f64; 2],
+    scale: f64,
+    half: f64,
+    unit: &str,
+) -> Result<[f64; 2]> {
+    let [a, b] = r;
+    let tol = 1e-9;
+    if !a.is_finite() || !b.is_finite() {
+        return Err(Error::invalid(field, "range ends must be finite"));
+    }
+    if a >= b {
+        return Err(Error::invalid(
+            field,
+            format!("range [{a}, {b}] must be increasing"),
+        ));
+    }
+    let (ua, ub) = (a * scale, b * scale);
+    if ua < -half * (1.0 + tol) || ub > half * (1.0 + tol) {
+        return Err(Error::invalid(
+            field,
+            format!(
+                "range [{a}, {b}] {unit} leaves the plate (±{:.6})",
+                half / scale
+            ),
+        ));
+    }
+    Ok([ua.max(-half), ub.min(half)])
+}
+
+/// Loads in units of P, and P (a quarter of the resultant, in the raw unit), for one set of
+/// factored loads; `what` names the set in errors.
+pub(super) fn normalise(raw: Vec<(usize, Load)>, what: &str) -> Result<(Vec<Load>, f64)> {
+    let total: f64 = raw.iter().map(|(_, l)| l.resultant()).sum();
+    let gross: f64 = raw.iter().map(|(_, l)| l.resultant().abs()).sum();
+    if !total.is_finite() || !gross.is_finite() {
+        return Err(Error::invalid(
+            "load",
+            format!(
+                "{what}the load magnitudes overflow when added up: check their units (N and Pa)"
+            ),
+        ));
+    }
+    if total.abs() <= 1e-12 * gross.max(f64::MIN_POSITIVE) {
+        let hint = if raw
+            .iter()
+            .any(|(_, l)| matches!(l, Load::Temperature { .. }))
+        {
+            "; a temperature load alone has no resultant: add the plate's self-weight to the same combination"
+        } else {
+            ""
+        };
+        return Err(Error::invalid(
+            "load",
+            format!("{what}the loads add up to zero (resultant {total:e}); a free plate needs a net vertical load{hint}"),
+        ));
+    }
+    let p_force = total.abs() / 4.0;
+    let mut loads = raw;
+    for (k, l) in loads.iter_mut() {
+        let (v, name) = match l {
+            Load::Point { force, .. } => (force, "force"),
+            Load::Patch { pressure, .. } => (pressure, "pressure"),
+            Load::Line {
+                force_per_length, ..
+            } => (force_per_length, "force_per_length"),
+            Load::Temperature { curvature } => (curvature, "difference"),
+        };
+        *v /= p_force;
+        // A huge pressure on a vanishing patch has a finite resultant, but the pressure itself,
+        // in units of the resultant per unit area, can overflow.
+        if !v.is_finite() {
+            return Err(Error::invalid(
+                format!("load[{k}].{name}"),
+                format!("{what}the magnitude overflows when expressed per unit of the total load: the patch or line is too small for its load (check its extent and units)"),
+            ));
+        }
+    }
+    Ok((loads.into_iter().map(|(_, l)| l).collect(), p_force))
+}
+
+/// A void as written: unit geometry, depth raw (SI: d D / L² in N).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct RawVoid {
+    x: [f64; 2],
+    y: [f64; 2],
+    depth: f64,
+    /// Depth as written (m or the scene's unit), for messages.
+    written: f64,
+}
+
+/// `[[void]]`: rectangles on the plate with a positive depth.
+pub(super) fn raw_voids(
+    file: &SceneFile,
+    groups: &Groups,
+    physical: Option<(f64, f64)>,
+    scale_xy: [f64; 2],
+) -> Result<Vec<RawVoid>> {
+    let unit = if physical.is_some() { "m" } else { "s or t" };
+    let mut out = Vec::new();
+    for (k, v) in file.void.iter().enumerate() {
+        let x = rect_range(&format!("void[{k}].x"), v.x, scale_xy[0], 1.0, unit)?;
+        let y = rect_range(&format!("void[{k}].y"), v.y, scale_xy[1], groups.mu, unit)?;
+        let d = finite_positive(
+            &format!("void[{k}].depth"),
+            v.depth,
+            if physical.is_some() {
+                "m"
+            } else {
+                "the loads' unit of V"
+            },
+        )?;
+        let depth = match physical {
+            Some((l, rigidity)) => d * rigidity / (l * l),
+            None => d,
+        };
+        out.push(RawVoid {
+            x,
+            y,
+            depth,
+            written: d,
+        });
+    }
+    for a in 0..out.len() {
+        for b in 0..a {
+            if overlap(out[a].x, out[a].y, out[b].x, out[b].y) {
+                return Err(Error::invalid(
+                    format!("void[{a}]"),
+                    format!("overlaps void[{b}]: give non-overlapping rectangles (split them where the depth changes)"),
+                ));
+            }
+        }
+    }
+    Ok(out)
+}
+
+fn overlap(xa: [f64; 2], ya: [f64; 2], xb: [f64; 2], yb: [f64; 2]) -> bool {
+    let tol = 1e-12;
+    xa[0] < xb[1] - tol && xb[0] < xa[1] - tol && ya[0] < yb[1] - tol && yb[0] < ya[1] - tol
+}
+
+/// Deepest void, in multiples of the mean settlement under the loads, that is accepted: a void
+/// that deep never closes, and deeper ones change nothing.
+pub const MAX_VOID_DEPTH_RATIO: f64 = 1e3;
+
+/// Voids of one load set in the unit system, checked against the mean settlement under it:
+/// Winkler q/K, half-space ≈ 3 (1 − ν_s²) F / (π E_s √A) (the mean settlement of a flexible
+/// uniform square load is 0.95 q B (1 − ν_s²)/E_s).
+pub(super) fn voids_for(
+    raw: &[RawVoid],
+    groups: &Groups,
+    p_force: f64,
+    physical: Option<(f64, f64)>,
+    what: &str,
+) -> Result<Vec<Void>> {
+    let c = groups.mu * groups.gamma;
+    let area = 4.0 * groups.mu;
+    let settlement = match groups.foundation {
+        FoundationKind::Winkler => 4.0 * c / area,
+        FoundationKind::HalfSpace => 3.0 * c * 4.0 / area.sqrt(),
+    };
+    raw.iter()
+        .enumerate()
+        .map(|(k, v)| {
+            let depth = v.depth / p_force;
+            if depth > MAX_VOID_DEPTH_RATIO * settlement {
+                let (scale, unit) = match physical {
+                    Some((l, d)) => (p_force * l * l / d, "m"),
+                    None => (p_force, "(loads' unit of V)"),
+                };
+                return Err(Error::invalid(
+                    format!("void[{k}].depth"),
+                    format!(
+                        "{what}{} {unit} is {:.0} times the mean settlement under the loads ({:.3e} {unit}): a void that deep never closes and acts like one {MAX_VOID_DEPTH_RATIO:.0} times the settlement; check the units or give at most {:.3e} {unit}",
+                        v.written,
+                        depth / settlement,
+                        settlement * scale,
+                        MAX_VOID_DEPTH_RATIO * settlement * scale
+                    ),
+                ));
+            }
+            Ok(Void {
+                x: v.x,
+                y: v.y,
+                depth,
+            })
+        })
+        .collect()
+}
+
+/// `[[foundation.zone]]` / `[[dimensionless.zone]]`: Winkler patches with their compliance
+/// ratio (reference modulus over the zone's).
+pub(super) fn zones(file: &SceneFile, groups: &Groups, scale_xy: [f64; 2]) -> Result<Vec<Zone>> {
+    let (specs, reference, prefix, physical) = match (&file.foundation, &file.dimensionless) {
+        (Some(f), _) => (&f.zone, f.modulus, "foundation.zone", true),
+        (None, Some(d)) => (&d.zone, Some(groups.gamma), "dimensionless.zone", false),
+        (None, None) => return Ok(Vec::new()),
+    };
+    if specs.is_empty() {
+        return Ok(Vec::new());
+    }
+    if groups.foundation != FoundationKind::Winkler {
+        return Err(Error::invalid(
+            format!("{prefix}[0]"),
+            "zones of another modulus apply to a Winkler subgrade only; a half-space is homogeneous (model the soft patch with a Winkler foundation, or leave the zone out)",
+        ));
+    }
+    let unit = if physical { "m" } else { "s or t" };
+    let mut out: Vec<Zone> = Vec::new();
+    for (k, z) in specs.iter().enumerate() {
+        let field = |n: &str| format!("{prefix}[{k}].{n}");
+        let x = rect_range(&field("x"), z.x, scale_xy[0], 1.0, unit)?;
+        let y = rect_range(&field("y"), z.y, scale_xy[1], groups.mu, unit)?;
+        let ratio = match (physical, z.modulus, z.gamma) {
+            (true, Some(m), None) => {
+                let m = finite_positive(&field("modulus"), m, "N/m³")?;
+                reference.unwrap_or(m) / m
+            }
+            (false, None, Some(g)) => finite_positive(&field("gamma"), g, "Γ_w of the zone")? / groups.gamma,
+            (true, _, _) => {
+                return Err(Error::invalid(
+                    field("modulus"),
+                    "give the zone's Winkler modulus in N/m³ (and no `gamma`, which belongs to dimensionless scenes)",
+                ))
+            }
+            (false, _, _) => {
+                return Err(Error::invalid(
+                    field("gamma"),
+                    "give the zone's Γ_w (and no `modulus`, which belongs to SI scenes)",
+                ))
+            }
+        };
+        for (b, o) in out.iter().enumerate() {
+            if overlap(x, y, o.x, o.y) {
+                return Err(Error::invalid(
+                    format!("{prefix}[{k}]"),
+                    format!("overlaps {prefix}[{b}]: give non-overlapping rectangles"),
+                ));
+            }
+        }
+        out.push(Zone {
+            x,
+            y,
+            compliance_ratio: ratio,
+        });
+    }
+    Ok(out)
+}
+
+/// Allowable pressure, raw (SI: r L² in N; dimensionless: in the units of patch pressures).
+pub(super) fn raw_allowable(
+    file: &SceneFile,
+    groups: &Groups,
+    physical: Option<(f64, f64)>,
+) -> Result<Option<f64>> {
+    let (value, field) = match (&file.foundation, &file.dimensionless) {
+        (Some(f), _) => (f.allowable_pressure, "foundation.allowable_pressure"),
+        (None, Some(d)) => (d.allowable_pressure, "dimensionless.allowable_pressure"),
+        (None, None) => (None, ""),
+    };
+    value
+        .map(|v| {
+            let v = finite_positive(
+                field,
+                v,
+                if physical.is_some() {
+                    "Pa"
+                } else {
+                    "the units of patch pressures"
+                },
+            )?;
+            Ok(match physical {
+                Some((l, _)) => v * l * l,
+                None => v / groups.mu,
+            })
+        })
+        .transpose()
+}
