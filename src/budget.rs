@@ -100,15 +100,18 @@ pub fn estimate_bytes(
 }
 
 /// Rough memory need of the iterative route (half-space T as an FFT operator, penalty steps by
-/// conjugate gradients), bytes: the sparse operators with two sparse Cholesky factors (the plate
-/// and the preconditioner's plate on springs), the FFT kernels and work arrays
-/// ([`crate::foundation::fft::toeplitz_bytes`]) and some 40 vectors of n_σ and n_eq.
+/// conjugate gradients), bytes: the sparse operators with the plate's Cholesky factor (as
+/// [`operator_bytes`] counts them), the preconditioner's factor on a grid twice as coarse (a
+/// quarter of that), the FFT kernels and work arrays
+/// ([`crate::foundation::fft::toeplitz_bytes`]) and some 40 vectors of n_σ and n_eq. Like the
+/// other estimates it errs high: 2.6 GiB predicted for 512 × 512 elements (quarter model)
+/// against 0.65 GiB measured (BENCHMARKS.md).
 pub fn iterative_bytes(mesh: &Mesh) -> f64 {
     let n = mesh.n_nodes() as f64;
     let n_eq = 3.0 * n;
     let factor = 31.0 * n_eq * n.max(2.0).log2() * 16.0;
     operator_bytes(mesh, FoundationKind::Winkler)
-        + factor
+        + 0.25 * factor
         + crate::foundation::fft::toeplitz_bytes(mesh) as f64
         + 40.0 * (n + n_eq) * 8.0
 }
