@@ -67,14 +67,34 @@ pub fn analyse(problem: &Problem, progress: &(dyn Fn(&str) + Sync)) -> Result<Co
     let first = &models[0];
     // Combinations run side by side: each needs its own factorisation.
     let parallel = rayon::current_num_threads().min(models.len()).max(1) as f64;
-    budget::check_mesh(
-        &mesh,
-        first.groups.foundation,
-        first.constraint,
-        &problem.method,
-        problem.memory_limit / parallel,
-    )?;
-    let base = Operators::assemble_shared(&models);
+    // The route of `[solver] route` (the half-space T by FFT beyond the size `auto` allows).
+    let toeplitz = first.groups.foundation == crate::foundation::FoundationKind::HalfSpace
+        && problem.route.iterative(mesh.n_nodes(), &problem.method)?;
+    if toeplitz {
+        let need = budget::iterative_bytes(&mesh);
+        if need > problem.memory_limit / parallel {
+            return Err(Error::TooLarge {
+                what: format!(
+                    "{} combinations of a {} × {} element model on the iterative route",
+                    models.len(),
+                    mesh.nx,
+                    mesh.ny
+                ),
+                need_gib: need * parallel / 1024f64.powi(3),
+                limit_gib: problem.memory_limit / 1024f64.powi(3),
+                hint: "use fewer elements".into(),
+            });
+        }
+    } else {
+        budget::check_mesh(
+            &mesh,
+            first.groups.foundation,
+            first.constraint,
+            &problem.method,
+            problem.memory_limit / parallel,
+        )?;
+    }
+    let base = Operators::assemble_shared_with(&models, toeplitz);
     let assemble_s = t0.elapsed().as_secs_f64();
     let runs = problem
         .combinations

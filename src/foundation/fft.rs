@@ -323,10 +323,16 @@ impl ToeplitzCompliance {
 
     /// y = T x into a caller's buffer.
     pub fn apply_into(&self, x: &[f64], y: &mut [f64]) {
-        let mut guard = self.scratch.lock().unwrap_or_else(|e| e.into_inner());
-        let mut s = guard.take().unwrap_or_else(|| self.new_scratch());
+        // Borrow the kept buffers without holding the lock while computing: concurrent products
+        // (combinations solved side by side share T) make their own.
+        let kept = self
+            .scratch
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .take();
+        let mut s = kept.unwrap_or_else(|| self.new_scratch());
         self.apply_with(x, y, &mut s);
-        *guard = Some(s);
+        *self.scratch.lock().unwrap_or_else(|e| e.into_inner()) = Some(s);
     }
 
     fn apply_with(&self, x: &[f64], y: &mut [f64], s: &mut Scratch) {
