@@ -53,6 +53,13 @@ fn half_space(c: &mut Criterion) {
         g.bench_with_input(BenchmarkId::new("penalty-solve", n), &ops, |b, ops| {
             b.iter(|| solve::solve(ops, &Method::penalty()).expect("solve"))
         });
+        // The same penalty on the iterative route (T by FFT, conjugate gradients).
+        let iterative = Operators::assemble_with(&p.model, true);
+        g.bench_with_input(
+            BenchmarkId::new("penalty-solve-iterative", n),
+            &iterative,
+            |b, ops| b.iter(|| solve::solve(ops, &Method::penalty()).expect("solve")),
+        );
         for kkt in [KktSolver::Faer, KktSolver::Qdldl] {
             let s = liftoff::QpSettings {
                 kkt,
