@@ -184,3 +184,62 @@ fn iterative_equals_dense_with_gauss_constraints() {
     let (dense, iterative, ops) = both(&p, &method);
     assert_same("gauss", &ops, &dense, &iterative);
 }
+
+/// The CLI's `--solver` flag: the iterative route reports its CG iterations and gives the
+/// dense route's contact radius; the QP on the iterative route is refused (exit 2, the scene
+/// field named).
+#[test]
+fn the_solver_flag_selects_the_route() {
+    let run = |args: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_liftoff"))
+            .args(args)
+            .output()
+            .expect("run liftoff")
+    };
+    let json = |route: &str| -> serde_json::Value {
+        let o = run(&[
+            "solve",
+            "example:paper-halfspace",
+            "--mesh",
+            "32,32",
+            "--solver",
+            route,
+            "--json",
+        ]);
+        assert!(
+            o.status.success(),
+            "{route}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        serde_json::from_slice(&o.stdout).expect("summary.json")
+    };
+    let dense = json("dense");
+    let iterative = json("iterative");
+    assert!(
+        dense["solver_info"]["cg_iterations"].is_null(),
+        "dense: no CG"
+    );
+    assert!(
+        iterative["solver_info"]["cg_iterations"]
+            .as_f64()
+            .unwrap_or(0.0)
+            > 0.0,
+        "iterative: CG iterations reported"
+    );
+    let (rd, ri) = (
+        dense["contact_radius"].as_f64().unwrap_or(f64::NAN),
+        iterative["contact_radius"].as_f64().unwrap_or(f64::NAN),
+    );
+    // σ agrees to ~1e-9, so the located boundary does too; 1e-6 is the tolerance.
+    assert!((rd - ri).abs() < 1e-6, "contact radius {rd} vs {ri}");
+    let qp = run(&[
+        "solve",
+        "example:paper-halfspace",
+        "--solver",
+        "iterative",
+        "--method",
+        "qp",
+    ]);
+    assert_eq!(qp.status.code(), Some(2), "QP on the iterative route");
+    assert!(String::from_utf8_lossy(&qp.stderr).contains("solver.route"));
+}

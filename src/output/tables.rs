@@ -137,13 +137,19 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
         "  status     : {} after {} step(s)",
         s.status, s.iterations
     ));
-    if !s.solver_info.is_empty() {
+    // clarabel's diagnostics (the QP); the iterative route adds only `cg_iterations`.
+    if s.solver_info.contains_key("primal_residual") {
         let get = |k: &str| s.solver_info.get(k).copied().unwrap_or(f64::NAN);
         l.push(format!(
             "  clarabel   : primal residual {:.1e}, dual residual {:.1e}, duality gap {:.1e}",
             get("primal_residual"),
             get("dual_residual"),
             get("duality_gap")
+        ));
+    }
+    if let Some(n) = s.solver_info.get("cg_iterations") {
+        l.push(format!(
+            "  linear     : iterative route (T by FFT), {n:.0} conjugate-gradient iterations in all"
         ));
     }
     if !s.penalty_stages.is_empty() {
