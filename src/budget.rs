@@ -138,18 +138,13 @@ pub fn check_route(model: &Model, method: &Method, route: Route, limit: f64) -> 
     if need <= limit {
         return Ok(true);
     }
-    Err(Error::TooLarge {
-        what: format!(
-            "a {} model of {} × {} elements ({} nodes) on the iterative route",
-            mesh.symmetry_name(),
-            mesh.nx,
-            mesh.ny,
-            mesh.n_nodes()
-        ),
-        need_gib: need / GIB,
-        limit_gib: limit / GIB,
-        hint: "memory grows about linearly with the nodes here: use fewer elements, or an even mesh with symmetric loads".into(),
-    })
+    Err(too_large(
+        &mesh,
+        " on the iterative route",
+        need,
+        limit,
+        "memory grows about linearly with the nodes here: use fewer elements, or an even mesh with symmetric loads".into(),
+    ))
 }
 
 /// Refuse a (model, method) pair that will not fit in `limit` bytes on the dense route.
@@ -184,9 +179,14 @@ pub fn check_mesh(
     } else {
         "use fewer elements, or an even mesh with symmetric loads".to_string()
     };
-    Err(Error::TooLarge {
+    Err(too_large(mesh, "", need, limit, hint))
+}
+
+/// The refusal of a model of `mesh` that needs `need` bytes of `limit`.
+fn too_large(mesh: &Mesh, route: &str, need: f64, limit: f64, hint: String) -> Error {
+    Error::TooLarge {
         what: format!(
-            "a {} model of {} × {} elements ({} nodes)",
+            "a {} model of {} × {} elements ({} nodes){route}",
             mesh.symmetry_name(),
             mesh.nx,
             mesh.ny,
@@ -195,5 +195,5 @@ pub fn check_mesh(
         need_gib: need / GIB,
         limit_gib: limit / GIB,
         hint,
-    })
+    }
 }

@@ -205,7 +205,7 @@ impl Operators {
         constraint: ConstraintPoints,
         notes: Vec<String>,
     ) -> Self {
-        Self::build_zoned(
+        Self::build_all(
             mesh,
             section,
             foundation,
@@ -214,35 +214,11 @@ impl Operators {
             loads,
             constraint,
             notes,
-        )
-    }
-
-    /// [`Self::build`] with Winkler zones of another modulus.
-    #[allow(clippy::too_many_arguments)]
-    pub fn build_zoned(
-        mesh: Mesh,
-        section: Section,
-        foundation: FoundationKind,
-        foundation_constant: f64,
-        zones: &[Zone],
-        loads: &[Load],
-        constraint: ConstraintPoints,
-        notes: Vec<String>,
-    ) -> Self {
-        Self::build_all(
-            mesh,
-            section,
-            foundation,
-            foundation_constant,
-            zones,
-            loads,
-            constraint,
-            notes,
             false,
         )
     }
 
-    /// [`Self::build_zoned`] with the half-space T dense or, `toeplitz`, as the FFT operator of
+    /// [`Self::build`] with Winkler zones of another modulus and the half-space T dense or, `toeplitz`, as the FFT operator of
     /// the iterative route ([`fft::ToeplitzCompliance`]).
     #[allow(clippy::too_many_arguments)]
     pub fn build_all(

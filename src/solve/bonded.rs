@@ -90,27 +90,17 @@ fn solve_springs(ops: &Operators, t: &[f64]) -> Result<Solution> {
         .zip(t)
         .map(|(&(eq, b), &tj)| b * u[eq] / tj)
         .collect();
-    let gap = discrete_gap(ops, &u, &sigma);
     finite(&u, "bonded Winkler solve")?;
-    Ok(Solution {
-        method: Method::Bonded,
-        u,
-        sigma,
-        gap,
-        rigid: Vec::new(),
-        status: Status::Converged,
-        iterations: 1,
-        history: Vec::new(),
-        info: SolveInfo {
-            timings: Timings {
-                analyse: Some(t_an),
-                factor: Some(t_fac),
-                total: t0.elapsed().as_secs_f64(),
-                ..Timings::default()
-            },
-            ..SolveInfo::default()
+    let info = SolveInfo {
+        timings: Timings {
+            analyse: Some(t_an),
+            factor: Some(t_fac),
+            total: t0.elapsed().as_secs_f64(),
+            ..Timings::default()
         },
-    })
+        ..SolveInfo::default()
+    };
+    Ok(bonded_solution(ops, u, sigma, Vec::new(), info))
 }
 
 /// The load-independent part of the Schur formulation: K⁻, S = T + BᵀK⁻B and C = BᵀR. Formed
@@ -183,15 +173,47 @@ impl SchurSystem {
 
     /// Displacements from pressures and rigid amplitudes: u = K⁻(f − Bσ) + Rα.
     pub fn displacements(&self, ops: &Operators, sigma: &[f64], alpha: &[f64]) -> Vec<f64> {
-        let bs = ops.b_times(sigma);
-        let r: Vec<f64> = ops.f.iter().zip(&bs).map(|(f, b)| f - b).collect();
-        let mut u = self.kinv.apply(&r);
-        for (mode, &a) in ops.rigid.iter().zip(alpha) {
-            for (ui, ri) in u.iter_mut().zip(mode) {
-                *ui += a * ri;
-            }
+        displacements(ops, &self.kinv, sigma, alpha)
+    }
+}
+
+/// Displacements from pressures and rigid amplitudes: u = K⁻(f − Bσ) + Rα.
+pub fn displacements(
+    ops: &Operators,
+    kinv: &PlateInverse,
+    sigma: &[f64],
+    alpha: &[f64],
+) -> Vec<f64> {
+    let bs = ops.b_times(sigma);
+    let r: Vec<f64> = ops.f.iter().zip(&bs).map(|(f, b)| f - b).collect();
+    let mut u = kinv.apply(&r);
+    for (mode, &a) in ops.rigid.iter().zip(alpha) {
+        for (ui, ri) in u.iter_mut().zip(mode) {
+            *ui += a * ri;
         }
-        u
+    }
+    u
+}
+
+/// The solution of a bonded solve: displacements, pressures, their gap and rigid amplitudes.
+fn bonded_solution(
+    ops: &Operators,
+    u: Vec<f64>,
+    sigma: Vec<f64>,
+    rigid: Vec<f64>,
+    info: SolveInfo,
+) -> Solution {
+    let gap = discrete_gap(ops, &u, &sigma);
+    Solution {
+        method: Method::Bonded,
+        u,
+        sigma,
+        gap,
+        rigid,
+        status: Status::Converged,
+        iterations: 1,
+        history: Vec::new(),
+        info,
     }
 }
 
@@ -231,27 +253,17 @@ fn solve_schur(ops: &Operators) -> Result<Solution> {
     let (sigma, alpha) = saddle_solve(&llt, &sys.h, &sys.c, &sys.rf)?;
     let u = sys.displacements(ops, &sigma, &alpha);
     finite(&u, "bonded half-space solve")?;
-    let gap = discrete_gap(ops, &u, &sigma);
-    Ok(Solution {
-        method: Method::Bonded,
-        u,
-        sigma,
-        gap,
-        rigid: alpha,
-        status: Status::Converged,
-        iterations: 1,
-        history: Vec::new(),
-        info: SolveInfo {
-            timings: Timings {
-                plate_factor: Some(sys.time_plate),
-                schur: Some(sys.time_schur),
-                factor: Some(t_fac),
-                total: t0.elapsed().as_secs_f64(),
-                ..Timings::default()
-            },
-            ..SolveInfo::default()
+    let info = SolveInfo {
+        timings: Timings {
+            plate_factor: Some(sys.time_plate),
+            schur: Some(sys.time_schur),
+            factor: Some(t_fac),
+            total: t0.elapsed().as_secs_f64(),
+            ..Timings::default()
         },
-    })
+        ..SolveInfo::default()
+    };
+    Ok(bonded_solution(ops, u, sigma, alpha, info))
 }
 
 /// The bonded half-space by conjugate gradients on the Schur system with a matrix-free T: the
@@ -268,26 +280,16 @@ fn solve_iterative(ops: &Operators) -> Result<Solution> {
         cg,
     } = sys.solve(ops, &rows, &weights, false)?;
     finite(&u, "bonded half-space solve (iterative)")?;
-    let gap = discrete_gap(ops, &u, &sigma);
-    Ok(Solution {
-        method: Method::Bonded,
-        u,
-        sigma,
-        gap,
-        rigid: alpha,
-        status: Status::Converged,
-        iterations: 1,
-        history: Vec::new(),
-        info: SolveInfo {
-            timings: Timings {
-                plate_factor: Some(sys.time_plate),
-                total: t0.elapsed().as_secs_f64(),
-                ..Timings::default()
-            },
-            cg_iterations: Some(cg.iterations),
-            ..SolveInfo::default()
+    let info = SolveInfo {
+        timings: Timings {
+            plate_factor: Some(sys.time_plate),
+            total: t0.elapsed().as_secs_f64(),
+            ..Timings::default()
         },
-    })
+        cg_iterations: Some(cg.iterations),
+        ..SolveInfo::default()
+    };
+    Ok(bonded_solution(ops, u, sigma, alpha, info))
 }
 
 /// Dot product.

@@ -364,15 +364,7 @@ impl IterativeSchur {
 
     /// u = K⁻(f − Bσ) + Rα.
     pub fn displacements(&self, ops: &Operators, sigma: &[f64], alpha: &[f64]) -> Vec<f64> {
-        let bs = ops.b_times(sigma);
-        let r: Vec<f64> = ops.f.iter().zip(&bs).map(|(f, b)| f - b).collect();
-        let mut u = self.kinv.apply(&r);
-        for (mode, &a) in ops.rigid.iter().zip(alpha) {
-            for (ui, ri) in u.iter_mut().zip(mode) {
-                *ui += a * ri;
-            }
-        }
-        u
+        super::bonded::displacements(ops, &self.kinv, sigma, alpha)
     }
 
     /// "fine" or "coarse": the preconditioner's plate.

@@ -137,6 +137,46 @@ pub fn sparse_solve(llt: &SparseFactor, rhs: &mut [f64]) {
     llt.solve_in_place(MatMut::from_column_major_slice_mut(rhs, n, 1));
 }
 
+/// K with the equations `fixed` removed, and the reduced index of each equation.
+pub(crate) fn reduce(
+    k: &sprs::CsMat<f64>,
+    fixed: &[usize],
+) -> (sprs::CsMat<f64>, Vec<Option<usize>>) {
+    let n = k.rows();
+    let mut is_fixed = vec![false; n];
+    for &e in fixed {
+        is_fixed[e] = true;
+    }
+    let mut map = vec![None; n];
+    let mut n_red = 0;
+    for (e, m) in map.iter_mut().enumerate() {
+        if !is_fixed[e] {
+            *m = Some(n_red);
+            n_red += 1;
+        }
+    }
+    let mut indptr = Vec::with_capacity(n_red + 1);
+    let mut indices = Vec::with_capacity(k.nnz());
+    let mut data = Vec::with_capacity(k.nnz());
+    indptr.push(0);
+    for (j, col) in k.outer_iterator().enumerate() {
+        if map[j].is_none() {
+            continue;
+        }
+        for (i, &v) in col.iter() {
+            if let Some(r) = map[i] {
+                indices.push(r);
+                data.push(v);
+            }
+        }
+        indptr.push(indices.len());
+    }
+    (
+        sprs::CsMat::new_csc((n_red, n_red), indptr, indices, data),
+        map,
+    )
+}
+
 /// Generalised inverse K⁻ of the free (singular) plate stiffness: the equations in
 /// `Operators::fixed` are set to zero and the rest of K, which is then positive definite, is
 /// factored. K K⁻ K = K, and K⁻ r solves K u = r whenever r is orthogonal to the rigid modes.
@@ -150,37 +190,9 @@ pub struct PlateInverse {
 impl PlateInverse {
     /// Factor K with the fixed equations removed.
     pub fn new(ops: &Operators) -> Result<Self> {
-        let n = ops.n_eq();
-        let mut map = vec![None; n];
-        let mut n_red = 0;
-        let mut fixed = vec![false; n];
-        for &e in &ops.fixed {
-            fixed[e] = true;
-        }
-        for (e, m) in map.iter_mut().enumerate() {
-            if !fixed[e] {
-                *m = Some(n_red);
-                n_red += 1;
-            }
-        }
-        let mut indptr = Vec::with_capacity(n_red + 1);
-        let mut indices = Vec::with_capacity(ops.k.nnz());
-        let mut data = Vec::with_capacity(ops.k.nnz());
-        indptr.push(0);
-        for (j, col) in ops.k.outer_iterator().enumerate() {
-            if map[j].is_none() {
-                continue;
-            }
-            for (i, &v) in col.iter() {
-                if let Some(r) = map[i] {
-                    indices.push(r);
-                    data.push(v);
-                }
-            }
-            indptr.push(indices.len());
-        }
-        let kr = sprs::CsMat::new_csc((n_red, n_red), indptr, indices, data);
-        let order = crate::mesh::equation_order(&ops.mesh, &ops.dofs, |e| !fixed[e]);
+        let (kr, map) = reduce(&ops.k, &ops.fixed);
+        let n_red = kr.rows();
+        let order = crate::mesh::equation_order(&ops.mesh, &ops.dofs, |e| map[e].is_some());
         let chol = SparseCholesky::analyse_ordered(&kr, Some(&order))?;
         let llt = chol.factor(&kr, "plate stiffness (generalised inverse)")?;
         Ok(Self { llt, map, n_red })

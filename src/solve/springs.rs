@@ -21,7 +21,7 @@ use crate::error::Result;
 use crate::mesh::{Dof, DofMap, Mesh};
 use crate::operators::Operators;
 
-use super::linalg::{sparse_solve, SparseCholesky, SparseFactor};
+use super::linalg::{reduce, sparse_solve, SparseCholesky, SparseFactor};
 
 /// A plate on springs, ready to be factored for any spring diagonal D.
 pub struct SpringPlate {
@@ -36,43 +36,6 @@ pub struct SpringPlate {
     pairs: Vec<Vec<usize>>,
     /// "fine" or "coarse".
     pub kind: &'static str,
-}
-
-/// K with the equations `fixed` removed, and the reduced index of each equation.
-fn reduce(k: &sprs::CsMat<f64>, fixed: &[usize]) -> (sprs::CsMat<f64>, Vec<Option<usize>>) {
-    let n = k.rows();
-    let mut is_fixed = vec![false; n];
-    for &e in fixed {
-        is_fixed[e] = true;
-    }
-    let mut map = vec![None; n];
-    let mut n_red = 0;
-    for (e, m) in map.iter_mut().enumerate() {
-        if !is_fixed[e] {
-            *m = Some(n_red);
-            n_red += 1;
-        }
-    }
-    let mut indptr = Vec::with_capacity(n_red + 1);
-    let mut indices = Vec::with_capacity(k.nnz());
-    let mut data = Vec::with_capacity(k.nnz());
-    indptr.push(0);
-    for (j, col) in k.outer_iterator().enumerate() {
-        if map[j].is_none() {
-            continue;
-        }
-        for (i, &v) in col.iter() {
-            if let Some(r) = map[i] {
-                indices.push(r);
-                data.push(v);
-            }
-        }
-        indptr.push(indices.len());
-    }
-    (
-        sprs::CsMat::new_csc((n_red, n_red), indptr, indices, data),
-        map,
-    )
 }
 
 /// Data position of entry (i, j) of a CSC matrix with sorted row indices.
