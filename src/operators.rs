@@ -51,7 +51,8 @@ impl std::fmt::Debug for SharedCache {
 impl SharedCache {
     /// The cached value of type `T`, computing it with `init` the first time (other threads
     /// asking at the same time wait for it). Returns whether it was computed by this call. A
-    /// failed `init` stores nothing.
+    /// failed `init` stores nothing. `init` must not use the cache itself (one lock guards all
+    /// types, and it is not re-entrant).
     pub fn get_or_try_init<T: Send + Sync + 'static, E>(
         &self,
         init: impl FnOnce() -> Result<T, E>,
@@ -103,7 +104,9 @@ pub struct Operators {
     pub foundation_constant: f64,
     /// Notes on modelling decisions (symmetry fall-backs …).
     pub notes: Vec<String>,
-    /// Load-independent products shared by every load combination (see [`SharedCache`]).
+    /// Load-independent products shared by every load combination (see [`SharedCache`]). They
+    /// hold for the K, B, T, constraints and rigid modes above: whoever replaces one of those
+    /// must give the operators a fresh `SharedCache::default()`.
     pub cache: SharedCache,
 }
 
