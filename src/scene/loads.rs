@@ -438,6 +438,10 @@ pub(super) fn voids_for(
         .collect()
 }
 
+/// Range of a zone's compliance ratio (subgrade modulus over the zone's): beyond 1e6 either way
+/// the spring system loses its digits (a zone 1e30 times stiffer breaks the Cholesky factor).
+pub const ZONE_RATIO_RANGE: [f64; 2] = [1e-6, 1e6];
+
 /// `[[foundation.zone]]` / `[[dimensionless.zone]]`: Winkler patches with their compliance
 /// ratio (reference modulus over the zone's).
 pub(super) fn zones(file: &SceneFile, groups: &Groups, scale_xy: [f64; 2]) -> Result<Vec<Zone>> {
@@ -480,6 +484,14 @@ pub(super) fn zones(file: &SceneFile, groups: &Groups, scale_xy: [f64; 2]) -> Re
                 ))
             }
         };
+        let [lo, hi] = ZONE_RATIO_RANGE;
+        if !(lo..=hi).contains(&ratio) {
+            let name = if physical { "modulus" } else { "gamma" };
+            return Err(Error::invalid(
+                field(name),
+                format!("the zone is {:.1e} times as stiff as the rest of the subgrade; give a modulus within a factor {hi:.0e} of it (a softer zone than that carries nothing: model it as a void)", 1.0 / ratio),
+            ));
+        }
         for (b, o) in out.iter().enumerate() {
             if overlap(x, y, o.x, o.y) {
                 return Err(Error::invalid(
