@@ -431,24 +431,12 @@ fn solve_combinations(args: &SolveArgs, problem: &Problem) -> Result<(), Failure
         (Some(dir), Some(env)) => output::combinations::write_combinations(dir, &run, env)?.len(),
         _ => 0,
     };
-    let title = problem.model.title.split(" — ").next().unwrap_or("");
+    let title = problem
+        .combinations
+        .first()
+        .map_or(problem.model.title.as_str(), |c| c.scene_title());
     if args.json {
-        let runs: Vec<serde_json::Value> = run
-            .runs
-            .iter()
-            .map(|r| {
-                let summary = r
-                    .outcome
-                    .as_ref()
-                    .ok()
-                    .and_then(|o| serde_json::to_value(&o.summary).ok());
-                let error = r.outcome.as_ref().err().map(|e| e.to_string());
-                serde_json::json!({ "name": r.name, "summary": summary, "error": error })
-            })
-            .collect();
-        let quantities = env.as_ref().map(|e| &e.quantities);
-        let doc = serde_json::json!({ "combinations": runs, "envelope": quantities });
-        let json = serde_json::to_string_pretty(&doc)
+        let json = output::combinations::combinations_json(&run, env.as_ref())
             .map_err(|e| Failure::new(exit::IO, format!("cannot serialise the envelope: {e}")))?;
         println!("{json}");
     } else {

@@ -144,7 +144,11 @@ fn stage_envelope_maps(st: &mut Staged, c: &Combinations, env: &Envelope) -> Res
     };
     let units = Units::new(Some(physical), run.model.groups.mu);
     let overlay = Overlay::for_model(&run.model, &o.report);
-    let title = run.model.title.split(" — ").next().unwrap_or("");
+    let title = run
+        .model
+        .title
+        .strip_suffix(&format!(" — {}", run.name))
+        .unwrap_or(&run.model.title);
     let field = &o.report.field;
     let pick = |fields: &[(&'static str, &'static str, PointEnvelope)], name: &str| {
         fields
@@ -250,6 +254,27 @@ fn write_points(
         path: p.display().to_string(),
         source: e,
     })
+}
+
+/// `liftoff solve --json` of a scene with combinations: each combination's summary (or its
+/// error) and the envelope's extremes.
+pub fn combinations_json(c: &Combinations, env: Option<&Envelope>) -> Result<String> {
+    let runs: Vec<serde_json::Value> = c
+        .runs
+        .iter()
+        .map(|r| {
+            let summary = r
+                .outcome
+                .as_ref()
+                .ok()
+                .and_then(|o| serde_json::to_value(&o.summary).ok());
+            let error = r.outcome.as_ref().err().map(|e| e.to_string());
+            serde_json::json!({ "name": r.name, "summary": summary, "error": error })
+        })
+        .collect();
+    let doc = serde_json::json!({ "combinations": runs, "envelope": env.map(|e| &e.quantities) });
+    serde_json::to_string_pretty(&doc)
+        .map_err(|e| Error::numerical("envelope", format!("cannot serialise: {e}")))
 }
 
 /// The bending moment of largest magnitude (mx or my), with its sign.

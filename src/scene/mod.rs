@@ -35,6 +35,16 @@ pub struct Combination {
     pub model: Model,
 }
 
+impl Combination {
+    /// The scene's title, without the combination's name that the model's title carries.
+    pub fn scene_title(&self) -> &str {
+        self.model
+            .title
+            .strip_suffix(&format!(" — {}", self.name))
+            .unwrap_or(&self.model.title)
+    }
+}
+
 /// A validated scene: what to solve, how, and within how much memory.
 #[derive(Debug, Clone)]
 pub struct Problem {

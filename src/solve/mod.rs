@@ -9,6 +9,7 @@ pub mod iterative;
 pub mod linalg;
 pub mod low_rank;
 pub mod penalty;
+mod penalty_step;
 pub mod qp;
 pub mod sparse_qp;
 pub mod springs;

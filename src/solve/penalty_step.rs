@@ -1,0 +1,374 @@
+//! The linear solver of one penalty step: the bilateral problem with compliance T + Σ/ε̄ on the
+//! shared operators, without re-assembly (see [`super::penalty`] for the iteration around it).
+//! Winkler with nodal constraints keeps the sparse SPD form K + B (T + Σ/ε̄)⁻¹ Bᵀ (only diagonal
+//! values change; the bonded factor of the first step is shared by every load combination and
+//! later steps are Woodbury updates of the last factor); Winkler with Gauss constraints solves
+//! the sparse saddle system by LU on a fixed pattern; the half-space either updates the dense
+//! Schur factor by low rank or, on the iterative route, runs preconditioned CG.
+
+use std::collections::HashMap;
+use std::sync::Arc;
+
+use faer::linalg::solvers::Solve;
+use faer::sparse::linalg::solvers::{Lu, SymbolicLu};
+use faer::Mat;
+
+use super::bonded::{diagonal_positions, lumped_coupling, saddle_solve, SchurSystem};
+use super::iterative::{CgReport, CgSettings, IterativeSchur};
+use super::linalg::{faer_view, sparse_solve, SparseCholesky, SparseFactor};
+use super::low_rank::LowRankSchur;
+use crate::error::{Error, Result};
+use crate::foundation::Compliance;
+use crate::model::ConstraintPoints;
+use crate::operators::Operators;
+
+/// The analysed Winkler spring system and its bonded factor (no penalty springs): where every
+/// penalty iteration on an assembly starts.
+struct SpringsStart {
+    chol: SparseCholesky,
+    factor: Arc<SparseFactor>,
+    springs: Vec<f64>,
+}
+
+/// Linear solver of one penalised bilateral problem.
+pub(super) enum Backend {
+    Springs {
+        k: sprs::CsMat<f64>,
+        diag: Vec<usize>,
+        base: Vec<f64>,
+        coupling: Vec<(usize, f64)>,
+        t: Vec<f64>,
+        chol: SparseCholesky,
+        /// The last numeric factor and the spring stiffness per pressure node it was made with.
+        factored: Option<(Arc<SparseFactor>, Vec<f64>)>,
+    },
+    Saddle {
+        m: sprs::CsMat<f64>,
+        /// Data positions of the σσ block entries, keyed by (row, col) in σ numbering.
+        sigma_pos: HashMap<(usize, usize), usize>,
+        t: Vec<f64>,
+        symbolic: SymbolicLu<usize>,
+    },
+    Schur(Box<SchurSystem>, LowRankSchur),
+    /// Matrix-free T (FFT products) and conjugate gradients ([`super::iterative`]).
+    Iterative(Box<IterativeSchur>),
+}
+
+impl Backend {
+    pub(super) fn new(ops: &Operators, cg: CgSettings) -> Result<Self> {
+        match (ops.t.as_ref(), ops.constraints.kind) {
+            (Compliance::Diagonal(t), ConstraintPoints::Nodal) => {
+                let k = (*ops.k).clone();
+                let diag = diagonal_positions(&k)?;
+                let base = k.data().to_vec();
+                let coupling = lumped_coupling(ops)?;
+                // The bonded system of step 1 does not depend on the loads: analysed and
+                // factored once per assembly, shared by every load combination.
+                let (start, _) = ops.cache.get_or_try_init(|| -> Result<SpringsStart> {
+                    let order = crate::mesh::equation_order(&ops.mesh, &ops.dofs, |_| true);
+                    let chol = SparseCholesky::analyse_ordered(&k, Some(&order))?;
+                    let springs: Vec<f64> = coupling
+                        .iter()
+                        .zip(t)
+                        .map(|(&(_, b), &c)| b * b / c)
+                        .collect();
+                    let mut bonded = k.clone();
+                    for (j, &(eq, _)) in coupling.iter().enumerate() {
+                        bonded.data_mut()[diag[eq]] += springs[j];
+                    }
+                    let factor = Arc::new(chol.factor(&bonded, "bonded Winkler system")?);
+                    Ok(SpringsStart {
+                        chol,
+                        factor,
+                        springs,
+                    })
+                })?;
+                Ok(Backend::Springs {
+                    k,
+                    diag,
+                    base,
+                    coupling,
+                    t: t.clone(),
+                    chol: start.chol.clone(),
+                    factored: Some((start.factor.clone(), start.springs.clone())),
+                })
+            }
+            (Compliance::Diagonal(t), ConstraintPoints::Gauss) => {
+                let n = ops.n_eq();
+                let ns = ops.n_sigma();
+                let mut tri = sprs::TriMat::new((n + ns, n + ns));
+                for (j, col) in ops.k.outer_iterator().enumerate() {
+                    for (i, &v) in col.iter() {
+                        tri.add_triplet(i, j, v);
+                    }
+                }
+                for (j, col) in ops.b.outer_iterator().enumerate() {
+                    for (i, &v) in col.iter() {
+                        tri.add_triplet(i, n + j, v);
+                        tri.add_triplet(n + j, i, v);
+                    }
+                }
+                // Every σσ entry a penalty can touch: couplings of nodes of one element.
+                for e in 0..ops.mesh.n_elements() {
+                    for a in ops.mesh.element_nodes(e) {
+                        for b in ops.mesh.element_nodes(e) {
+                            tri.add_triplet(n + a, n + b, 0.0);
+                        }
+                    }
+                }
+                let m: sprs::CsMat<f64> = tri.to_csc();
+                let mut sigma_pos = HashMap::new();
+                let indptr = m.indptr();
+                let ptr = indptr.raw_storage();
+                for j in n..(n + ns) {
+                    for p in ptr[j]..ptr[j + 1] {
+                        let i = m.indices()[p];
+                        if i >= n {
+                            sigma_pos.insert((i - n, j - n), p);
+                        }
+                    }
+                }
+                let symbolic = SymbolicLu::try_new(faer_view(&m).symbolic()).map_err(|e| {
+                    Error::numerical("penalty saddle system analysis", format!("{e:?}"))
+                })?;
+                Ok(Backend::Saddle {
+                    m,
+                    sigma_pos,
+                    t: t.clone(),
+                    symbolic,
+                })
+            }
+            (Compliance::Toeplitz(_), _) => {
+                Ok(Backend::Iterative(Box::new(IterativeSchur::new(ops, cg)?)))
+            }
+            (Compliance::Dense(_), _) => Ok(Backend::Schur(
+                Box::new(SchurSystem::new(ops)?),
+                LowRankSchur::new(),
+            )),
+        }
+    }
+
+    /// Solve with the penalty compliance of the `penalised` constraint points at ε̄ = `epsilon`.
+    pub(super) fn solve(
+        &mut self,
+        ops: &Operators,
+        rows: &[Vec<(usize, f64)>],
+        penalised: &[bool],
+        epsilon: f64,
+        loose: bool,
+    ) -> Result<StepOut> {
+        if let Backend::Iterative(sys) = self {
+            let weights = penalty_weights(ops, penalised, epsilon);
+            let step = sys.solve(ops, rows, &weights, loose)?;
+            return Ok((step.u, step.sigma, step.alpha, Some(step.cg)));
+        }
+        if let Backend::Schur(sys, low_rank) = self {
+            let weights = penalty_weights(ops, penalised, epsilon);
+            let solver = low_rank.prepare(&sys.s, rows, &weights)?;
+            let (sigma, alpha) = saddle_solve(&solver, &sys.h, &sys.c, &sys.rf)?;
+            let u = sys.displacements(ops, &sigma, &alpha);
+            return Ok((u, sigma, alpha, None));
+        }
+        let extra = penalty_entries(ops, rows, penalised, epsilon);
+        let extra = &extra[..];
+        match self {
+            Backend::Springs {
+                k,
+                diag,
+                base,
+                coupling,
+                t,
+                chol,
+                factored,
+            } => {
+                let mut comp = t.clone();
+                for &(i, j, v) in extra {
+                    if i == j {
+                        comp[i] += v;
+                    }
+                }
+                let springs: Vec<f64> = coupling
+                    .iter()
+                    .zip(&comp)
+                    .map(|(&(_, b), &c)| b * b / c)
+                    .collect();
+                // The voids' initial gap: σ_j = (b_j u_j − g₀_j) / c_j, so the springs pull
+                // with b_j g₀_j / c_j.
+                let mut rhs = ops.f.clone();
+                for ((&(eq, b), &c), &g0) in coupling.iter().zip(&comp).zip(&ops.gap0) {
+                    rhs[eq] += b * g0 / c;
+                }
+                let u = match factored {
+                    Some((factor, old)) if changed(old, &springs).len() <= WOODBURY_MAX_RANK => {
+                        let idx = changed(old, &springs);
+                        woodbury_solve(
+                            factor,
+                            &rhs,
+                            &idx.iter()
+                                .map(|&j| (coupling[j].0, springs[j] - old[j]))
+                                .collect::<Vec<_>>(),
+                        )?
+                    }
+                    _ => {
+                        k.data_mut().copy_from_slice(base);
+                        for (j, &(eq, _)) in coupling.iter().enumerate() {
+                            k.data_mut()[diag[eq]] += springs[j];
+                        }
+                        let llt = chol.factor(k, "penalised Winkler system")?;
+                        let mut u = rhs;
+                        sparse_solve(&llt, &mut u);
+                        *factored = Some((Arc::new(llt), springs.clone()));
+                        u
+                    }
+                };
+                let sigma = coupling
+                    .iter()
+                    .zip(&comp)
+                    .zip(&ops.gap0)
+                    .map(|((&(eq, b), &c), &g0)| (b * u[eq] - g0) / c)
+                    .collect();
+                Ok((u, sigma, Vec::new(), None))
+            }
+            Backend::Saddle {
+                m,
+                sigma_pos,
+                t,
+                symbolic,
+            } => {
+                let n = ops.n_eq();
+                for (j, &tj) in t.iter().enumerate() {
+                    if let Some(&p) = sigma_pos.get(&(j, j)) {
+                        m.data_mut()[p] = -tj;
+                    }
+                }
+                for (&(i, j), &p) in sigma_pos.iter() {
+                    if i != j {
+                        m.data_mut()[p] = 0.0;
+                    }
+                }
+                for &(i, j, v) in extra {
+                    let p = sigma_pos.get(&(i, j)).ok_or_else(|| {
+                        Error::numerical("penalty", "penalty entry outside the element pattern")
+                    })?;
+                    m.data_mut()[*p] -= v;
+                }
+                let lu =
+                    Lu::try_new_with_symbolic(symbolic.clone(), faer_view(m)).map_err(|e| {
+                        Error::numerical("penalised saddle system (LU)", format!("{e:?}"))
+                    })?;
+                let total = m.rows();
+                let mut rhs = Mat::<f64>::zeros(total, 1);
+                for (i, &fi) in ops.f.iter().enumerate() {
+                    rhs[(i, 0)] = fi;
+                }
+                // Bᵀu − (T + Σ/ε̄)σ = g₀.
+                for (j, &g0) in ops.gap0.iter().enumerate() {
+                    rhs[(n + j, 0)] = g0;
+                }
+                lu.solve_in_place(rhs.as_mut());
+                let u = (0..n).map(|i| rhs[(i, 0)]).collect();
+                let sigma = (n..total).map(|i| rhs[(i, 0)]).collect();
+                Ok((u, sigma, Vec::new(), None))
+            }
+            Backend::Schur(..) | Backend::Iterative(..) => Err(Error::numerical(
+                "penalty",
+                "the Schur and iterative backends are solved above",
+            )),
+        }
+    }
+}
+
+/// u, σ, α of a penalty step and, on the iterative route, its CG account.
+type StepOut = (Vec<f64>, Vec<f64>, Vec<f64>, Option<CgReport>);
+
+/// d_k = c w_k / ε̄ on the penalised constraint points, 0 elsewhere.
+fn penalty_weights(ops: &Operators, penalised: &[bool], epsilon: f64) -> Vec<f64> {
+    let scale = ops.foundation_constant / epsilon;
+    penalised
+        .iter()
+        .zip(&ops.constraints.weights)
+        .map(|(&p, &w)| if p { w * scale } else { 0.0 })
+        .collect()
+}
+
+/// Up to this many changed springs since the last factorisation, a step is solved with the old
+/// factor and a Woodbury correction (k + 1 solves with the factor and a dense k × k system)
+/// instead of a new numeric factorisation.
+pub const WOODBURY_MAX_RANK: usize = 64;
+
+/// Indices whose spring stiffness changed.
+fn changed(old: &[f64], new: &[f64]) -> Vec<usize> {
+    old.iter()
+        .zip(new)
+        .enumerate()
+        .filter(|(_, (a, b))| a != b)
+        .map(|(j, _)| j)
+        .collect()
+}
+
+/// Solve (A + Σ_j δ_j e_{i_j} e_{i_j}ᵀ) u = f from a factor of A (Sherman–Morrison–Woodbury):
+/// u = y − Z (diag(1/δ) + Uᵀ Z)⁻¹ Uᵀ y with y = A⁻¹ f, Z = A⁻¹ U.
+fn woodbury_solve(factor: &SparseFactor, f: &[f64], updates: &[(usize, f64)]) -> Result<Vec<f64>> {
+    let n = f.len();
+    let k = updates.len();
+    let mut y = f.to_vec();
+    sparse_solve(factor, &mut y);
+    if k == 0 {
+        return Ok(y);
+    }
+    let mut z = Mat::<f64>::zeros(n, k);
+    for (c, &(i, _)) in updates.iter().enumerate() {
+        z[(i, c)] = 1.0;
+    }
+    factor.solve_in_place(z.as_mut());
+    let m = Mat::<f64>::from_fn(k, k, |a, b| {
+        z[(updates[a].0, b)] + if a == b { 1.0 / updates[a].1 } else { 0.0 }
+    });
+    let mut rhs = Mat::<f64>::from_fn(k, 1, |a, _| y[updates[a].0]);
+    let lu = m.partial_piv_lu();
+    lu.solve_in_place(rhs.as_mut());
+    for (i, yi) in y.iter_mut().enumerate() {
+        let corr: f64 = (0..k).map(|c| z[(i, c)] * rhs[(c, 0)]).sum();
+        *yi -= corr;
+    }
+    if y.iter().any(|v| !v.is_finite()) {
+        return Err(Error::numerical(
+            "penalty (low-rank update)",
+            "non-finite values",
+        ));
+    }
+    Ok(y)
+}
+
+/// Rows of G as (σ index, value) lists.
+pub(super) fn constraint_rows(ops: &Operators) -> Vec<Vec<(usize, f64)>> {
+    let g = &ops.constraints.g;
+    let mut rows: Vec<Vec<(usize, f64)>> = vec![Vec::new(); g.rows()];
+    for (j, col) in g.outer_iterator().enumerate() {
+        for (i, &v) in col.iter() {
+            rows[i].push((j, v));
+        }
+    }
+    rows
+}
+
+/// Penalty compliance Σ(P)/ε̄ = (c/ε̄) Gᵀ diag(w_k [k ∈ P]) G of a penalised set as σ-index
+/// triplets (duplicates are summed by the consumers).
+fn penalty_entries(
+    ops: &Operators,
+    rows: &[Vec<(usize, f64)>],
+    penalised: &[bool],
+    epsilon: f64,
+) -> Vec<(usize, usize, f64)> {
+    let scale = ops.foundation_constant / epsilon;
+    let mut out = Vec::new();
+    for (k, _) in penalised.iter().enumerate().filter(|(_, &p)| p) {
+        let w = ops.constraints.weights[k] * scale;
+        for &(a, va) in &rows[k] {
+            for &(b, vb) in &rows[k] {
+                out.push((a, b, w * va * vb));
+            }
+        }
+    }
+    out
+}
