@@ -144,11 +144,7 @@ fn stage_envelope_maps(st: &mut Staged, c: &Combinations, env: &Envelope) -> Res
     };
     let units = Units::new(Some(physical), run.model.groups.mu);
     let overlay = Overlay::for_model(&run.model, &o.report);
-    let title = run
-        .model
-        .title
-        .strip_suffix(&format!(" — {}", run.name))
-        .unwrap_or(&run.model.title);
+    let title = crate::scene::scene_title(&run.model.title, &run.name);
     let field = &o.report.field;
     let pick = |fields: &[(&'static str, &'static str, PointEnvelope)], name: &str| {
         fields

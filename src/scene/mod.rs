@@ -38,11 +38,15 @@ pub struct Combination {
 impl Combination {
     /// The scene's title, without the combination's name that the model's title carries.
     pub fn scene_title(&self) -> &str {
-        self.model
-            .title
-            .strip_suffix(&format!(" — {}", self.name))
-            .unwrap_or(&self.model.title)
+        scene_title(&self.model.title, &self.name)
     }
+}
+
+/// A combination model's title ("scene — NAME") without its combination's name.
+pub fn scene_title<'a>(title: &'a str, combination: &str) -> &'a str {
+    title
+        .strip_suffix(&format!(" — {combination}"))
+        .unwrap_or(title)
 }
 
 /// A validated scene: what to solve, how, and within how much memory.
