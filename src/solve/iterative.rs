@@ -25,13 +25,20 @@
 //! change a few points, take few iterations; steps whose set is still moving are solved to a
 //! loose tolerance ([`CgSettings::loose_tolerance`]), and the penalty iteration confirms a set
 //! only with a tight solve.
+//!
+//! **Face solves** ([`IterativeSchur::solve_face`]) serve the matrix-free QP
+//! ([`super::active_set`]): the same system without penalty, with a set of pressures held at
+//! zero (the lifted points). The iteration then runs on the free points only: the product, the
+//! residual and the rigid-mode columns C are restricted to them, and the preconditioner drops
+//! its springs there (1/D = 0, which makes the Woodbury solve exactly (M_FF)⁻¹). The free
+//! points' columns of C can be dependent (a plate resting on one node); the small rigid-mode
+//! systems are solved by pseudo-inverse ([`SmallSpd`]), which keeps the iterates on the
+//! equilibrium the free points can carry.
 
 use std::time::Instant;
 
-use faer::Mat;
-
 use super::bonded::dot;
-use super::linalg::{dense_cholesky, PlateInverse, SpdSolve};
+use super::linalg::{PlateInverse, SmallSpd, SparseFactor};
 use super::springs::SpringPlate;
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
@@ -62,16 +69,34 @@ pub struct Step {
     pub cg: CgReport,
 }
 
-/// The preconditioner of one penalised set.
+/// The solution of a face solve: the pressures that minimise ½σᵀSσ − hᵀσ on the equilibrium
+/// Cᵀσ = Rᵀf with the held points at zero.
+#[derive(Debug, Clone)]
+pub struct Face {
+    /// Nodal pressures (zero on the held points).
+    pub sigma: Vec<f64>,
+    /// Rigid-body amplitudes: the least-squares multiplier on the free points.
+    pub alpha: Vec<f64>,
+    /// How the conjugate gradients went.
+    pub cg: CgReport,
+}
+
+/// The preconditioner of one penalised set (and held set).
 struct Preconditioner {
-    /// 1/D per pressure node.
+    /// 1/D per pressure node (0 on held points).
     inv_d: Vec<f64>,
     /// Factor of K_r + B_L D⁻¹ B_Lᵀ.
-    factor: super::linalg::SparseFactor,
+    factor: SparseFactor,
+    /// The rigid-mode columns C restricted to the free points.
+    c: Vec<Vec<f64>>,
     /// M⁻¹ C, one column per rigid mode.
     minv_c: Vec<Vec<f64>>,
-    /// Factor of Cᵀ M⁻¹ C.
-    small: super::linalg::DenseLlt,
+    /// Pseudo-inverse of Cᵀ M⁻¹ C.
+    small: SmallSpd,
+    /// Pseudo-inverse of Cᵀ C.
+    ctc: SmallSpd,
+    /// The held points it was made for (empty: none).
+    held: Vec<bool>,
 }
 
 /// The Schur system of the half-space with a matrix-free T, ready for penalty steps.
@@ -90,20 +115,31 @@ pub struct IterativeSchur {
     springs: SpringPlate,
     /// The last step's σ, the next one's start.
     warm: Option<Vec<f64>>,
+    /// The last face solve's preconditioner, reused while the held set stays.
+    face_pre: Option<Preconditioner>,
     /// Seconds spent factoring the plate.
     pub time_plate: f64,
     /// Preconditioner factorisations made.
     pub factorisations: usize,
+    /// Products with the Schur matrix made.
+    pub products: usize,
 }
 
 impl IterativeSchur {
-    /// Factor the plate, form h, C, Rᵀf and analyse the preconditioner's pattern.
+    /// Factor the plate, form h, C, Rᵀf and analyse the preconditioner's pattern, for the
+    /// penalty steps of the iterative route (T must be the FFT operator).
     pub fn new(ops: &Operators, settings: CgSettings) -> Result<Self> {
         if !matches!(ops.t.as_ref(), Compliance::Toeplitz(_)) {
             return Err(Error::Unsupported(
                 "the iterative route needs the half-space compliance as a Toeplitz operator (assemble with the iterative route)".into(),
             ));
         }
+        Self::with_any_compliance(ops, settings)
+    }
+
+    /// As [`Self::new`] for any compliance: diagonal (Winkler), dense or FFT. Only products
+    /// with T and its diagonal are used.
+    pub fn with_any_compliance(ops: &Operators, settings: CgSettings) -> Result<Self> {
         let t0 = Instant::now();
         let kinv = PlateInverse::new(ops)?;
         let time_plate = t0.elapsed().as_secs_f64();
@@ -126,20 +162,28 @@ impl IterativeSchur {
             t_diag: ops.t.diagonal(),
             springs,
             warm: None,
+            face_pre: None,
             time_plate,
             factorisations: 0,
+            products: 0,
         })
+    }
+
+    /// S p = T p + BᵀK⁻B p, the Schur matrix without penalty.
+    pub fn s_times(&mut self, ops: &Operators, p: &[f64]) -> Vec<f64> {
+        self.apply(ops, &[], &[], p)
     }
 
     /// A p = T p + BᵀK⁻B p + Σ_k d_k g_k g_kᵀ p.
     fn apply(
-        &self,
+        &mut self,
         ops: &Operators,
         rows: &[Vec<(usize, f64)>],
         weights: &[f64],
         p: &[f64],
     ) -> Vec<f64> {
-        // The FFT product and the plate solve are independent: one on each core.
+        self.products += 1;
+        // The product with T and the plate solve are independent: one on each core.
         let kinv = &self.kinv;
         let (mut y, plate) = std::thread::scope(|s| {
             let t = s.spawn(|| ops.t.apply(p));
@@ -163,10 +207,13 @@ impl IterativeSchur {
         y
     }
 
+    /// The preconditioner for penalty weights on `rows` and the points `held` at zero (empty:
+    /// none).
     fn preconditioner(
         &mut self,
         rows: &[Vec<(usize, f64)>],
         weights: &[f64],
+        held: &[bool],
     ) -> Result<Preconditioner> {
         let mut d: Vec<f64> = self
             .t_diag
@@ -180,53 +227,53 @@ impl IterativeSchur {
                 }
             }
         }
-        let inv_d: Vec<f64> = d.iter().map(|v| 1.0 / v).collect();
+        let is_held = |i: usize| held.get(i).copied().unwrap_or(false);
+        let inv_d: Vec<f64> = d
+            .iter()
+            .enumerate()
+            .map(|(i, v)| if is_held(i) { 0.0 } else { 1.0 / v })
+            .collect();
         let factor = self.springs.factor(&inv_d)?;
         self.factorisations += 1;
-        let minv_c: Vec<Vec<f64>> = self
+        let c: Vec<Vec<f64>> = self
             .c
             .iter()
-            .map(|c| self.spring_solve(&inv_d, &factor, c))
+            .map(|col| {
+                col.iter()
+                    .enumerate()
+                    .map(|(i, &v)| if is_held(i) { 0.0 } else { v })
+                    .collect()
+            })
             .collect();
-        let m = self.c.len();
-        let ctmc = Mat::<f64>::from_fn(m, m, |a, b| dot(&self.c[a], &minv_c[b]));
-        let small = dense_cholesky(&ctmc, "iterative preconditioner (Cᵀ M⁻¹ C)")?;
+        let minv_c: Vec<Vec<f64>> = c
+            .iter()
+            .map(|col| self.springs.solve(&inv_d, &factor, col))
+            .collect();
+        let m = c.len();
+        let small = SmallSpd::new(m, |a, b| dot(&c[a], &minv_c[b]));
+        let ctc = SmallSpd::new(m, |a, b| dot(&c[a], &c[b]));
         Ok(Preconditioner {
             inv_d,
             factor,
+            c,
             minv_c,
             small,
+            ctc,
+            held: held.to_vec(),
         })
-    }
-
-    /// M⁻¹ r.
-    fn precondition(&self, pre: &Preconditioner, r: &[f64]) -> Vec<f64> {
-        self.spring_solve(&pre.inv_d, &pre.factor, r)
-    }
-
-    /// M⁻¹ r ([`SpringPlate::solve`]).
-    fn spring_solve(
-        &self,
-        inv_d: &[f64],
-        factor: &super::linalg::SparseFactor,
-        r: &[f64],
-    ) -> Vec<f64> {
-        self.springs.solve(inv_d, factor, r)
     }
 
     /// The projected preconditioned residual: M⁻¹r − M⁻¹C (CᵀM⁻¹C)⁻¹ CᵀM⁻¹r, which satisfies
     /// Cᵀz = 0. The projection is applied twice: the second pass removes the round-off of the
     /// first (Gould, Hribar & Nocedal's iterative refinement), which otherwise lets Cᵀσ drift.
     fn project(&self, pre: &Preconditioner, r: &[f64]) -> Vec<f64> {
-        let mut z = self.precondition(pre, r);
-        let m = self.c.len();
+        let mut z = self.springs.solve(&pre.inv_d, &pre.factor, r);
         for _ in 0..2 {
-            let mut rhs = Mat::<f64>::from_fn(m, 1, |a, _| dot(&self.c[a], &z));
-            pre.small.solve_in_place(rhs.as_mut());
-            for a in 0..m {
-                let s = rhs[(a, 0)];
+            let ctz: Vec<f64> = pre.c.iter().map(|c| dot(c, &z)).collect();
+            let s = pre.small.solve(&ctz);
+            for (a, &sa) in s.iter().enumerate() {
                 for (zi, ci) in z.iter_mut().zip(&pre.minv_c[a]) {
-                    *zi -= s * ci;
+                    *zi -= sa * ci;
                 }
             }
         }
@@ -236,18 +283,134 @@ impl IterativeSchur {
     /// r − C (CᵀC)⁻¹ Cᵀ r: the residual without its component along C, which the multiplier α
     /// absorbs. The projected preconditioner ignores that component in exact arithmetic, but it
     /// is large (Cα) and would cancel the digits of rᵀz.
-    fn deflate(&self, ctc: &super::linalg::DenseLlt, r: &mut [f64]) {
-        let m = self.c.len();
+    fn deflate(pre: &Preconditioner, r: &mut [f64]) {
         for _ in 0..2 {
-            let mut rhs = Mat::<f64>::from_fn(m, 1, |a, _| dot(&self.c[a], r));
-            ctc.solve_in_place(rhs.as_mut());
-            for a in 0..m {
-                let s = rhs[(a, 0)];
-                for (ri, ci) in r.iter_mut().zip(&self.c[a]) {
-                    *ri -= s * ci;
+            let ctr: Vec<f64> = pre.c.iter().map(|c| dot(c, r)).collect();
+            let s = pre.ctc.solve(&ctr);
+            for (a, &sa) in s.iter().enumerate() {
+                for (ri, ci) in r.iter_mut().zip(&pre.c[a]) {
+                    *ri -= sa * ci;
                 }
             }
         }
+    }
+
+    /// Zero the held points of `v`.
+    fn mask(pre: &Preconditioner, v: &mut [f64]) {
+        for (x, &h) in v.iter_mut().zip(&pre.held) {
+            if h {
+                *x = 0.0;
+            }
+        }
+    }
+
+    /// Projected PCG from `sigma` (made feasible first) to the relative tolerance `tol`;
+    /// returns σ, α and the account.
+    fn cg(
+        &mut self,
+        ops: &Operators,
+        pre: &Preconditioner,
+        rows: &[Vec<(usize, f64)>],
+        weights: &[f64],
+        mut sigma: Vec<f64>,
+        tol: f64,
+        stage: &str,
+    ) -> Result<(Vec<f64>, Vec<f64>, CgReport)> {
+        let n = ops.n_sigma();
+        Self::mask(pre, &mut sigma);
+        // Start: σ moved onto Cᵀσ = Rᵀf along M⁻¹C.
+        {
+            let defect: Vec<f64> = (0..pre.c.len())
+                .map(|a| self.rf[a] - dot(&pre.c[a], &sigma))
+                .collect();
+            let s = pre.small.solve(&defect);
+            for (a, &sa) in s.iter().enumerate() {
+                for (x, ci) in sigma.iter_mut().zip(&pre.minv_c[a]) {
+                    *x += sa * ci;
+                }
+            }
+        }
+        let mut h = self.h.clone();
+        Self::mask(pre, &mut h);
+        let h_norm = dot(&h, &h).max(f64::MIN_POSITIVE).sqrt();
+        let scale = {
+            let z = self.project(pre, &h);
+            dot(&h, &z).max(f64::MIN_POSITIVE).sqrt()
+        };
+        let mut r: Vec<f64> = self
+            .apply(ops, rows, weights, &sigma)
+            .iter()
+            .zip(&self.h)
+            .map(|(a, b)| a - b)
+            .collect();
+        Self::mask(pre, &mut r);
+        Self::deflate(pre, &mut r);
+        let mut z = self.project(pre, &r);
+        let mut rz = dot(&r, &z);
+        let mut p: Vec<f64> = z.iter().map(|v| -v).collect();
+        let mut iterations = 0;
+        let mut residual = rz.max(0.0).sqrt() / scale;
+        while residual > tol {
+            if iterations >= self.settings.max_iterations {
+                return Err(Error::numerical(
+                    stage,
+                    format!(
+                        "no convergence in {} iterations (relative residual {residual:.1e}): the system is too badly conditioned for the iterative route; use solver.route = \"dense\"",
+                        self.settings.max_iterations
+                    ),
+                ));
+            }
+            let mut ap = self.apply(ops, rows, weights, &p);
+            Self::mask(pre, &mut ap);
+            let pap = dot(&p, &ap);
+            if pap.is_nan() || pap <= 0.0 {
+                return Err(Error::numerical(
+                    stage,
+                    format!("the Schur system is not positive definite on the equilibrium subspace (pᵀAp = {pap:e})"),
+                ));
+            }
+            let step = rz / pap;
+            for i in 0..n {
+                sigma[i] += step * p[i];
+                r[i] += step * ap[i];
+            }
+            Self::deflate(pre, &mut r);
+            z = self.project(pre, &r);
+            let rz_new = dot(&r, &z);
+            let beta = rz_new / rz;
+            rz = rz_new;
+            for i in 0..n {
+                p[i] = -z[i] + beta * p[i];
+            }
+            iterations += 1;
+            residual = rz.max(0.0).sqrt() / scale;
+        }
+        // α: least-squares multiplier of the recomputed residual on the free points,
+        // Aσ − h ≈ Cα.
+        let mut res: Vec<f64> = self
+            .apply(ops, rows, weights, &sigma)
+            .iter()
+            .zip(&self.h)
+            .map(|(a, b)| a - b)
+            .collect();
+        Self::mask(pre, &mut res);
+        let ctr: Vec<f64> = pre.c.iter().map(|c| dot(c, &res)).collect();
+        let alpha = pre.ctc.solve(&ctr);
+        for (a, &al) in alpha.iter().enumerate() {
+            for (x, ci) in res.iter_mut().zip(&pre.c[a]) {
+                *x -= al * ci;
+            }
+        }
+        let true_residual = dot(&res, &res).sqrt() / h_norm;
+        Ok((
+            sigma,
+            alpha,
+            CgReport {
+                iterations,
+                residual,
+                true_residual,
+            },
+        ))
     }
 
     /// Solve one penalised step: `weights[k]` = d_k on constraint point k (0 if not penalised),
@@ -259,107 +422,61 @@ impl IterativeSchur {
         weights: &[f64],
         loose: bool,
     ) -> Result<Step> {
-        let pre = self.preconditioner(rows, weights)?;
-        let n = ops.n_sigma();
-        let m = self.c.len();
-        // Start: the last σ, moved onto Cᵀσ = Rᵀf along M⁻¹C.
-        let mut sigma = self.warm.clone().unwrap_or_else(|| vec![0.0; n]);
-        {
-            let mut rhs = Mat::<f64>::from_fn(m, 1, |a, _| self.rf[a] - dot(&self.c[a], &sigma));
-            pre.small.solve_in_place(rhs.as_mut());
-            for a in 0..m {
-                let s = rhs[(a, 0)];
-                for (x, ci) in sigma.iter_mut().zip(&pre.minv_c[a]) {
-                    *x += s * ci;
-                }
-            }
-        }
-        let scale = {
-            let z = self.project(&pre, &self.h);
-            dot(&self.h, &z).max(f64::MIN_POSITIVE).sqrt()
-        };
-        let ctc = Mat::<f64>::from_fn(m, m, |a, b| dot(&self.c[a], &self.c[b]));
-        let ctc = dense_cholesky(&ctc, "rigid-body multipliers (CᵀC)")?;
-        let mut r: Vec<f64> = self
-            .apply(ops, rows, weights, &sigma)
-            .iter()
-            .zip(&self.h)
-            .map(|(a, b)| a - b)
-            .collect();
-        self.deflate(&ctc, &mut r);
-        let mut z = self.project(&pre, &r);
-        let mut rz = dot(&r, &z);
-        let mut p: Vec<f64> = z.iter().map(|v| -v).collect();
+        let pre = self.preconditioner(rows, weights, &[])?;
+        let start = self
+            .warm
+            .clone()
+            .unwrap_or_else(|| vec![0.0; ops.n_sigma()]);
         let tol = if loose {
             self.settings.loose_tolerance.max(self.settings.tolerance)
         } else {
             self.settings.tolerance
         };
-        let mut iterations = 0;
-        let mut residual = rz.max(0.0).sqrt() / scale;
-        while residual > tol {
-            if iterations >= self.settings.max_iterations {
-                return Err(Error::numerical(
-                    "iterative penalty step (conjugate gradients)",
-                    format!(
-                        "no convergence in {} iterations (relative residual {residual:.1e}): the system is too badly conditioned for the iterative route; use solver.route = \"dense\"",
-                        self.settings.max_iterations
-                    ),
-                ));
-            }
-            let ap = self.apply(ops, rows, weights, &p);
-            let pap = dot(&p, &ap);
-            if pap.is_nan() || pap <= 0.0 {
-                return Err(Error::numerical(
-                    "iterative penalty step (conjugate gradients)",
-                    format!("the Schur system is not positive definite on the equilibrium subspace (pᵀAp = {pap:e})"),
-                ));
-            }
-            let step = rz / pap;
-            for i in 0..n {
-                sigma[i] += step * p[i];
-                r[i] += step * ap[i];
-            }
-            self.deflate(&ctc, &mut r);
-            z = self.project(&pre, &r);
-            let rz_new = dot(&r, &z);
-            let beta = rz_new / rz;
-            rz = rz_new;
-            for i in 0..n {
-                p[i] = -z[i] + beta * p[i];
-            }
-            iterations += 1;
-            residual = rz.max(0.0).sqrt() / scale;
-        }
-        // α: least-squares multiplier of the recomputed residual, Aσ − h ≈ Cα.
-        let mut res: Vec<f64> = self
-            .apply(ops, rows, weights, &sigma)
-            .iter()
-            .zip(&self.h)
-            .map(|(a, b)| a - b)
-            .collect();
-        let mut rhs = Mat::<f64>::from_fn(m, 1, |a, _| dot(&self.c[a], &res));
-        ctc.solve_in_place(rhs.as_mut());
-        let alpha: Vec<f64> = (0..m).map(|a| rhs[(a, 0)]).collect();
-        for (a, &al) in alpha.iter().enumerate() {
-            for (x, ci) in res.iter_mut().zip(&self.c[a]) {
-                *x -= al * ci;
-            }
-        }
-        let true_residual =
-            dot(&res, &res).sqrt() / dot(&self.h, &self.h).max(f64::MIN_POSITIVE).sqrt();
+        let (sigma, alpha, cg) = self.cg(
+            ops,
+            &pre,
+            rows,
+            weights,
+            start,
+            tol,
+            "iterative penalty step (conjugate gradients)",
+        )?;
         let u = self.displacements(ops, &sigma, &alpha);
         self.warm = Some(sigma.clone());
         Ok(Step {
             u,
             sigma,
             alpha,
-            cg: CgReport {
-                iterations,
-                residual,
-                true_residual,
-            },
+            cg,
         })
+    }
+
+    /// Minimise ½σᵀSσ − hᵀσ subject to Cᵀσ = Rᵀf and σ = 0 on the `held` points, from
+    /// `start`, to the relative tolerance `tol`. The preconditioner of the last face solve is
+    /// reused while the held set is the same.
+    pub fn solve_face(
+        &mut self,
+        ops: &Operators,
+        held: &[bool],
+        start: &[f64],
+        tol: f64,
+    ) -> Result<Face> {
+        let pre = match self.face_pre.take() {
+            Some(pre) if pre.held == held => pre,
+            _ => self.preconditioner(&[], &[], held)?,
+        };
+        let out = self.cg(
+            ops,
+            &pre,
+            &[],
+            &[],
+            start.to_vec(),
+            tol,
+            "matrix-free QP (conjugate gradients on the free points)",
+        );
+        self.face_pre = Some(pre);
+        let (sigma, alpha, cg) = out?;
+        Ok(Face { sigma, alpha, cg })
     }
 
     /// u = K⁻(f − Bσ) + Rα.

@@ -343,3 +343,59 @@ pub fn schur_complement(ops: &Operators, kinv: &PlateInverse) -> Mat<f64> {
     }
     s
 }
+
+/// A small symmetric positive semi-definite system (the rigid modes' m × m, m ≤ 3) solved by
+/// its pseudo-inverse: eigenvalues below 1e-12 of the largest are dropped. The rigid-mode
+/// columns restricted to a few contact points can be dependent (a plate resting on one node or
+/// one line of nodes); the pseudo-inverse then gives the least-squares, minimum-norm answer
+/// where a Cholesky factorisation would fail.
+#[derive(Debug, Clone)]
+pub struct SmallSpd {
+    vectors: nalgebra::DMatrix<f64>,
+    inverse_values: Vec<f64>,
+}
+
+impl SmallSpd {
+    /// The pseudo-inverse of the symmetric matrix `a(i, j)` of size m.
+    pub fn new(m: usize, a: impl Fn(usize, usize) -> f64) -> Self {
+        let mat = nalgebra::DMatrix::from_fn(m, m, |i, j| 0.5 * (a(i, j) + a(j, i)));
+        let eig = nalgebra::SymmetricEigen::new(mat);
+        let top = eig.eigenvalues.iter().cloned().fold(0.0_f64, f64::max);
+        let inverse_values = eig
+            .eigenvalues
+            .iter()
+            .map(|&l| {
+                if top > 0.0 && l > 1e-12 * top {
+                    1.0 / l
+                } else {
+                    0.0
+                }
+            })
+            .collect();
+        Self {
+            vectors: eig.eigenvectors,
+            inverse_values,
+        }
+    }
+
+    /// A⁺ b.
+    pub fn solve(&self, b: &[f64]) -> Vec<f64> {
+        let m = b.len();
+        let mut out = vec![0.0; m];
+        for (k, &il) in self.inverse_values.iter().enumerate() {
+            if il == 0.0 {
+                continue;
+            }
+            let proj: f64 = (0..m).map(|i| self.vectors[(i, k)] * b[i]).sum();
+            for (i, o) in out.iter_mut().enumerate() {
+                *o += il * proj * self.vectors[(i, k)];
+            }
+        }
+        out
+    }
+
+    /// The rank kept.
+    pub fn rank(&self) -> usize {
+        self.inverse_values.iter().filter(|&&v| v != 0.0).count()
+    }
+}
