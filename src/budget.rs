@@ -4,7 +4,7 @@
 use crate::error::{Error, Result};
 use crate::foundation::FoundationKind;
 use crate::mesh::Mesh;
-use crate::method::{Method, QpForm, Route};
+use crate::method::{Method, QpForm, QpSolver, Route};
 use crate::model::{ConstraintPoints, Model};
 
 const GIB: f64 = 1024.0 * 1024.0 * 1024.0;
@@ -29,11 +29,30 @@ pub fn clarabel_dense_bytes(n: usize) -> f64 {
     47.0 * (n as f64).powi(2)
 }
 
-/// Whether a method on this foundation forms the dense Schur complement S = T + BᵀK⁻B: every
-/// half-space solve, and the QP in its Schur form.
-pub fn dense_schur(foundation: FoundationKind, method: &Method) -> bool {
-    foundation == FoundationKind::HalfSpace
-        || matches!(method, Method::Qp(s) if s.form.is_dense(foundation))
+/// Whether a method on this foundation forms the dense Schur complement S = T + BᵀK⁻B on the
+/// dense route: every half-space penalty or bonded solve, and clarabel's Schur form of the QP
+/// (the matrix-free QP never forms it).
+pub fn dense_schur(
+    foundation: FoundationKind,
+    constraint: ConstraintPoints,
+    method: &Method,
+) -> bool {
+    match method {
+        Method::Qp(s) => {
+            s.resolve(foundation, constraint, false) == QpSolver::Clarabel
+                && s.form.is_dense(foundation)
+        }
+        _ => foundation == FoundationKind::HalfSpace,
+    }
+}
+
+/// The matrix-free QP's own memory beyond the operators, bytes: a second sparse factor of the
+/// plate's size (the preconditioner's plate on springs beside the plate's generalised inverse)
+/// and some 40 vectors of n_σ and n_eq.
+pub fn active_set_bytes(mesh: &Mesh) -> f64 {
+    let n = mesh.n_nodes() as f64;
+    let n_eq = 3.0 * n;
+    31.0 * n_eq * n.max(2.0).log2() * 16.0 + 40.0 * (n + n_eq) * 8.0
 }
 
 /// clarabel's sparse KKT factorisation for the sparse QP forms, bytes, fitted to the peaks
@@ -79,7 +98,7 @@ pub fn estimate_bytes(
     let n = mesh.n_nodes() as f64;
     let n_eq = 3.0 * n;
     let mut bytes = operator_bytes(mesh, foundation);
-    if dense_schur(foundation, method) {
+    if dense_schur(foundation, constraint, method) {
         // The Schur complement S, its penalised copy and factor (and T where the operators do
         // not hold it already), plus a 256-column block of K⁻B.
         let t_held = if foundation == FoundationKind::HalfSpace {
@@ -90,7 +109,9 @@ pub fn estimate_bytes(
         bytes += (4.0 - t_held) * n * n * 8.0 + n_eq * 256.0 * 8.0;
     }
     if let Method::Qp(s) = method {
-        bytes += if s.form.is_dense(foundation) {
+        bytes += if s.resolve(foundation, constraint, false) == QpSolver::ActiveSet {
+            active_set_bytes(mesh)
+        } else if s.form.is_dense(foundation) {
             clarabel_dense_bytes(mesh.n_nodes())
         } else {
             clarabel_sparse_bytes(3 * mesh.n_nodes(), s.form, constraint)
@@ -118,10 +139,10 @@ pub fn iterative_bytes(mesh: &Mesh) -> f64 {
 
 /// Whether the half-space T of `model` is held as an FFT operator on `route` when solved with
 /// `method` (false for Winkler, whose T is diagonal anyway); an error when the route cannot
-/// serve the method (the QP on the iterative route).
+/// serve the method (a QP that clarabel must solve, on the iterative route).
 pub fn toeplitz(model: &Model, method: &Method, route: Route) -> Result<bool> {
     let (mesh, _) = model.plan_mesh();
-    let iterative = route.iterative(mesh.n_nodes(), method)?;
+    let iterative = route.iterative(mesh.n_nodes(), method, model.constraint)?;
     Ok(iterative && model.groups.foundation == FoundationKind::HalfSpace)
 }
 
@@ -171,7 +192,7 @@ pub fn check_mesh(
     if need <= limit {
         return Ok(());
     }
-    let hint = if dense_schur(foundation, method) {
+    let hint = if dense_schur(foundation, constraint, method) {
         format!(
             "the dense operators grow with the square of the {} pressure nodes: use fewer elements (halving each side divides memory by about 16) or an even mesh with symmetric loads",
             mesh.n_nodes()

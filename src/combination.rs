@@ -69,7 +69,9 @@ pub fn analyse(problem: &Problem, progress: &(dyn Fn(&str) + Sync)) -> Result<Co
     let parallel = rayon::current_num_threads().min(models.len()).max(1) as f64;
     // The route of `[solver] route` (the half-space T by FFT beyond the size `auto` allows).
     let toeplitz = first.groups.foundation == crate::foundation::FoundationKind::HalfSpace
-        && problem.route.iterative(mesh.n_nodes(), &problem.method)?;
+        && problem
+            .route
+            .iterative(mesh.n_nodes(), &problem.method, problem.model.constraint)?;
     if toeplitz {
         let need = budget::iterative_bytes(&mesh);
         if need > problem.memory_limit / parallel {

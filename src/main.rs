@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
-use liftoff::method::{Contact, MethodKind, QpForm, Route};
+use liftoff::method::{Contact, MethodKind, QpForm, QpSolver, Route};
 use liftoff::model::{ConstraintPoints, SymmetryMode};
 use liftoff::output::{self, tables};
 use liftoff::scene::{PenaltySpec, SceneFile};
@@ -69,9 +69,14 @@ struct Overrides {
     /// primal (overrides [solver] qp_form).
     #[arg(long, value_enum)]
     qp_form: Option<QpForm>,
-    /// How half-space penalty steps are solved: auto (dense up to 1500 pressure nodes), dense
-    /// (dense T, direct factorisations) or iterative (T by FFT, conjugate gradients; penalty and
-    /// bonded contact) (overrides [solver] route).
+    /// Which solver runs the QP: auto (clarabel where its form fits and is robust, the
+    /// matrix-free active-set method elsewhere), clarabel, or active-set (overrides [solver]
+    /// qp_solver).
+    #[arg(long, value_enum)]
+    qp_solver: Option<QpSolver>,
+    /// How the half-space is held and solved: auto (dense up to 1500 pressure nodes, iterative
+    /// beyond), dense (dense T, direct factorisations) or iterative (T by FFT, conjugate
+    /// gradients) (overrides [solver] route).
     #[arg(long, value_enum)]
     solver: Option<Route>,
 }
@@ -89,6 +94,9 @@ impl Overrides {
         }
         if let Some(f) = self.qp_form {
             file.solver.qp_form = f;
+        }
+        if let Some(q) = self.qp_solver {
+            file.solver.qp_solver = q;
         }
         if let Some(r) = self.solver {
             file.solver.route = r;

@@ -5,6 +5,8 @@
 use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
+use crate::foundation::FoundationKind;
+use crate::model::ConstraintPoints;
 
 /// Contact law between plate and foundation.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, clap::ValueEnum)]
@@ -102,18 +104,24 @@ impl Route {
     pub const AUTO_DENSE_NODES: usize = 1500;
 
     /// Whether the half-space T of a model with `n_sigma` pressure nodes is held as a Toeplitz
-    /// operator when solved with `method`. Refuses the iterative route for the QP, which needs
-    /// the dense Schur complement.
-    pub fn iterative(self, n_sigma: usize, method: &Method) -> Result<bool> {
-        let qp = matches!(method, Method::Qp(_));
+    /// operator when solved with `method` under `constraint`. Refuses the iterative route for a
+    /// QP that clarabel must solve (it needs the dense Schur complement); the matrix-free QP
+    /// takes it like the penalty.
+    pub fn iterative(
+        self,
+        n_sigma: usize,
+        method: &Method,
+        constraint: ConstraintPoints,
+    ) -> Result<bool> {
+        let clarabel = matches!(method, Method::Qp(s) if s.needs_clarabel(constraint));
         match self {
             Route::Dense => Ok(false),
-            Route::Iterative if qp => Err(Error::invalid(
+            Route::Iterative if clarabel => Err(Error::invalid(
                 "solver.route",
-                "the iterative route solves penalty steps and bonded contact; the QP needs the dense route (route = \"dense\" or \"auto\")",
+                "clarabel needs the dense Schur complement, which the iterative route does not form; use route = \"dense\", or the matrix-free QP (qp_solver = \"active-set\" with nodal constraints)",
             )),
             Route::Iterative => Ok(true),
-            Route::Auto => Ok(!qp && n_sigma > Self::AUTO_DENSE_NODES),
+            Route::Auto => Ok(!clarabel && n_sigma > Self::AUTO_DENSE_NODES),
         }
     }
 }
@@ -246,6 +254,75 @@ impl QpForm {
     }
 }
 
+/// Which solver runs the QP (the scene's `[solver] qp_solver`, the CLI's `--qp-solver`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, clap::ValueEnum)]
+#[serde(rename_all = "kebab-case")]
+pub enum QpSolver {
+    /// clarabel where its dense or sparse form fits and is robust (Gauss-point constraints, a
+    /// half-space on the dense route, an explicit `qp_form`), the matrix-free active-set
+    /// solver everywhere else (Winkler with nodal constraints, the iterative route) and where
+    /// clarabel stops without a solution.
+    Auto,
+    /// clarabel's interior-point method on the form of `qp_form`.
+    Clarabel,
+    /// The matrix-free primal active-set method with projected search
+    /// ([`crate::solve::active_set`]): S applied through the operators, never formed; nodal
+    /// constraints only.
+    ActiveSet,
+}
+
+crate::names!(QpSolver, Auto => "auto", Clarabel => "clarabel", ActiveSet => "active-set");
+
+/// Settings of the matrix-free active-set QP solver ([`crate::solve::active_set`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ActiveSetSettings {
+    /// The KKT conditions must hold to this fraction of their scales: the gap on contact
+    /// points and the penetration on lifted points relative to the largest foundation
+    /// settlement, complementarity relative to its product with the peak pressure.
+    pub tolerance: f64,
+    /// Cap on outer (active-set) iterations, each one solve on the free points.
+    pub max_iterations: usize,
+    /// Conjugate-gradient settings of the solves on the free points: `tolerance` for the
+    /// confirming solves, `loose_tolerance` while the set moves. The preconditioner is chosen
+    /// from the foundation: exact (springs T, the model's plate) on Winkler soil, the coarse
+    /// plate on λ·diag(T) springs otherwise.
+    pub cg: CgSettings,
+}
+
+impl Default for ActiveSetSettings {
+    /// KKT to 1e-10, at most 500 outer iterations, CG to 1e-12 (σ to ~1e-10 of the exact
+    /// discrete solution) and 1e-4 while the set moves.
+    fn default() -> Self {
+        Self {
+            tolerance: 1e-10,
+            max_iterations: 500,
+            cg: CgSettings {
+                tolerance: 1e-12,
+                ..CgSettings::default()
+            },
+        }
+    }
+}
+
+impl ActiveSetSettings {
+    /// Check the settings.
+    pub fn validate(&self) -> Result<()> {
+        if !(self.tolerance.is_finite() && self.tolerance > 0.0 && self.tolerance < 1.0) {
+            return Err(Error::invalid(
+                "qp.active_set_tolerance",
+                format!("must lie in (0, 1), got {}", self.tolerance),
+            ));
+        }
+        if self.max_iterations < 1 {
+            return Err(Error::invalid(
+                "qp.active_set_max_iterations",
+                "must be at least 1",
+            ));
+        }
+        self.cg.validate()
+    }
+}
+
 /// Settings of the QP.
 #[derive(Debug, Clone, PartialEq)]
 pub struct QpSettings {
@@ -259,8 +336,12 @@ pub struct QpSettings {
     pub max_iter: u32,
     /// clarabel's KKT solver.
     pub kkt: KktSolver,
-    /// How the QP is posed.
+    /// How the QP is posed for clarabel.
     pub form: QpForm,
+    /// Which solver runs it.
+    pub solver: QpSolver,
+    /// The matrix-free solver's settings.
+    pub active_set: ActiveSetSettings,
 }
 
 impl Default for QpSettings {
@@ -272,6 +353,8 @@ impl Default for QpSettings {
             max_iter: 200,
             kkt: KktSolver::Faer,
             form: QpForm::Auto,
+            solver: QpSolver::Auto,
+            active_set: ActiveSetSettings::default(),
         }
     }
 }
@@ -291,7 +374,51 @@ impl QpSettings {
         if self.max_iter == 0 {
             return Err(Error::invalid("qp.max_iter", "must be at least 1"));
         }
-        Ok(())
+        if self.solver == QpSolver::ActiveSet && self.form != QpForm::Auto {
+            return Err(Error::invalid(
+                "solver.qp_form",
+                format!(
+                    "qp_form = \"{}\" poses the QP for clarabel, but qp_solver = \"active-set\" was asked for; drop qp_form or choose qp_solver = \"clarabel\"",
+                    self.form
+                ),
+            ));
+        }
+        self.active_set.validate()
+    }
+
+    /// Whether clarabel must run this QP under `constraint`, whatever the size: asked for
+    /// explicitly, or by an explicit clarabel form, or Gauss-point constraints (the
+    /// matrix-free solver imposes σ ≥ 0 at the nodes only).
+    pub fn needs_clarabel(&self, constraint: ConstraintPoints) -> bool {
+        match self.solver {
+            QpSolver::Clarabel => true,
+            QpSolver::ActiveSet => false,
+            QpSolver::Auto => self.form != QpForm::Auto || constraint == ConstraintPoints::Gauss,
+        }
+    }
+
+    /// The solver that runs the QP on `foundation` under `constraint`, with T held as an FFT
+    /// operator (`toeplitz`) or not. `Auto` keeps clarabel where it is robust and its form
+    /// fits: Gauss-point constraints, explicit forms, and the half-space's dense Schur form on
+    /// the dense route; the sparse primal form on Winkler soil stalls on stiff plates and on a
+    /// plate balanced on one node, so Winkler with nodal constraints takes the active-set
+    /// solver, as does every model on the iterative route.
+    pub fn resolve(
+        &self,
+        foundation: FoundationKind,
+        constraint: ConstraintPoints,
+        toeplitz: bool,
+    ) -> QpSolver {
+        if self.needs_clarabel(constraint) {
+            return QpSolver::Clarabel;
+        }
+        match self.solver {
+            QpSolver::Auto if foundation != FoundationKind::Winkler && !toeplitz => {
+                QpSolver::Clarabel
+            }
+            QpSolver::Auto | QpSolver::ActiveSet => QpSolver::ActiveSet,
+            QpSolver::Clarabel => QpSolver::Clarabel,
+        }
     }
 }
 

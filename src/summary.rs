@@ -149,6 +149,9 @@ impl Summary {
             method_time_s: named(sol.info.timings.named()),
             solver_info: {
                 let mut info = sol.info.qp.map(|q| named(q.named())).unwrap_or_default();
+                if let Some(a) = sol.info.active_set {
+                    info.extend(named(a.named()));
+                }
                 if let Some(n) = sol.info.cg_iterations {
                     info.insert("cg_iterations".into(), n as f64);
                 }

@@ -3,7 +3,7 @@
 use serde::Deserialize;
 
 use crate::foundation::FoundationKind;
-use crate::method::{Contact, MethodKind, QpForm, Route};
+use crate::method::{Contact, MethodKind, QpForm, QpSolver, Route};
 use crate::model::{ConstraintPoints, SymmetryMode};
 
 /// `[plate]` in SI units.
@@ -297,10 +297,19 @@ pub struct SolverSpec {
     /// "schur", "lifted" or "primal".
     #[serde(default = "default_qp_form")]
     pub qp_form: QpForm,
-    /// How half-space penalty steps are solved: "auto" (default: dense up to 1500 pressure
-    /// nodes, iterative beyond), "dense" or "iterative" (T by FFT, conjugate gradients).
+    /// Which solver runs the QP: "auto" (default: clarabel where its form fits and is robust,
+    /// the matrix-free active-set method elsewhere), "clarabel" or "active-set".
+    #[serde(default = "default_qp_solver")]
+    pub qp_solver: QpSolver,
+    /// How non-local foundations are held and solved: "auto" (default: dense up to 1500
+    /// pressure nodes, iterative beyond), "dense" or "iterative" (T by FFT, conjugate
+    /// gradients).
     #[serde(default = "default_route")]
     pub route: Route,
+}
+
+fn default_qp_solver() -> QpSolver {
+    QpSolver::Auto
 }
 
 fn default_route() -> Route {
@@ -334,6 +343,7 @@ impl Default for SolverSpec {
             max_iterations: default_max_iterations(),
             memory_limit_gib: None,
             qp_form: default_qp_form(),
+            qp_solver: default_qp_solver(),
             route: default_route(),
         }
     }

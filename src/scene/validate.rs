@@ -237,6 +237,7 @@ fn solver(s: &SolverSpec) -> Result<(Method, f64)> {
             crate::method::MethodKind::Penalty => Method::Penalty(penalty),
             crate::method::MethodKind::Qp => Method::Qp(QpSettings {
                 form: s.qp_form,
+                solver: s.qp_solver,
                 ..QpSettings::default()
             }),
         },

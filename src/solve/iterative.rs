@@ -77,6 +77,10 @@ pub struct Face {
     pub sigma: Vec<f64>,
     /// Rigid-body amplitudes: the least-squares multiplier on the free points.
     pub alpha: Vec<f64>,
+    /// T σ.
+    pub t_sigma: Vec<f64>,
+    /// S σ.
+    pub s_sigma: Vec<f64>,
     /// How the conjugate gradients went.
     pub cg: CgReport,
 }
@@ -95,8 +99,116 @@ struct Preconditioner {
     small: SmallSpd,
     /// Pseudo-inverse of Cᵀ C.
     ctc: SmallSpd,
-    /// The held points it was made for (empty: none).
+    /// The held points it was made for (empty: none; else one flag per pressure node).
     held: Vec<bool>,
+    /// The penalty weights it was made for (empty: none).
+    weights: Vec<f64>,
+    /// √(hᵀ P M⁻¹ h) on its free points, the CG's reference (computed on first use).
+    scale: Option<f64>,
+}
+
+impl Preconditioner {
+    /// The preconditioner for penalty weights on `rows` and the points `held` at zero (empty:
+    /// none), with springs `spring_scale`·diag(T) on the plate `springs`.
+    fn new(
+        springs: &SpringPlate,
+        t_diag: &[f64],
+        c_full: &[Vec<f64>],
+        spring_scale: f64,
+        (rows, weights): (&[Vec<(usize, f64)>], &[f64]),
+        held: &[bool],
+    ) -> Result<Self> {
+        let mut d: Vec<f64> = t_diag.iter().map(|t| spring_scale * t).collect();
+        for (k, &w) in weights.iter().enumerate() {
+            if w != 0.0 {
+                for &(i, v) in &rows[k] {
+                    d[i] += w * v * v;
+                }
+            }
+        }
+        let is_held = |i: usize| held.get(i).copied().unwrap_or(false);
+        let inv_d: Vec<f64> = d
+            .iter()
+            .enumerate()
+            .map(|(i, v)| if is_held(i) { 0.0 } else { 1.0 / v })
+            .collect();
+        let factor = springs.factor(&inv_d)?;
+        let c: Vec<Vec<f64>> = c_full
+            .iter()
+            .map(|col| {
+                col.iter()
+                    .enumerate()
+                    .map(|(i, &v)| if is_held(i) { 0.0 } else { v })
+                    .collect()
+            })
+            .collect();
+        let minv_c: Vec<Vec<f64>> = c
+            .iter()
+            .map(|col| springs.solve(&inv_d, &factor, col))
+            .collect();
+        let m = c.len();
+        let small = SmallSpd::new(m, |a, b| dot(&c[a], &minv_c[b]));
+        let ctc = SmallSpd::new(m, |a, b| dot(&c[a], &c[b]));
+        Ok(Self {
+            inv_d,
+            factor,
+            c,
+            minv_c,
+            small,
+            ctc,
+            held: held_key(held),
+            weights: key(weights),
+            scale: None,
+        })
+    }
+
+    /// Whether it was made for these weights and held points.
+    fn fits(&self, weights: &[f64], held: &[bool]) -> bool {
+        self.weights == key(weights) && self.held == held_key(held)
+    }
+}
+
+/// Held points as a cache key: none and all-free are the same.
+fn held_key(held: &[bool]) -> Vec<bool> {
+    if held.iter().any(|&h| h) {
+        held.to_vec()
+    } else {
+        Vec::new()
+    }
+}
+
+/// Penalty weights as a cache key: no weights and all-zero weights are the same.
+fn key(weights: &[f64]) -> Vec<f64> {
+    if weights.iter().all(|&w| w == 0.0) {
+        Vec::new()
+    } else {
+        weights.to_vec()
+    }
+}
+
+/// S p + Σ_k d_k g_k g_kᵀ p, given S p.
+fn penalised(sp: &[f64], rows: &[Vec<(usize, f64)>], weights: &[f64], p: &[f64]) -> Vec<f64> {
+    let mut y = sp.to_vec();
+    for (k, &d) in weights.iter().enumerate() {
+        if d != 0.0 {
+            let gp: f64 = rows[k].iter().map(|&(i, v)| v * p[i]).sum();
+            for &(i, v) in &rows[k] {
+                y[i] += d * v * gp;
+            }
+        }
+    }
+    y
+}
+
+/// What the projected PCG returns.
+struct Solved {
+    sigma: Vec<f64>,
+    alpha: Vec<f64>,
+    /// T σ.
+    t_sigma: Vec<f64>,
+    /// S σ (without penalty).
+    s_sigma: Vec<f64>,
+    cg: CgReport,
 }
 
 /// The Schur system of the half-space with a matrix-free T, ready for penalty steps.
@@ -113,10 +225,14 @@ pub struct IterativeSchur {
     t_diag: Vec<f64>,
     /// The preconditioner's plate on springs.
     springs: SpringPlate,
+    /// The preconditioner is the matrix itself: a diagonal T and lumped coupling, springs
+    /// exactly T on the model's own plate (and the penalty, diagonal with nodal constraints).
+    exact: bool,
     /// The last step's σ, the next one's start.
     warm: Option<Vec<f64>>,
-    /// The last face solve's preconditioner, reused while the held set stays.
-    face_pre: Option<Preconditioner>,
+    /// The last preconditioner, reused while its weights and held set stay (the first is the
+    /// bonded one, factored beside the plate).
+    cached: Option<Preconditioner>,
     /// Seconds spent factoring the plate.
     pub time_plate: f64,
     /// Preconditioner factorisations made.
@@ -140,9 +256,38 @@ impl IterativeSchur {
     /// As [`Self::new`] for any compliance: diagonal (Winkler), dense or FFT. Only products
     /// with T and its diagonal are used.
     pub fn with_any_compliance(ops: &Operators, settings: CgSettings) -> Result<Self> {
-        let t0 = Instant::now();
-        let kinv = PlateInverse::new(ops)?;
-        let time_plate = t0.elapsed().as_secs_f64();
+        let c: Vec<Vec<f64>> = ops.rigid.iter().map(|r| ops.bt_times(r)).collect();
+        let rf = ops.rigid.iter().map(|r| dot(r, &ops.f)).collect();
+        let t_diag = ops.t.diagonal();
+        // The plate's factor and the preconditioner of the bonded problem (where the penalty
+        // and the active-set iteration both start) are independent: one on each core.
+        let (kinv, time_plate, springs) = std::thread::scope(|s| {
+            let bonded = s.spawn(|| -> Result<(SpringPlate, Preconditioner)> {
+                let springs = SpringPlate::new(ops, settings.coarse_plate)?;
+                let pre = Preconditioner::new(
+                    &springs,
+                    &t_diag,
+                    &c,
+                    settings.spring_scale,
+                    (&[], &[]),
+                    &[],
+                )?;
+                Ok((springs, pre))
+            });
+            let t0 = Instant::now();
+            let kinv = PlateInverse::new(ops);
+            let time_plate = t0.elapsed().as_secs_f64();
+            match bonded.join() {
+                Ok(springs) => (kinv, time_plate, springs),
+                Err(panic) => std::panic::resume_unwind(panic),
+            }
+        });
+        let kinv = kinv?;
+        let (springs, bonded) = springs?;
+        let exact = matches!(ops.t.as_ref(), Compliance::Diagonal(_))
+            && ops.constraints.kind == crate::model::ConstraintPoints::Nodal
+            && settings.spring_scale == 1.0
+            && springs.kind == "fine";
         // h = BᵀK⁻f − g₀: the voids' initial gap enters as g = Aσ − Cα − h.
         let h = ops
             .bt_times(&kinv.apply(&ops.f))
@@ -150,28 +295,38 @@ impl IterativeSchur {
             .zip(&ops.gap0)
             .map(|(a, g)| a - g)
             .collect();
-        let c: Vec<Vec<f64>> = ops.rigid.iter().map(|r| ops.bt_times(r)).collect();
-        let rf = ops.rigid.iter().map(|r| dot(r, &ops.f)).collect();
-        let springs = SpringPlate::new(ops, settings.coarse_plate)?;
         Ok(Self {
             settings,
             kinv,
             h,
             c,
             rf,
-            t_diag: ops.t.diagonal(),
+            t_diag,
             springs,
+            exact,
             warm: None,
-            face_pre: None,
+            cached: Some(bonded),
             time_plate,
-            factorisations: 0,
+            factorisations: 1,
             products: 0,
         })
     }
 
-    /// S p = T p + BᵀK⁻B p, the Schur matrix without penalty.
-    pub fn s_times(&mut self, ops: &Operators, p: &[f64]) -> Vec<f64> {
-        self.apply(ops, &[], &[], p)
+    /// (T p, S p) with S = T + BᵀK⁻B, the Schur matrix without penalty.
+    pub fn t_and_s_times(&mut self, ops: &Operators, p: &[f64]) -> (Vec<f64>, Vec<f64>) {
+        self.products += 1;
+        // The product with T and the plate solve are independent: one on each core.
+        let kinv = &self.kinv;
+        let (tp, plate) = std::thread::scope(|s| {
+            let t = s.spawn(|| ops.t.apply(p));
+            let plate = ops.bt_times(&kinv.apply(&ops.b_times(p)));
+            match t.join() {
+                Ok(y) => (y, plate),
+                Err(panic) => std::panic::resume_unwind(panic),
+            }
+        });
+        let sp = tp.iter().zip(&plate).map(|(a, b)| a + b).collect();
+        (tp, sp)
     }
 
     /// A p = T p + BᵀK⁻B p + Σ_k d_k g_k g_kᵀ p.
@@ -182,85 +337,32 @@ impl IterativeSchur {
         weights: &[f64],
         p: &[f64],
     ) -> Vec<f64> {
-        self.products += 1;
-        // The product with T and the plate solve are independent: one on each core.
-        let kinv = &self.kinv;
-        let (mut y, plate) = std::thread::scope(|s| {
-            let t = s.spawn(|| ops.t.apply(p));
-            let plate = ops.bt_times(&kinv.apply(&ops.b_times(p)));
-            match t.join() {
-                Ok(y) => (y, plate),
-                Err(panic) => std::panic::resume_unwind(panic),
-            }
-        });
-        for (yi, v) in y.iter_mut().zip(&plate) {
-            *yi += v;
-        }
-        for (k, &d) in weights.iter().enumerate() {
-            if d != 0.0 {
-                let gp: f64 = rows[k].iter().map(|&(i, v)| v * p[i]).sum();
-                for &(i, v) in &rows[k] {
-                    y[i] += d * v * gp;
-                }
-            }
-        }
-        y
+        let (_, sp) = self.t_and_s_times(ops, p);
+        penalised(&sp, rows, weights, p)
     }
 
     /// The preconditioner for penalty weights on `rows` and the points `held` at zero (empty:
-    /// none).
+    /// none): the cached one if it was made for them, else a new factorisation.
     fn preconditioner(
         &mut self,
         rows: &[Vec<(usize, f64)>],
         weights: &[f64],
         held: &[bool],
     ) -> Result<Preconditioner> {
-        let mut d: Vec<f64> = self
-            .t_diag
-            .iter()
-            .map(|t| self.settings.spring_scale * t)
-            .collect();
-        for (k, &w) in weights.iter().enumerate() {
-            if w != 0.0 {
-                for &(i, v) in &rows[k] {
-                    d[i] += w * v * v;
-                }
+        if let Some(pre) = self.cached.take() {
+            if pre.fits(weights, held) {
+                return Ok(pre);
             }
         }
-        let is_held = |i: usize| held.get(i).copied().unwrap_or(false);
-        let inv_d: Vec<f64> = d
-            .iter()
-            .enumerate()
-            .map(|(i, v)| if is_held(i) { 0.0 } else { 1.0 / v })
-            .collect();
-        let factor = self.springs.factor(&inv_d)?;
         self.factorisations += 1;
-        let c: Vec<Vec<f64>> = self
-            .c
-            .iter()
-            .map(|col| {
-                col.iter()
-                    .enumerate()
-                    .map(|(i, &v)| if is_held(i) { 0.0 } else { v })
-                    .collect()
-            })
-            .collect();
-        let minv_c: Vec<Vec<f64>> = c
-            .iter()
-            .map(|col| self.springs.solve(&inv_d, &factor, col))
-            .collect();
-        let m = c.len();
-        let small = SmallSpd::new(m, |a, b| dot(&c[a], &minv_c[b]));
-        let ctc = SmallSpd::new(m, |a, b| dot(&c[a], &c[b]));
-        Ok(Preconditioner {
-            inv_d,
-            factor,
-            c,
-            minv_c,
-            small,
-            ctc,
-            held: held.to_vec(),
-        })
+        Preconditioner::new(
+            &self.springs,
+            &self.t_diag,
+            &self.c,
+            self.settings.spring_scale,
+            (rows, weights),
+            held,
+        )
     }
 
     /// The projected preconditioned residual: M⁻¹r − M⁻¹C (CᵀM⁻¹C)⁻¹ CᵀM⁻¹r, which satisfies
@@ -304,19 +406,27 @@ impl IterativeSchur {
         }
     }
 
-    /// Projected PCG from `sigma` (made feasible first) to the relative tolerance `tol`;
-    /// returns σ, α and the account.
+    /// Projected PCG from `sigma` (made feasible first) to the relative tolerance `tol`.
+    /// Where the preconditioner is the matrix itself (`exact`: Winkler springs on the model's
+    /// own plate) the start is the direct solution σ = M⁻¹(h + Cα), and CG only confirms it.
+    #[allow(clippy::too_many_arguments)]
     fn cg(
         &mut self,
         ops: &Operators,
-        pre: &Preconditioner,
+        pre: &mut Preconditioner,
         rows: &[Vec<(usize, f64)>],
         weights: &[f64],
         mut sigma: Vec<f64>,
         tol: f64,
         stage: &str,
-    ) -> Result<(Vec<f64>, Vec<f64>, CgReport)> {
+    ) -> Result<Solved> {
         let n = ops.n_sigma();
+        let mut h = self.h.clone();
+        Self::mask(pre, &mut h);
+        if self.exact {
+            // σ = M⁻¹h on the free points, then along M⁻¹C onto the equilibrium below.
+            sigma = self.springs.solve(&pre.inv_d, &pre.factor, &h);
+        }
         Self::mask(pre, &mut sigma);
         // Start: σ moved onto Cᵀσ = Rᵀf along M⁻¹C.
         {
@@ -330,15 +440,18 @@ impl IterativeSchur {
                 }
             }
         }
-        let mut h = self.h.clone();
-        Self::mask(pre, &mut h);
         let h_norm = dot(&h, &h).max(f64::MIN_POSITIVE).sqrt();
-        let scale = {
-            let z = self.project(pre, &h);
-            dot(&h, &z).max(f64::MIN_POSITIVE).sqrt()
+        let scale = match pre.scale {
+            Some(v) => v,
+            None => {
+                let z = self.project(pre, &h);
+                let v = dot(&h, &z).max(f64::MIN_POSITIVE).sqrt();
+                pre.scale = Some(v);
+                v
+            }
         };
-        let mut r: Vec<f64> = self
-            .apply(ops, rows, weights, &sigma)
+        let (mut t_sigma, mut s_sigma) = self.t_and_s_times(ops, &sigma);
+        let mut r: Vec<f64> = penalised(&s_sigma, rows, weights, &sigma)
             .iter()
             .zip(&self.h)
             .map(|(a, b)| a - b)
@@ -385,10 +498,12 @@ impl IterativeSchur {
             iterations += 1;
             residual = rz.max(0.0).sqrt() / scale;
         }
+        if iterations > 0 {
+            (t_sigma, s_sigma) = self.t_and_s_times(ops, &sigma);
+        }
         // α: least-squares multiplier of the recomputed residual on the free points,
         // Aσ − h ≈ Cα.
-        let mut res: Vec<f64> = self
-            .apply(ops, rows, weights, &sigma)
+        let mut res: Vec<f64> = penalised(&s_sigma, rows, weights, &sigma)
             .iter()
             .zip(&self.h)
             .map(|(a, b)| a - b)
@@ -402,15 +517,17 @@ impl IterativeSchur {
             }
         }
         let true_residual = dot(&res, &res).sqrt() / h_norm;
-        Ok((
+        Ok(Solved {
             sigma,
             alpha,
-            CgReport {
+            t_sigma,
+            s_sigma,
+            cg: CgReport {
                 iterations,
                 residual,
                 true_residual,
             },
-        ))
+        })
     }
 
     /// Solve one penalised step: `weights[k]` = d_k on constraint point k (0 if not penalised),
@@ -422,7 +539,7 @@ impl IterativeSchur {
         weights: &[f64],
         loose: bool,
     ) -> Result<Step> {
-        let pre = self.preconditioner(rows, weights, &[])?;
+        let mut pre = self.preconditioner(rows, weights, &[])?;
         let start = self
             .warm
             .clone()
@@ -432,22 +549,24 @@ impl IterativeSchur {
         } else {
             self.settings.tolerance
         };
-        let (sigma, alpha, cg) = self.cg(
+        let out = self.cg(
             ops,
-            &pre,
+            &mut pre,
             rows,
             weights,
             start,
             tol,
             "iterative penalty step (conjugate gradients)",
-        )?;
-        let u = self.displacements(ops, &sigma, &alpha);
-        self.warm = Some(sigma.clone());
+        );
+        self.cached = Some(pre);
+        let solved = out?;
+        let u = self.displacements(ops, &solved.sigma, &solved.alpha);
+        self.warm = Some(solved.sigma.clone());
         Ok(Step {
             u,
-            sigma,
-            alpha,
-            cg,
+            sigma: solved.sigma,
+            alpha: solved.alpha,
+            cg: solved.cg,
         })
     }
 
@@ -461,27 +580,36 @@ impl IterativeSchur {
         start: &[f64],
         tol: f64,
     ) -> Result<Face> {
-        let pre = match self.face_pre.take() {
-            Some(pre) if pre.held == held => pre,
-            _ => self.preconditioner(&[], &[], held)?,
-        };
+        let mut pre = self.preconditioner(&[], &[], held)?;
         let out = self.cg(
             ops,
-            &pre,
+            &mut pre,
             &[],
             &[],
             start.to_vec(),
             tol,
             "matrix-free QP (conjugate gradients on the free points)",
         );
-        self.face_pre = Some(pre);
-        let (sigma, alpha, cg) = out?;
-        Ok(Face { sigma, alpha, cg })
+        self.cached = Some(pre);
+        let solved = out?;
+        Ok(Face {
+            sigma: solved.sigma,
+            alpha: solved.alpha,
+            t_sigma: solved.t_sigma,
+            s_sigma: solved.s_sigma,
+            cg: solved.cg,
+        })
     }
 
     /// u = K⁻(f − Bσ) + Rα.
     pub fn displacements(&self, ops: &Operators, sigma: &[f64], alpha: &[f64]) -> Vec<f64> {
         super::bonded::displacements(ops, &self.kinv, sigma, alpha)
+    }
+
+    /// Whether the preconditioner is the matrix itself (so a tight solve costs about one CG
+    /// iteration more than a loose one).
+    pub fn exact(&self) -> bool {
+        self.exact
     }
 
     /// "fine" or "coarse": the preconditioner's plate.

@@ -394,6 +394,15 @@ impl SmallSpd {
         out
     }
 
+    /// Unit vectors spanning the directions dropped (the null space, up to round-off).
+    pub fn null_space(&self) -> Vec<Vec<f64>> {
+        let m = self.inverse_values.len();
+        (0..m)
+            .filter(|&k| self.inverse_values[k] == 0.0)
+            .map(|k| (0..m).map(|i| self.vectors[(i, k)]).collect())
+            .collect()
+    }
+
     /// The rank kept.
     pub fn rank(&self) -> usize {
         self.inverse_values.iter().filter(|&&v| v != 0.0).count()

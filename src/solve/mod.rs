@@ -4,6 +4,7 @@
 //! did not reach an answer returns a `Solution` whose [`Status`] says so; only failures that
 //! leave nothing to report (a factorisation breaking down, a problem too large) are errors.
 
+pub mod active_set;
 pub mod bonded;
 pub mod iterative;
 pub mod linalg;
@@ -15,7 +16,8 @@ pub mod sparse_qp;
 pub mod springs;
 
 use crate::error::{Error, Result};
-use crate::method::{Method, QpForm};
+use crate::foundation::Compliance;
+use crate::method::{Method, QpForm, QpSettings, QpSolver};
 use crate::model::ConstraintPoints;
 use crate::operators::Operators;
 use sparse_qp::SparseForm;
@@ -205,8 +207,10 @@ pub struct PenaltyStage {
 pub struct SolveInfo {
     /// Phase timings.
     pub timings: Timings,
-    /// clarabel's diagnostics (QP only).
+    /// clarabel's diagnostics (QP by clarabel only).
     pub qp: Option<QpDiagnostics>,
+    /// The matrix-free QP's diagnostics (QP by the active-set solver only).
+    pub active_set: Option<active_set::ActiveSetDiagnostics>,
     /// The stages of the penalty iteration, one per ε̄ (penalty only).
     pub penalty_stages: Vec<PenaltyStage>,
     /// What the method decided on its own (a fall-back, say), for the report's notes.
@@ -259,25 +263,50 @@ pub fn solve(ops: &Operators, method: &Method) -> Result<Solution> {
         }
         Method::Qp(settings) => {
             check_feasible(ops)?;
-            match settings.form.resolve(&ops.t) {
-                QpForm::Lifted => sparse_qp::solve_sparse(ops, settings, SparseForm::Lifted)?,
-                QpForm::Primal => {
-                    let sol = sparse_qp::solve_sparse(ops, settings, SparseForm::Primal)?;
-                    if settings.form == QpForm::Auto
-                        && !sol.status.converged()
-                        && ops.n_sigma() <= DENSE_FALLBACK_NODES
-                    {
-                        dense_fallback(ops, settings, &sol)?
-                    } else {
-                        sol
-                    }
-                }
-                _ => qp::solve(ops, settings)?,
-            }
+            solve_qp(ops, settings)?
         }
     };
     check_equilibrium(ops, &sol)?;
     Ok(sol)
+}
+
+/// The QP by the solver its settings resolve to on these operators. Under `qp_solver = auto`
+/// a clarabel solve that stops without a solution is solved again by the active-set method
+/// where it can be (nodal constraints), and the notes say so.
+fn solve_qp(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
+    let toeplitz = matches!(ops.t.as_ref(), Compliance::Toeplitz(_));
+    let solver = settings.resolve(ops.foundation, ops.constraints.kind, toeplitz);
+    if solver == QpSolver::ActiveSet {
+        return active_set::solve(ops, settings);
+    }
+    let sol = match settings.form.resolve(&ops.t) {
+        QpForm::Lifted => sparse_qp::solve_sparse(ops, settings, SparseForm::Lifted)?,
+        QpForm::Primal => {
+            let sol = sparse_qp::solve_sparse(ops, settings, SparseForm::Primal)?;
+            if settings.form == QpForm::Auto
+                && !sol.status.converged()
+                && ops.n_sigma() <= DENSE_FALLBACK_NODES
+            {
+                dense_fallback(ops, settings, &sol)?
+            } else {
+                sol
+            }
+        }
+        _ => qp::solve(ops, settings)?,
+    };
+    let retry = settings.solver == QpSolver::Auto
+        && !sol.status.converged()
+        && ops.constraints.kind == ConstraintPoints::Nodal;
+    if !retry {
+        return Ok(sol);
+    }
+    let mut again = active_set::solve(ops, settings)?;
+    again.info.notes.push(format!(
+        "clarabel stopped ({}); solved again by the matrix-free active-set method",
+        sol.status.describe()
+    ));
+    again.iterations += sol.iterations;
+    Ok(again)
 }
 
 /// Largest model (pressure nodes) on which the automatic QP form retries a failed primal solve

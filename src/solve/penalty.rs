@@ -255,10 +255,9 @@ pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
                 total: t0.elapsed().as_secs_f64(),
                 ..Timings::default()
             },
-            qp: None,
             cg_iterations,
             penalty_stages: stages,
-            notes: Vec::new(),
+            ..SolveInfo::default()
         },
     })
 }
