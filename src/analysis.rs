@@ -62,6 +62,30 @@ pub fn prepare(model: &Model, method: &Method, route: Route, limit: f64) -> Resu
     Ok(Operators::assemble_with(model, toeplitz))
 }
 
+/// Check the memory budget of every method and assemble one set of operators they all can
+/// use: T as an FFT operator where every one of them takes the iterative route on `route`
+/// (the penalty, bonded contact and the matrix-free QP beyond the dense size under `auto`),
+/// dense otherwise (clarabel's Schur form needs it).
+pub fn prepare_shared(
+    model: &Model,
+    methods: &[&Method],
+    route: Route,
+    limit: f64,
+) -> Result<Operators> {
+    let mut toeplitz = true;
+    for m in methods {
+        toeplitz &= budget::toeplitz(model, m, route)?;
+    }
+    for m in methods {
+        if toeplitz {
+            budget::check_route(model, m, Route::Iterative, limit)?;
+        } else {
+            budget::check(model, m, limit)?;
+        }
+    }
+    Ok(Operators::assemble_with(model, toeplitz))
+}
+
 /// Check the memory budget, assemble, solve with the problem's method and post-process.
 pub fn analyse(problem: &Problem) -> Result<Analysis> {
     let t0 = Instant::now();

@@ -5,12 +5,10 @@ use std::time::Instant;
 use serde::Serialize;
 
 use crate::analysis;
-use crate::budget;
 use crate::error::Result;
 use crate::method::Method;
 use crate::scene::Problem;
 use crate::summary::Summary;
-use crate::Operators;
 
 /// Differences between the penalty and QP solutions.
 #[derive(Debug, Clone, Copy, Serialize)]
@@ -51,12 +49,14 @@ pub fn compare(problem: &Problem) -> Result<Comparison> {
         Method::Qp(s) => Method::Qp(s.clone()),
         _ => Method::qp(),
     };
-    // One assembly for both: the QP needs the dense T, so the route is the QP's (dense).
-    for m in [&penalty, &qp] {
-        budget::check(&problem.model, m, problem.memory_limit)?;
-    }
+    // One assembly for both, on the route both can take.
     let t0 = Instant::now();
-    let ops = Operators::assemble(&problem.model);
+    let ops = analysis::prepare_shared(
+        &problem.model,
+        &[&penalty, &qp],
+        problem.route,
+        problem.memory_limit,
+    )?;
     let assemble_s = t0.elapsed().as_secs_f64();
     let pen = analysis::run(&problem.model, &ops, &penalty, assemble_s)?;
     let qp = analysis::run(&problem.model, &ops, &qp, assemble_s)?;

@@ -74,7 +74,10 @@ pub struct Summary {
     pub time_s: Times,
     /// Phase timings of the method.
     pub method_time_s: std::collections::BTreeMap<String, f64>,
-    /// Solver diagnostics (QP: clarabel's primal and dual residuals, objective, duality gap).
+    /// The solver that ran the QP ("clarabel" or "active-set"; absent for other methods).
+    pub qp_solver: Option<&'static str>,
+    /// Solver diagnostics (QP by clarabel: its primal and dual residuals, objective, duality
+    /// gap; by the active-set solver: outer and CG iterations, products, KKT residuals).
     pub solver_info: std::collections::BTreeMap<String, f64>,
     /// Largest deflection, physical.
     pub w_max: f64,
@@ -147,6 +150,10 @@ impl Summary {
             iterations: sol.iterations,
             time_s: times,
             method_time_s: named(sol.info.timings.named()),
+            qp_solver: match &sol.method {
+                Method::Qp(s) => Some(s.solver.name()),
+                _ => None,
+            },
             solver_info: {
                 let mut info = sol.info.qp.map(|q| named(q.named())).unwrap_or_default();
                 if let Some(a) = sol.info.active_set {

@@ -61,6 +61,9 @@ fn every_catalogue_entry_has_its_exit_code_and_message() {
         Case { id: "E36 void with bonded contact", scene: edit("[mesh]", "[[void]]\nx = [0.0, 1.0]\ny = [0.0, 1.0]\ndepth = 0.001\n[mesh]"), args: vec!["--contact", "bonded"], code: 2, message: "voids need unbonded contact" },
         Case { id: "E37 overlapping zones", scene: edit("modulus = 5e7", "modulus = 5e7\n[[foundation.zone]]\nx = [0.0, 1.0]\ny = [0.0, 1.0]\nmodulus = 1e7\n[[foundation.zone]]\nx = [0.5, 2.0]\ny = [0.0, 1.0]\nmodulus = 2e7"), args: vec![], code: 2, message: "overlaps" },
         Case { id: "E38 zone modulus out of range", scene: edit("modulus = 5e7", "modulus = 5e7\n[[foundation.zone]]\nx = [0.0, 1.0]\ny = [0.0, 1.0]\nmodulus = 1e30"), args: vec![], code: 2, message: "times as stiff as the rest of the subgrade" },
+        Case { id: "E39 active set with Gauss points", scene: Some(BASE.into()), args: vec!["--method", "qp", "--qp-solver", "active-set", "--constraint", "gauss"], code: 2, message: "solver.qp_solver" },
+        Case { id: "E40 clarabel on the iterative route", scene: paper("paper-halfspace", "method = \"penalty\"", "method = \"qp\""), args: vec!["--qp-solver", "clarabel", "--solver", "iterative"], code: 2, message: "clarabel needs the dense Schur complement" },
+        Case { id: "E41 a clarabel form with the active set", scene: Some(BASE.into()), args: vec!["--method", "qp", "--qp-solver", "active-set", "--qp-form", "schur"], code: 2, message: "solver.qp_form" },
         Case { id: "E29 unreadable scene", scene: None, args: vec![], code: 5, message: "cannot read scene file" },
     ];
     let dir = tempfile::tempdir().expect("tempdir");

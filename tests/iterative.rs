@@ -116,7 +116,7 @@ fn bonded_iterative_equals_dense() {
 }
 
 #[test]
-fn the_route_is_chosen_by_size_and_refused_for_the_qp() {
+fn the_route_is_chosen_by_size_and_refused_for_clarabel() {
     let small = paper(32);
     let big = paper(256);
     let pen = Method::penalty();
@@ -132,13 +132,27 @@ fn the_route_is_chosen_by_size_and_refused_for_the_qp() {
         "16 641 nodes: iterative"
     );
     assert!(toeplitz(&small, &pen, Route::Iterative).expect("fits"));
+    // The QP takes the route like the penalty (the matrix-free solver runs on it) …
     assert!(
-        !liftoff::budget::toeplitz(&big.model, &Method::qp(), Route::Auto).expect("auto"),
-        "QP: dense"
+        liftoff::budget::toeplitz(&big.model, &Method::qp(), Route::Auto).expect("auto"),
+        "QP: iterative beyond the dense size"
     );
-    match toeplitz(&small, &Method::qp(), Route::Iterative) {
+    assert!(
+        !liftoff::budget::toeplitz(&small.model, &Method::qp(), Route::Auto).expect("auto"),
+        "QP: dense (clarabel) below it"
+    );
+    // … but clarabel, which needs the dense Schur complement, is refused on it.
+    let clarabel = Method::Qp(liftoff::QpSettings {
+        solver: liftoff::method::QpSolver::Clarabel,
+        ..Default::default()
+    });
+    assert!(
+        !liftoff::budget::toeplitz(&big.model, &clarabel, Route::Auto).expect("auto"),
+        "clarabel: dense whatever the size"
+    );
+    match toeplitz(&small, &clarabel, Route::Iterative) {
         Err(liftoff::Error::Invalid { field, .. }) => assert_eq!(field, "solver.route"),
-        other => panic!("QP on the iterative route: {other:?}"),
+        other => panic!("clarabel on the iterative route: {other:?}"),
     }
     // 256 × 256 dense needs the Schur complement and its copies (~8 GiB): refused at 4 GiB,
     // while the iterative route fits.
@@ -239,7 +253,24 @@ fn the_solver_flag_selects_the_route() {
         "iterative",
         "--method",
         "qp",
+        "--qp-solver",
+        "clarabel",
     ]);
-    assert_eq!(qp.status.code(), Some(2), "QP on the iterative route");
+    assert_eq!(qp.status.code(), Some(2), "clarabel on the iterative route");
     assert!(String::from_utf8_lossy(&qp.stderr).contains("solver.route"));
+    let qp = run(&[
+        "solve",
+        "example:paper-halfspace",
+        "--solver",
+        "iterative",
+        "--method",
+        "qp",
+        "--json",
+    ]);
+    assert_eq!(qp.status.code(), Some(0), "the QP on the iterative route");
+    let qp: serde_json::Value = serde_json::from_slice(&qp.stdout).expect("json");
+    assert_eq!(
+        qp["qp_solver"], "active-set",
+        "auto takes the matrix-free QP there"
+    );
 }

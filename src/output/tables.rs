@@ -130,7 +130,10 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
     let method = if s.contact == "bonded" {
         "bonded, direct solve".to_string()
     } else {
-        format!("unbonded, {} ({} constraints)", s.method, s.constraint)
+        match s.qp_solver {
+            Some(q) => format!("unbonded, qp by {q} ({} constraints)", s.constraint),
+            None => format!("unbonded, {} ({} constraints)", s.method, s.constraint),
+        }
     };
     l.push(format!("  contact    : {method}"));
     l.push(format!(
@@ -147,7 +150,24 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
             get("duality_gap")
         ));
     }
-    if let Some(n) = s.solver_info.get("cg_iterations") {
+    if s.qp_solver == Some("active-set") {
+        let get = |k: &str| s.solver_info.get(k).copied().unwrap_or(f64::NAN);
+        l.push(format!(
+            "  QP solver  : matrix-free active set, {:.0} face solves, {:.0} CG iterations, {:.0} products with S, {:.0} factorisations",
+            get("outer_iterations"),
+            get("cg_iterations"),
+            get("schur_products"),
+            get("factorisations")
+        ));
+        l.push(format!(
+            "  KKT        : natural residual {:.1e} (gap {:.1e}, penetration {:.1e}, σ·gap {:.1e}), equilibrium {:.1e}",
+            get("kkt_natural"),
+            get("kkt_stationarity"),
+            get("kkt_penetration"),
+            get("kkt_complementarity"),
+            get("kkt_equilibrium")
+        ));
+    } else if let Some(n) = s.solver_info.get("cg_iterations") {
         l.push(format!(
             "  linear     : iterative route (T by FFT), {n:.0} conjugate-gradient iterations in all"
         ));
@@ -160,17 +180,23 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
             .collect();
         l.push(format!("  ε̄          : {}", stages.join(" → ")));
     }
+    let qp = s.qp_solver.is_some();
     if !s.history.is_empty() {
-        l.push("  penalty iterations (constraint points in the penalised, lifted set):".into());
+        l.push(if qp {
+            "  active-set iterations (points at zero pressure after each face solve; min σ of its solution):".into()
+        } else {
+            "  penalty iterations (constraint points in the penalised, lifted set):".into()
+        });
         for it in &s.history {
             // The iterative route adds the conjugate-gradient count and final residual.
             let cg = it.cg.map_or(String::new(), |c| {
                 format!(", CG {:>4} it. (residual {:.1e})", c.iterations, c.residual)
             });
             l.push(format!(
-                "    step {:>3}: {:>6} penalised, {:>6} entered, {:>6} left, min σ {:.3e}{cg}",
+                "    step {:>3}: {:>6} {}, {:>6} entered, {:>6} left, min σ {:.3e}{cg}",
                 it.step,
                 it.penalised,
+                if qp { "lifted" } else { "penalised" },
                 it.entered,
                 it.left,
                 it.min_pressure * g.mu

@@ -46,12 +46,12 @@
 use std::time::Instant;
 
 use super::bonded::{dot, finite};
-use super::iterative::IterativeSchur;
+use super::iterative::{CgReport, Face, IterativeSchur};
 use super::linalg::SmallSpd;
 use super::{discrete_gap, Iteration, Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
-use crate::method::{CgSettings, Method, QpSettings, QpSolver};
+use crate::method::{ActiveSetSettings, CgSettings, Method, QpSettings, QpSolver};
 use crate::model::ConstraintPoints;
 use crate::operators::Operators;
 
@@ -108,12 +108,6 @@ impl ActiveSetDiagnostics {
     }
 }
 
-/// Armijo's sufficient-decrease fraction.
-const ARMIJO: f64 = 1e-4;
-
-/// Halvings of the projected search before it gives up on a direction.
-const MAX_HALVINGS: usize = 40;
-
 /// A feasible iterate with the products the next step needs.
 struct Point {
     sigma: Vec<f64>,
@@ -133,25 +127,6 @@ impl Point {
     fn new(sys: &mut IterativeSchur, ops: &Operators, sigma: Vec<f64>) -> Self {
         let (t_sigma, s_sigma) = sys.t_and_s_times(ops, &sigma);
         Self::with_products(sys, sigma, t_sigma, s_sigma)
-    }
-
-    /// A point whose products are formed only when asked for ([`Self::ensure`]).
-    fn bare(sigma: Vec<f64>) -> Self {
-        Self {
-            sigma,
-            t_sigma: Vec::new(),
-            s_sigma: Vec::new(),
-            f: f64::NAN,
-            alpha: None,
-        }
-    }
-
-    /// Form the products of a bare point.
-    fn ensure(&mut self, sys: &mut IterativeSchur, ops: &Operators) {
-        if self.s_sigma.is_empty() {
-            let sigma = std::mem::take(&mut self.sigma);
-            *self = Self::new(sys, ops, sigma);
-        }
     }
 
     fn with_products(
@@ -462,147 +437,28 @@ pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
     };
     let mut sys = IterativeSchur::with_any_compliance(ops, cg)?;
     let t_setup = t0.elapsed().as_secs_f64();
-    let n = ops.n_sigma();
-    let infeasible = || {
-        Error::Infeasible(
-            "no non-negative pressure balances the loads (the load resultant lies outside the reach of the plate's nodal pressures)".into(),
-        )
+    let mut run = Run {
+        settings: s,
+        history: Vec::new(),
+        iterations: 0,
+        projected_steps: 0,
+        cg_total: 0,
     };
-    let start = project(&vec![0.0; n], &sys.c, &sys.rf).ok_or_else(infeasible)?;
-    // Its products are formed only if the first step needs them (a projected search).
-    let mut point = Point::bare(start);
-
-    let mut history: Vec<Iteration> = Vec::new();
-    let mut prev_held: Option<Vec<bool>> = None;
-    let mut last_tight = false;
-    let mut projected_steps = 0;
-    let mut cg_total = 0;
-    let mut status = Status::IterationLimit {
-        limit: s.max_iterations,
+    let end = match run.primal_dual(&mut sys, ops)? {
+        Ok(end) => end,
+        Err(last) => run.feasible(&mut sys, ops, &last)?,
     };
-    let mut alpha = vec![0.0; sys.c.len()];
-    let mut residuals = KktResiduals::default();
-    let mut iterations = 0;
-    loop {
-        // The reduced gradient and the KKT residuals (not needed before the first face).
-        let mut g = Vec::new();
-        if iterations > 0 {
-            let (gr, a) = reduced_gradient(&sys, &point);
-            g = gr;
-            alpha = a;
-            residuals = kkt(&sys, &point, &g, &alpha);
-            if last_tight && residuals.natural > s.tolerance && point.alpha.is_some() {
-                // The face's multiplier carries its CG's round-off; the one fitted to the
-                // points in contact may meet the conditions where it did not.
-                point.alpha = None;
-                let (gr, a) = reduced_gradient(&sys, &point);
-                let k = kkt(&sys, &point, &gr, &a);
-                if k.natural <= s.tolerance {
-                    (g, alpha, residuals) = (gr, a, k);
-                }
-            }
-            if last_tight && residuals.natural <= s.tolerance {
-                status = Status::Converged;
-                break;
-            }
-        }
-        if iterations >= s.max_iterations {
-            break;
-        }
-        // The first face is the bonded problem (nothing held: any feasible point lies on it),
-        // whose preconditioner was factored beside the plate.
-        let held: Vec<bool> = if iterations == 0 {
-            vec![false; n]
-        } else {
-            let g_s = gap_scale(&sys, &point, &alpha);
-            point
-                .sigma
-                .iter()
-                .zip(&g)
-                .map(|(&sg, &gi)| sg == 0.0 && gi >= -s.tolerance * g_s)
-                .collect()
-        };
-        let same = prev_held.as_ref() == Some(&held);
-        if same && last_tight {
-            // A tight solve on this set left the KKT residual above the tolerance and the set
-            // did not move: round-off has the last word.
-            status = Status::SolverFailure {
-                detail: format!(
-                    "the active-set QP stalled: the contact set is settled but the KKT residual {:.1e} stays above the tolerance {:.0e}",
-                    residuals.natural, s.tolerance
-                ),
-            };
-            break;
-        }
-        // Loose while the set moves, tight to confirm it — always tight where the
-        // preconditioner is exact and a tight solve costs one CG iteration more.
-        let tol = if same || sys.exact() {
-            s.cg.tolerance
-        } else {
-            s.cg.loose_tolerance.max(s.cg.tolerance)
-        };
-        let face = sys.solve_face(ops, &held, &point.sigma, tol)?;
-        // A loose solve that happened to meet the tight tolerance (one CG iteration with the
-        // exact Winkler preconditioner) counts as tight.
-        let tight = face.cg.residual <= s.cg.tolerance;
-        finite(&face.sigma, "matrix-free QP")?;
-        cg_total += face.cg.iterations;
-        iterations += 1;
-        let s_max = face.sigma.iter().cloned().fold(0.0_f64, f64::max);
-        let min_free = face
-            .sigma
-            .iter()
-            .zip(&held)
-            .filter(|(_, &h)| !h)
-            .map(|(&v, _)| v)
-            .fold(f64::INFINITY, f64::min);
-        let next = if min_free >= -s.tolerance * s_max {
-            // The face minimiser is feasible up to round-off: take it, its specks of tension
-            // projected away (it is its own projection when it has none).
-            let x = project(&face.sigma, &sys.c, &sys.rf).ok_or_else(infeasible)?;
-            let mut p = if x == face.sigma {
-                Point::with_products(&sys, x, face.t_sigma, face.s_sigma)
-            } else {
-                Point::new(&mut sys, ops, x)
-            };
-            p.alpha = Some(face.alpha.clone());
-            p
-        } else {
-            projected_steps += 1;
-            point.ensure(&mut sys, ops);
-            if g.is_empty() {
-                g = reduced_gradient(&sys, &point).0;
-            }
-            projected_search(&mut sys, ops, &point, &g, &face.sigma)?
-        };
-        let lifted: Vec<bool> = next.sigma.iter().map(|&v| v == 0.0).collect();
-        let was: Vec<bool> = point.sigma.iter().map(|&v| v == 0.0).collect();
-        history.push(Iteration {
-            step: iterations,
-            epsilon: 0.0,
-            penalised: lifted.iter().filter(|&&b| b).count(),
-            entered: lifted.iter().zip(&was).filter(|(l, w)| **l && !**w).count(),
-            left: lifted.iter().zip(&was).filter(|(l, w)| !**l && **w).count(),
-            min_pressure: min_free,
-            cg: Some(face.cg),
-        });
-        if lifted.iter().all(|&b| b) {
-            return Err(infeasible());
-        }
-        point = next;
-        prev_held = Some(held);
-        last_tight = tight;
-    }
+    let (point, alpha, residuals, status) = end;
     let sigma = point.sigma;
     let u = sys.displacements(ops, &sigma, &alpha);
     finite(&u, "matrix-free QP")?;
     let gap = discrete_gap(ops, &u, &sigma);
     let diagnostics = ActiveSetDiagnostics {
-        iterations,
-        cg_iterations: cg_total,
+        iterations: run.iterations,
+        cg_iterations: run.cg_total,
         products: sys.products,
         factorisations: sys.factorisations,
-        projected_steps,
+        projected_steps: run.projected_steps,
         objective: point.f,
         kkt: residuals,
     };
@@ -617,8 +473,8 @@ pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
         gap,
         rigid: alpha,
         status,
-        iterations,
-        history,
+        iterations: run.iterations,
+        history: run.history,
         info: SolveInfo {
             timings: Timings {
                 plate_factor: Some(sys.time_plate),
@@ -627,58 +483,277 @@ pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
                 total,
                 ..Timings::default()
             },
-            cg_iterations: Some(cg_total),
+            cg_iterations: Some(run.cg_total),
             active_set: Some(diagnostics),
             ..SolveInfo::default()
         },
     })
 }
 
-/// The next iterate along the face direction σ* − σ: the projection P(σ + t(σ* − σ)) at the
-/// first t = 1, ½, … with Armijo's decrease, f(x) ≤ f(σ) + c gᵀ(x − σ). If no t gives it
-/// (an inexact face solve can make the direction useless), the projected gradient −g.
-fn projected_search(
-    sys: &mut IterativeSchur,
-    ops: &Operators,
-    point: &Point,
-    g: &[f64],
-    target: &[f64],
-) -> Result<Point> {
-    let directions = [
-        target
-            .iter()
-            .zip(&point.sigma)
-            .map(|(a, b)| a - b)
-            .collect::<Vec<f64>>(),
-        g.iter().map(|v| -v).collect(),
-    ];
-    for d in &directions {
-        let mut t = 1.0;
-        for _ in 0..MAX_HALVINGS {
-            let y: Vec<f64> = point
-                .sigma
+/// How a phase of the iteration ended: the point, its multiplier, its KKT residuals, status.
+type End = (Point, Vec<f64>, KktResiduals, Status);
+
+/// The iteration's bookkeeping.
+struct Run {
+    settings: ActiveSetSettings,
+    history: Vec<Iteration>,
+    iterations: usize,
+    projected_steps: usize,
+    cg_total: usize,
+}
+
+fn infeasible() -> Error {
+    Error::Infeasible(
+        "no non-negative pressure balances the loads (the load resultant lies outside the reach of the plate's nodal pressures)".into(),
+    )
+}
+
+impl Run {
+    /// One face solve, counted and checked.
+    fn face(
+        &mut self,
+        sys: &mut IterativeSchur,
+        ops: &Operators,
+        held: &[bool],
+        start: &[f64],
+        tight: bool,
+    ) -> Result<Face> {
+        let c = &self.settings.cg;
+        let tol = if tight {
+            c.tolerance
+        } else {
+            c.loose_tolerance.max(c.tolerance)
+        };
+        let face = sys.solve_face(ops, held, start, tol)?;
+        finite(&face.sigma, "matrix-free QP")?;
+        self.cg_total += face.cg.iterations;
+        self.iterations += 1;
+        Ok(face)
+    }
+
+    /// Record a step: the points at zero after it, against those before.
+    fn record(&mut self, before: &[bool], after: &[bool], min_sigma: f64, cg: CgReport) {
+        self.history.push(Iteration {
+            step: self.iterations,
+            epsilon: 0.0,
+            penalised: after.iter().filter(|&&b| b).count(),
+            entered: after
                 .iter()
-                .zip(d)
-                .map(|(s, di)| s + t * di)
+                .zip(before)
+                .filter(|(a, b)| **a && !**b)
+                .count(),
+            left: after
+                .iter()
+                .zip(before)
+                .filter(|(a, b)| !**a && **b)
+                .count(),
+            min_pressure: min_sigma,
+            cg: Some(cg),
+        });
+    }
+
+    /// The primal–dual active-set (semismooth Newton) iteration on sets: hold the lifted set
+    /// at zero, solve the face, lift the free points whose pressure came out negative and
+    /// release the held points whose gap came out negative; stop when nothing moves after a
+    /// tight solve. It is the penalty iteration with ε̄ = 0 and as fast, but it can cycle on a
+    /// matrix that is not an M-matrix: a set met before hands over to [`Self::feasible`]
+    /// (`Err` with the last face's pressures, where it starts).
+    fn primal_dual(
+        &mut self,
+        sys: &mut IterativeSchur,
+        ops: &Operators,
+    ) -> Result<std::result::Result<End, Vec<f64>>> {
+        let n = ops.n_sigma();
+        let tol = self.settings.tolerance;
+        let mut seen: Vec<Vec<bool>> = Vec::new();
+        // The feasible point nearest σ = 0 (pressures linear over the points it keeps, as
+        // under a rigid plate): the solution itself when it is the only feasible point (a
+        // plate balanced on one node), and where the first set comes from — usually nothing
+        // held, the bonded problem.
+        let origin = project(&vec![0.0; n], &sys.c, &sys.rf).ok_or_else(infeasible)?;
+        let p0 = Point::new(sys, ops, origin);
+        let (g0, alpha0) = reduced_gradient(sys, &p0);
+        let k0 = kkt(sys, &p0, &g0, &alpha0);
+        if k0.natural <= tol {
+            return Ok(Ok((p0, alpha0, k0, Status::Converged)));
+        }
+        let g_s = gap_scale(sys, &p0, &alpha0);
+        let mut held: Vec<bool> = (0..n)
+            .map(|i| p0.sigma[i] == 0.0 && g0[i] >= -tol * g_s)
+            .collect();
+        let mut start = p0.sigma;
+        let mut same = false;
+        while self.iterations < self.settings.max_iterations {
+            let tight = same || sys.exact();
+            let face = self.face(sys, ops, &held, &start, tight)?;
+            let tight = face.cg.residual <= self.settings.cg.tolerance;
+            // The gap at σ* with the face's multiplier.
+            let mut g: Vec<f64> = face
+                .s_sigma
+                .iter()
+                .zip(&sys.h)
+                .map(|(a, b)| a - b)
                 .collect();
-            if let Some(x) = project(&y, &sys.c, &sys.rf) {
-                let change: f64 = g
-                    .iter()
-                    .zip(x.iter().zip(&point.sigma))
-                    .map(|(gi, (xi, si))| gi * (xi - si))
-                    .sum();
-                let trial = Point::new(sys, ops, x);
-                if trial.f < point.f && trial.f <= point.f + ARMIJO * change.min(0.0) {
-                    return Ok(trial);
+            for (c, a) in sys.c.iter().zip(&face.alpha) {
+                for (gi, ci) in g.iter_mut().zip(c) {
+                    *gi -= a * ci;
                 }
             }
-            t *= 0.5;
+            let s_max = face.sigma.iter().cloned().fold(0.0_f64, f64::max);
+            let point = Point::with_products(
+                sys,
+                face.sigma.clone(),
+                face.t_sigma.clone(),
+                face.s_sigma.clone(),
+            );
+            let g_s = gap_scale(sys, &point, &face.alpha);
+            let next: Vec<bool> = (0..n)
+                .map(|i| {
+                    if held[i] {
+                        g[i] >= -tol * g_s
+                    } else {
+                        face.sigma[i] < -tol * s_max
+                    }
+                })
+                .collect();
+            let min_free = (0..n)
+                .filter(|&i| !held[i])
+                .map(|i| face.sigma[i])
+                .fold(f64::INFINITY, f64::min);
+            self.record(&held, &next, min_free, face.cg);
+            if next.iter().all(|&b| b) {
+                return Err(infeasible());
+            }
+            if next == held {
+                if !tight {
+                    same = true;
+                    start = face.sigma;
+                    continue;
+                }
+                // Settled: σ* with its specks of tension projected away.
+                let x = project(&face.sigma, &sys.c, &sys.rf).ok_or_else(infeasible)?;
+                let mut p = if x == face.sigma {
+                    point
+                } else {
+                    Point::new(sys, ops, x)
+                };
+                p.alpha = Some(face.alpha);
+                let (g, alpha) = reduced_gradient(sys, &p);
+                let k = kkt(sys, &p, &g, &alpha);
+                if k.natural <= tol {
+                    return Ok(Ok((p, alpha, k, Status::Converged)));
+                }
+                return Ok(Err(p.sigma));
+            }
+            if seen.contains(&next) {
+                // A cycle: hand over to the monotone method.
+                return Ok(Err(face.sigma));
+            }
+            seen.push(held);
+            held = next;
+            same = false;
+            start = face.sigma;
+        }
+        Ok(Err(start))
+    }
+
+    /// The safeguard: a primal active-set method on feasible points (σ ≥ 0, in equilibrium)
+    /// whose objective falls at every step, so no set can return. At σ, the held points are
+    /// those at zero whose gap does not close; the face is solved tightly; if its minimiser
+    /// σ* is feasible it is the next point (and the held points whose gap closes are
+    /// released), otherwise the step goes along σ* − σ as far as σ ≥ 0 allows (the ratio
+    /// test) and the points it reaches zero at are held. A step that cannot move because
+    /// several released points pull each other down is retried releasing only the one whose
+    /// gap is most negative, which a face solve always lifts off zero.
+    fn feasible(&mut self, sys: &mut IterativeSchur, ops: &Operators, last: &[f64]) -> Result<End> {
+        let n = ops.n_sigma();
+        let tol = self.settings.tolerance;
+        let start = project(last, &sys.c, &sys.rf).ok_or_else(infeasible)?;
+        let mut point = Point::new(sys, ops, start);
+        let mut single = false;
+        loop {
+            let (g, alpha) = reduced_gradient(sys, &point);
+            let k = kkt(sys, &point, &g, &alpha);
+            let g_s = gap_scale(sys, &point, &alpha);
+            if k.natural <= tol {
+                return Ok((point, alpha, k, Status::Converged));
+            }
+            if self.iterations >= self.settings.max_iterations {
+                return Ok((
+                    point,
+                    alpha,
+                    k,
+                    Status::IterationLimit {
+                        limit: self.settings.max_iterations,
+                    },
+                ));
+            }
+            let zero: Vec<bool> = point.sigma.iter().map(|&v| v == 0.0).collect();
+            let worst = (0..n)
+                .filter(|&i| zero[i] && g[i] < -tol * g_s)
+                .min_by(|&a, &b| g[a].total_cmp(&g[b]));
+            let held: Vec<bool> = (0..n)
+                .map(|i| zero[i] && (g[i] >= -tol * g_s || (single && Some(i) != worst)))
+                .collect();
+            let face = self.face(sys, ops, &held, &point.sigma, true)?;
+            let d: Vec<f64> = face
+                .sigma
+                .iter()
+                .zip(&point.sigma)
+                .map(|(a, b)| a - b)
+                .collect();
+            let s_max = face.sigma.iter().cloned().fold(0.0_f64, f64::max);
+            let min_free = (0..n)
+                .filter(|&i| !held[i])
+                .map(|i| face.sigma[i])
+                .fold(f64::INFINITY, f64::min);
+            let next = if min_free >= -tol * s_max {
+                let x = project(&face.sigma, &sys.c, &sys.rf).ok_or_else(infeasible)?;
+                let mut p = Point::new(sys, ops, x);
+                p.alpha = Some(face.alpha.clone());
+                single = false;
+                p
+            } else {
+                self.projected_steps += 1;
+                // Ratio test: the longest step along d that keeps σ ≥ 0.
+                let t = (0..n)
+                    .filter(|&i| !held[i] && d[i] < 0.0)
+                    .map(|i| point.sigma[i] / -d[i])
+                    .fold(1.0_f64, f64::min);
+                if t <= 0.0 {
+                    if single {
+                        return Err(Error::numerical(
+                            "matrix-free QP (feasible active set)",
+                            "a face step cannot move from its point: the KKT system is too badly conditioned here; try qp_solver = \"clarabel\"",
+                        ));
+                    }
+                    single = true;
+                    continue;
+                }
+                single = false;
+                let mut x: Vec<f64> = (0..n)
+                    .map(|i| (point.sigma[i] + t * d[i]).max(0.0))
+                    .collect();
+                // Points the step reached zero at, to round-off.
+                for (i, xi) in x.iter_mut().enumerate() {
+                    if d[i] < 0.0 && *xi <= 1e-14 * s_max {
+                        *xi = 0.0;
+                    }
+                }
+                let x = project(&x, &sys.c, &sys.rf).ok_or_else(infeasible)?;
+                Point::new(sys, ops, x)
+            };
+            let after: Vec<bool> = next.sigma.iter().map(|&v| v == 0.0).collect();
+            self.record(&zero, &after, min_free, face.cg);
+            if next.f > point.f + 1e-12 * point.f.abs() {
+                return Err(Error::numerical(
+                    "matrix-free QP (feasible active set)",
+                    "a step raised the objective: the face solves are not accurate enough here; try qp_solver = \"clarabel\"",
+                ));
+            }
+            point = next;
         }
     }
-    Err(Error::numerical(
-        "matrix-free QP (projected search)",
-        "no step along the face direction or the projected gradient decreases the objective: the KKT system is too badly conditioned here; try qp_solver = \"clarabel\"",
-    ))
 }
 
 #[cfg(test)]

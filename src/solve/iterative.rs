@@ -115,7 +115,7 @@ impl Preconditioner {
         t_diag: &[f64],
         c_full: &[Vec<f64>],
         spring_scale: f64,
-        (rows, weights): (&[Vec<(usize, f64)>], &[f64]),
+        (rows, weights): (&Rows, &[f64]),
         held: &[bool],
     ) -> Result<Self> {
         let mut d: Vec<f64> = t_diag.iter().map(|t| spring_scale * t).collect();
@@ -185,6 +185,9 @@ fn key(weights: &[f64]) -> Vec<f64> {
         weights.to_vec()
     }
 }
+
+/// The constraint rows g_k of the penalty, as sparse (node, weight) lists.
+type Rows = [Vec<(usize, f64)>];
 
 /// S p + Σ_k d_k g_k g_kᵀ p, given S p.
 fn penalised(sp: &[f64], rows: &[Vec<(usize, f64)>], weights: &[f64], p: &[f64]) -> Vec<f64> {
@@ -476,6 +479,11 @@ impl IterativeSchur {
             let mut ap = self.apply(ops, rows, weights, &p);
             Self::mask(pre, &mut ap);
             let pap = dot(&p, &ap);
+            if pap == 0.0 && dot(&p, &p) <= f64::MIN_POSITIVE.sqrt() {
+                // Nothing left to move: the free points' equilibrium fixes σ (a plate resting
+                // on as many points as it has rigid modes), the residual is round-off.
+                break;
+            }
             if pap.is_nan() || pap <= 0.0 {
                 return Err(Error::numerical(
                     stage,

@@ -25,7 +25,7 @@ use super::bonded::finite;
 use super::bonded::SchurSystem;
 use super::{discrete_gap, QpDiagnostics, Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
-use crate::method::{Method, QpForm, QpSettings};
+use crate::method::{Method, QpForm, QpSettings, QpSolver};
 use crate::operators::Operators;
 
 /// clarabel's settings for `settings`: quiet, with its tolerances, iteration cap and KKT solver.
@@ -138,6 +138,7 @@ pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
     Ok(Solution {
         method: Method::Qp(QpSettings {
             form: QpForm::Schur,
+            solver: QpSolver::Clarabel,
             ..settings.clone()
         }),
         u,

@@ -224,6 +224,7 @@ pub fn solve_sparse(ops: &Operators, settings: &QpSettings, form: SparseForm) ->
     let gap = discrete_gap(ops, &u, &sigma);
     Ok(Solution {
         method: Method::Qp(QpSettings {
+            solver: crate::method::QpSolver::Clarabel,
             form: match form {
                 SparseForm::Lifted => QpForm::Lifted,
                 SparseForm::Primal => QpForm::Primal,

@@ -4,7 +4,6 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use crate::budget;
 use crate::error::{Error, Result};
 use crate::method::{Method, PenaltySettings};
 use crate::metrics::{loglog_fit, max_abs_diff, rel_l2};
@@ -84,8 +83,13 @@ pub fn eps_sweep(
     for &kind in constraints {
         let mut model = problem.model.clone();
         model.constraint = kind;
-        budget::check(&model, &Method::qp(), problem.memory_limit)?;
-        let ops = Operators::assemble(&model);
+        // The QP reference and every penalty run on one assembly, on the problem's route.
+        let ops = crate::analysis::prepare_shared(
+            &model,
+            &[&Method::qp(), &Method::penalty()],
+            problem.route,
+            problem.memory_limit,
+        )?;
         solve::check_feasible(&ops)?;
         progress(&format!("{}: QP reference", kind.name()));
         let t = Instant::now();

@@ -4,9 +4,8 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use crate::budget;
 use crate::error::{Error, Result};
-use crate::method::{Method, PenaltySettings};
+use crate::method::{Method, PenaltySettings, Route};
 use crate::metrics::{pareto_front, rel_l2};
 use crate::model::Model;
 use crate::operators::Operators;
@@ -123,10 +122,15 @@ pub fn tradeoff(
         .ok_or_else(|| Error::invalid("meshes", "give at least one mesh"))?;
     let limit = problem.memory_limit;
     let qp = Method::qp();
+    let penalty = Method::penalty();
+    // Each mesh's operators on the route `auto` gives the QP and the penalty (the FFT T
+    // beyond the dense size), so both methods reach every mesh.
+    let prepare = |model: &Model| {
+        crate::analysis::prepare_shared(model, &[&qp, &penalty], Route::Auto, limit)
+    };
     let reference_at = |n: usize| -> Result<Vec<f64>> {
         let model = with_mesh(&problem.model, n);
-        budget::check(&model, &qp, limit)?;
-        let ops = Operators::assemble(&model);
+        let ops = prepare(&model)?;
         let sol = solve::solve(&ops, &qp)?;
         Ok(sample_v(&model, &ops, &sol))
     };
@@ -159,15 +163,19 @@ pub fn tradeoff(
     for &n in meshes {
         let model = with_mesh(&problem.model, n);
         let t = Instant::now();
-        let ops = Operators::assemble(&model);
+        let ops = prepare(&model);
         let assemble_s = t.elapsed().as_secs_f64();
         let run = |method: &Method, eps: f64| -> TradeoffPoint {
             let t = Instant::now();
-            let sol = budget::check(&model, method, limit).and_then(|_| solve::solve(&ops, method));
+            let ops = match &ops {
+                Ok(ops) => ops,
+                Err(e) => return tradeoff_point(method.name(), n, eps, f64::NAN, Err(e)),
+            };
+            let sol = solve::solve(ops, method);
             let time_s = assemble_s + t.elapsed().as_secs_f64();
             let outcome = sol
                 .as_ref()
-                .map(|sol| (rel_l2(&sample_v(&model, &ops, sol), &v_ref), sol));
+                .map(|sol| (rel_l2(&sample_v(&model, ops, sol), &v_ref), sol));
             tradeoff_point(method.name(), n, eps, time_s, outcome)
         };
         progress(&format!("QP at {n}"));
