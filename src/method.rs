@@ -265,7 +265,7 @@ pub enum QpSolver {
     Auto,
     /// clarabel's interior-point method on the form of `qp_form`.
     Clarabel,
-    /// The matrix-free primal active-set method with projected search
+    /// The matrix-free primal–dual active-set method with a monotone safeguard
     /// ([`crate::solve::active_set`]): S applied through the operators, never formed; nodal
     /// constraints only.
     ActiveSet,

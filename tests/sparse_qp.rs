@@ -333,9 +333,10 @@ fn iteration_cap_is_a_status() {
     }
 }
 
-/// `Method::qp()` (form auto) takes the primal form on Winkler soil and the dense Schur form on a
-/// half-space, and the memory budget follows the form: a 400 × 400 Winkler QP is estimated far
-/// below 4 GiB (measured peak 482 MiB), while its dense Schur form needs more than 16 GiB.
+/// `Method::qp()` (solver and form auto) takes the matrix-free active-set solver on Winkler soil
+/// with nodal constraints and clarabel on the dense Schur form on a half-space, and the memory
+/// budget follows: a 400 × 400 Winkler QP is estimated far below 4 GiB (measured peak 482 MiB),
+/// while its dense Schur form needs more than 16 GiB.
 #[test]
 fn auto_form_and_memory_follow_the_foundation() {
     use liftoff::method::{Method, QpForm};
@@ -351,13 +352,17 @@ fn auto_form_and_memory_follow_the_foundation() {
         m.elements = [n, n];
         m
     };
-    for (found, want) in [("winkler", QpForm::Primal), ("half-space", QpForm::Schur)] {
+    use liftoff::method::QpSolver;
+    for (found, want) in [
+        ("winkler", (QpSolver::ActiveSet, QpForm::Auto)),
+        ("half-space", (QpSolver::Clarabel, QpForm::Schur)),
+    ] {
         let model = scene(found, 16);
         let ops = Operators::assemble(&model);
         let s = liftoff::solve(&ops, &Method::qp()).expect("qp");
         assert!(s.status.converged(), "{found}: {}", s.status.describe());
         match &s.method {
-            Method::Qp(q) => assert_eq!(q.form, want, "{found}"),
+            Method::Qp(q) => assert_eq!((q.solver, q.form), want, "{found}"),
             other => panic!("{found}: {other:?}"),
         }
     }

@@ -271,7 +271,14 @@ fn stability_sweep_rows_and_outcomes() {
                 "{what}: contact fraction {}",
                 r.contact_fraction
             );
-            assert!(r.iterations >= 1, "{what}");
+            // A plate balanced on one node (a point load on a Winkler corner) has one
+            // feasible pressure, the active-set QP's starting point: it is checked, no face
+            // solve needed (0 iterations), and it carries next to no contact area.
+            assert!(
+                r.iterations >= 1 || (r.method == "qp" && r.contact_fraction < 0.01),
+                "{what}: {} iterations",
+                r.iterations
+            );
             if r.method == "qp" {
                 assert!(
                     r.min_pressure >= -1e-9,

@@ -1,5 +1,5 @@
-//! The unbonded QP without any dense matrix: a primal active-set method with projected search,
-//! its inner solves by projected PCG through the operators ([`super::iterative`]).
+//! The unbonded QP without any dense matrix: a primal–dual active-set method with a monotone
+//! safeguard, its inner solves by projected PCG through the operators ([`super::iterative`]).
 //!
 //! The problem is the QP of [`super::qp`] with nodal constraints,
 //!
@@ -10,28 +10,26 @@
 //! conditions: with α the rigid-body amplitudes, the gap g = Sσ − h − Cα satisfies g ≥ 0,
 //! σ·g = 0.
 //!
-//! **The iteration.** Every iterate is feasible (σ ≥ 0 and on the equilibrium). At σ, with α
-//! the least-squares multiplier on the points in contact (σᵢ > 0), the points held at zero are
-//! those where σᵢ = 0 and the gap does not close, gᵢ ≥ −τ; the others are free.
-//! 1. *Face solve*: σ* minimises f on the free points with the held ones at zero, on the
-//!    equilibrium ([`IterativeSchur::solve_face`], warm-started at σ).
-//! 2. *Step*: if σ* ≥ 0 it is the next iterate (the minimiser on that face). Otherwise the next
-//!    iterate is the projection P(σ + t(σ* − σ)) onto {σ ≥ 0, Cᵀσ = Rᵀf} with the first
-//!    t = 1, ½, ¼, … that decreases f enough (Armijo on the projected path). Clipping removes
-//!    the negative pressures of σ* all at once (a penalty iteration's "lift these points"), and
-//!    the projection's shift along C keeps the plate in equilibrium.
-//! 3. Stop when the KKT conditions hold to the tolerance after a tight face solve:
-//!    |min(σᵢ/σ_max, gᵢ/g_s)| ≤ τ at every point (the natural residual, g_s the largest
-//!    of |Tσ|, |Sσ|, |h| and |Cα|, the terms of g) — exact complementarity to solver
-//!    tolerance, no ε̄.
+//! **The iteration.** Two phases, both on face solves ([`IterativeSchur::solve_face`]: f
+//! minimised on the equilibrium with a held set of points at zero, warm-started).
+//! 1. *Primal–dual active set* (semismooth Newton on the natural residual): from the feasible
+//!    point nearest σ = 0, hold the points at zero whose gap does not close, solve the face,
+//!    then hold the free points whose pressure came out negative and release the held points
+//!    whose gap came out negative. It is the penalty iteration with ε̄ = 0 — "solve, then lift
+//!    the points in tension, put back those that penetrate" — and takes as few steps. Face
+//!    solves are loose (the set only has to be found) until the set repeats, then tight. When
+//!    the set repeats after a tight solve and σ* ≥ 0, σ* is the solution.
+//! 2. *Safeguard*: on a matrix that is not an M-matrix (neither the 1/r flexibility nor the
+//!    plate is one) that update can cycle, like the penalty iteration. A set met before hands
+//!    over to a primal active-set method on feasible points (σ ≥ 0 and on the equilibrium)
+//!    with a ratio test ([`Run::feasible`]): f falls at every step, so no set can return and
+//!    the iteration ends in finitely many steps, each a tight face solve.
 //!
-//! Every iterate decreases f (the face solve from a point of its face cannot increase it, and
-//! the projected search demands a decrease), so a set can never return: the iteration cannot
-//! cycle, which the penalty iteration and a plain primal–dual active-set (semismooth Newton)
-//! update can on a matrix that is not an M-matrix — and neither the 1/r flexibility nor the
-//! plate is one. With the full step accepted (the usual case) one iteration is the penalty
-//! iteration's "solve, then lift the points in tension" with ε̄ = 0. Face solves are loose
-//! (the set only has to be found) until the held set repeats, then tight.
+//! It stops when the KKT conditions hold to the tolerance: |min(σᵢ/σ_max, gᵢ/g_s)| ≤ τ at every
+//! point (the natural residual, g_s the largest of |Tσ|, |Sσ|, |h| and |Cα|, the terms of g) —
+//! exact complementarity to solver tolerance, no ε̄. Where the points in contact do not fix the
+//! rigid modes (a plate balanced on one node), α is the face's multiplier, or the smallest turn
+//! that keeps every lifted point above the soil ([`least_turn`]).
 //!
 //! **Preconditioner.** On Winkler soil T is diagonal and the coupling lumped, so the
 //! preconditioner of the iterative route, M = D + QᵀK⁻Q, with D = T and the model's own plate
@@ -81,7 +79,7 @@ pub struct ActiveSetDiagnostics {
     pub products: usize,
     /// Preconditioner factorisations (one per new held set).
     pub factorisations: usize,
-    /// Face steps that needed the projected search (σ* had negative pressures).
+    /// Safeguard steps cut short by the ratio test (σ* had negative pressures).
     pub projected_steps: usize,
     /// Objective ½σᵀSσ − hᵀσ at the solution.
     pub objective: f64,

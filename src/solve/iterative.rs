@@ -263,9 +263,17 @@ impl IterativeSchur {
         let rf = ops.rigid.iter().map(|r| dot(r, &ops.f)).collect();
         let t_diag = ops.t.diagonal();
         // The plate's factor and the preconditioner of the bonded problem (where the penalty
-        // and the active-set iteration both start) are independent: one on each core.
-        let (kinv, time_plate, springs) = std::thread::scope(|s| {
-            let bonded = s.spawn(|| -> Result<(SpringPlate, Preconditioner)> {
+        // and the active-set iteration both start) are independent: one on each core. By
+        // rayon::join, not OS threads: a caller on a rayon worker (combinations run in
+        // parallel) would otherwise block it while the factorisations' own rayon jobs wait
+        // for a free worker — a deadlock.
+        let ((kinv, time_plate), springs) = rayon::join(
+            || {
+                let t0 = Instant::now();
+                let kinv = PlateInverse::new(ops);
+                (kinv, t0.elapsed().as_secs_f64())
+            },
+            || -> Result<(SpringPlate, Preconditioner)> {
                 let springs = SpringPlate::new(ops, settings.coarse_plate)?;
                 let pre = Preconditioner::new(
                     &springs,
@@ -276,15 +284,8 @@ impl IterativeSchur {
                     &[],
                 )?;
                 Ok((springs, pre))
-            });
-            let t0 = Instant::now();
-            let kinv = PlateInverse::new(ops);
-            let time_plate = t0.elapsed().as_secs_f64();
-            match bonded.join() {
-                Ok(springs) => (kinv, time_plate, springs),
-                Err(panic) => std::panic::resume_unwind(panic),
-            }
-        });
+            },
+        );
         let kinv = kinv?;
         let (springs, bonded) = springs?;
         let exact = matches!(ops.t.as_ref(), Compliance::Diagonal(_))
@@ -320,14 +321,10 @@ impl IterativeSchur {
         self.products += 1;
         // The product with T and the plate solve are independent: one on each core.
         let kinv = &self.kinv;
-        let (tp, plate) = std::thread::scope(|s| {
-            let t = s.spawn(|| ops.t.apply(p));
-            let plate = ops.bt_times(&kinv.apply(&ops.b_times(p)));
-            match t.join() {
-                Ok(y) => (y, plate),
-                Err(panic) => std::panic::resume_unwind(panic),
-            }
-        });
+        let (tp, plate) = rayon::join(
+            || ops.t.apply(p),
+            || ops.bt_times(&kinv.apply(&ops.b_times(p))),
+        );
         let sp = tp.iter().zip(&plate).map(|(a, b)| a + b).collect();
         (tp, sp)
     }
