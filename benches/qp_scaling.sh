@@ -7,6 +7,7 @@
 #
 # Extra CLI options for both methods go in $OPTS (e.g. OPTS="--symmetry none").
 set -euo pipefail
+OPTS=${OPTS:-}
 bin=${LIFTOFF:-target/release/liftoff}
 scene=$1; shift
 echo "| elements | method | solver | converged | iterations | inner CG | wall s | solve s | peak RSS MiB | V_max |"
@@ -16,7 +17,7 @@ for n in "$@"; do
     out=$(mktemp); tim=$(mktemp)
     # shellcheck disable=SC2086
     /usr/bin/time -f "%e %M" -o "$tim" "$bin" solve "$scene" --method "$method" --mesh "$n,$n" $OPTS --json >"$out" 2>/dev/null || true
-    read -r wall rss <"$tim"
+    read -r wall rss < <(tail -n 1 "$tim")
     python3 - "$out" "$n" "$method" "$wall" "$rss" <<'PY'
 import json, sys
 path, n, method, wall, rss = sys.argv[1:]

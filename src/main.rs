@@ -289,6 +289,10 @@ impl From<Error> for Failure {
                 exit::INFEASIBLE,
                 "\nhint: bonded contact (--contact bonded) lets the foundation pull",
             ),
+            Error::Numerical { stage, .. } if stage.contains("QP") => (
+                exit::SOLVER,
+                "\nhint: --method penalty, or the other --qp-solver where it applies (clarabel needs the dense route or Winkler soil)",
+            ),
             Error::Numerical { .. } => (exit::SOLVER, "\nhint: --method qp, or a coarser --mesh"),
             Error::Io { .. } => (exit::IO, ""),
         };

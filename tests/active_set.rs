@@ -90,7 +90,7 @@ fn equals_clarabel_on_the_paper_halfspace_case() {
     let text = paper_halfspace();
     let clarabel = qp(QpSolver::Clarabel);
     let active = qp(QpSolver::ActiveSet);
-    for (mesh, symmetry) in [(32, "none"), (32, "auto"), (64, "auto")] {
+    for (mesh, symmetry) in [(32, "none"), (32, "auto"), (64, "none"), (64, "auto")] {
         let p = problem(&text, mesh, symmetry);
         let ops = Operators::assemble(&p.model);
         let what = format!("half-space {mesh} per side, {symmetry}");

@@ -159,6 +159,13 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
             get("schur_products"),
             get("factorisations")
         ));
+        let safeguard = get("safeguard_steps");
+        if safeguard > 0.0 {
+            l.push(format!(
+                "  safeguard  : the primal–dual sets cycled; {safeguard:.0} of the face solves by the monotone primal active set ({:.0} cut by its ratio test)",
+                get("projected_steps")
+            ));
+        }
         l.push(format!(
             "  KKT        : natural residual {:.1e} (gap {:.1e}, penetration {:.1e}, σ·gap {:.1e}), equilibrium {:.1e}",
             get("kkt_natural"),
