@@ -3,7 +3,7 @@
 //! Run with `cargo bench --bench solvers`; results and the machine are in BENCHMARKS.md.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
-use liftoff::method::{KktSolver, Method};
+use liftoff::method::{KktSolver, Method, QpSolver};
 use liftoff::solve::{self, qp};
 use liftoff::{Operators, Problem};
 
@@ -36,8 +36,19 @@ fn winkler(c: &mut Criterion) {
         g.bench_with_input(BenchmarkId::new("penalty-solve", n), &ops, |b, ops| {
             b.iter(|| solve::solve(ops, &Method::penalty()).expect("solve"))
         });
+        // The QP by the matrix-free active-set solver (auto's choice on Winkler soil).
+        g.bench_with_input(BenchmarkId::new("qp-active-set", n), &ops, |b, ops| {
+            b.iter(|| solve::solve(ops, &qp(QpSolver::ActiveSet)).expect("solve"))
+        });
     }
     g.finish();
+}
+
+fn qp(solver: QpSolver) -> Method {
+    Method::Qp(liftoff::QpSettings {
+        solver,
+        ..Default::default()
+    })
 }
 
 fn half_space(c: &mut Criterion) {
@@ -59,6 +70,12 @@ fn half_space(c: &mut Criterion) {
             BenchmarkId::new("penalty-solve-iterative", n),
             &iterative,
             |b, ops| b.iter(|| solve::solve(ops, &Method::penalty()).expect("solve")),
+        );
+        // The QP on the same iterative operators: the matrix-free active-set solver.
+        g.bench_with_input(
+            BenchmarkId::new("qp-active-set-iterative", n),
+            &iterative,
+            |b, ops| b.iter(|| solve::solve(ops, &qp(QpSolver::ActiveSet)).expect("solve")),
         );
         for kkt in [KktSolver::Faer, KktSolver::Qdldl] {
             let s = liftoff::QpSettings {
