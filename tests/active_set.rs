@@ -82,6 +82,7 @@ fn agree(what: &str, ops: &Operators, clarabel: &Method, active: &Method) -> (f6
             );
         }
     }
+    eprintln!("{what}: Δσ {ds:.1e} of the peak, ΔV {dv:.1e} of its peak");
     (ds, dv)
 }
 
@@ -94,8 +95,7 @@ fn equals_clarabel_on_the_paper_halfspace_case() {
         let p = problem(&text, mesh, symmetry);
         let ops = Operators::assemble(&p.model);
         let what = format!("half-space {mesh} per side, {symmetry}");
-        let (ds, dv) = agree(&what, &ops, &clarabel, &active);
-        eprintln!("{what}: Δσ {ds:.1e}, ΔV {dv:.1e}");
+        agree(&what, &ops, &clarabel, &active);
     }
 }
 
@@ -211,6 +211,7 @@ fn equals_clarabel_on_every_combination() {
         assert!(ds <= SIGMA, "{}: σ differs by {ds:.1e}", a.name);
         let dv = (oa.summary.V_max - ob.summary.V_max).abs() / oa.summary.V_max.abs();
         assert!(dv <= V, "{}: V_max differs by {dv:.1e}", a.name);
+        eprintln!("{}: Δσ {ds:.1e} of the peak, ΔV_max {dv:.1e}", a.name);
     }
 }
 
