@@ -5,7 +5,7 @@ use std::path::Path;
 use plotters::style::RGBColor;
 
 use super::cases::{foundation_label, FOUNDATIONS};
-use super::run::Solved;
+use super::solved::Solved;
 use super::{LoadCondition2, PaperFigure};
 use crate::error::Result;
 use crate::foundation::FoundationKind;

@@ -41,6 +41,7 @@ mod cases;
 mod figures;
 mod markdown;
 mod run;
+mod solved;
 
 pub use cases::LoadCondition2;
 pub use markdown::write_markdown;

@@ -4,6 +4,7 @@ use std::path::Path;
 use std::time::Instant;
 
 use super::cases::{cases, paper_penalty, Case, FOUNDATIONS};
+use super::solved::Solved;
 use super::{
     figures, levels, paper_quarter_elements, write_markdown, BondedComparison, FoundationAgreement,
     KeyNumbers, PaperFigure, PaperOptions, PaperParameters, PaperReport, PaperRun, DELTA,
@@ -16,15 +17,8 @@ use crate::method::{Contact, MethodKind};
 use crate::metrics::{rel_l2 as rel_rms, rel_max};
 use crate::model::ConstraintPoints;
 use crate::output::Staged;
-use crate::post::{FullField, Report};
+use crate::post::FullField;
 use crate::solve::Status;
-
-/// A solved case: its numbers and, for the drawing, its fields.
-pub(super) struct Solved {
-    pub(super) case: Case,
-    pub(super) run: PaperRun,
-    pub(super) report: Report,
-}
 
 fn solve_case(
     case: &Case,

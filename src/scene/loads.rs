@@ -2,8 +2,8 @@
 //! the Winkler zones and the allowable pressure — in unit geometry with magnitudes not yet
 //! divided by P, since every combination has its own P ([`super::validate`] does that).
 
+use super::numbers::finite_positive;
 use super::spec::{Coord, LoadKind, LoadSpec};
-use super::validate::finite_positive;
 use super::SceneFile;
 use crate::error::{Error, Result};
 use crate::foundation::FoundationKind;

@@ -12,6 +12,7 @@
 
 pub mod builder;
 mod loads;
+mod numbers;
 pub mod spec;
 pub mod validate;
 

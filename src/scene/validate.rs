@@ -5,6 +5,7 @@ use super::loads::{
     normalise, raw_allowable, raw_loads, raw_voids, voids_for, zones, RawLoad, RawVoid, Thermal,
     DEFAULT_CASE,
 };
+pub(super) use super::numbers::finite_positive;
 use super::spec::{MeshSpec, PenaltySpec, SolverSpec};
 use super::{Combination, Problem, SceneFile};
 use crate::budget::default_memory_limit;
@@ -30,22 +31,6 @@ fn aspect_ratio(field: &str, mu: f64) -> Result<f64> {
         ));
     }
     Ok(mu)
-}
-
-pub(super) fn finite_positive(field: &str, v: f64, unit: &str) -> Result<f64> {
-    if !v.is_finite() {
-        return Err(Error::invalid(
-            field,
-            format!("must be a finite number, got {v}"),
-        ));
-    }
-    if v <= 0.0 {
-        return Err(Error::invalid(
-            field,
-            format!("must be positive ({unit}), got {v}"),
-        ));
-    }
-    Ok(v)
 }
 
 fn poisson(field: &str, v: f64) -> Result<f64> {

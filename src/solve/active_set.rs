@@ -44,9 +44,9 @@
 
 use std::time::Instant;
 
-use super::bonded::{dot, finite};
 use super::iterative::{CgReport, Face, IterativeSchur};
 use super::linalg::SmallSpd;
+use super::linalg::{dot, finite};
 use super::{discrete_gap, Iteration, Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;

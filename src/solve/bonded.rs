@@ -17,7 +17,8 @@ use std::time::Instant;
 use faer::Mat;
 
 use super::linalg::{
-    dense_cholesky, schur_complement, sparse_solve, PlateInverse, SparseCholesky, SpdSolve,
+    dense_cholesky, displacements, dot, finite, schur_complement, sparse_solve, PlateInverse,
+    SparseCholesky, SpdSolve,
 };
 use super::{discrete_gap, Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
@@ -177,24 +178,6 @@ impl SchurSystem {
     }
 }
 
-/// Displacements from pressures and rigid amplitudes: u = K⁻(f − Bσ) + Rα.
-pub fn displacements(
-    ops: &Operators,
-    kinv: &PlateInverse,
-    sigma: &[f64],
-    alpha: &[f64],
-) -> Vec<f64> {
-    let bs = ops.b_times(sigma);
-    let r: Vec<f64> = ops.f.iter().zip(&bs).map(|(f, b)| f - b).collect();
-    let mut u = kinv.apply(&r);
-    for (mode, &a) in ops.rigid.iter().zip(alpha) {
-        for (ui, ri) in u.iter_mut().zip(mode) {
-            *ui += a * ri;
-        }
-    }
-    u
-}
-
 /// The solution of a bonded solve: displacements, pressures, their gap and rigid amplitudes.
 fn bonded_solution(
     ops: &Operators,
@@ -290,20 +273,4 @@ fn solve_iterative(ops: &Operators) -> Result<Solution> {
         ..SolveInfo::default()
     };
     Ok(bonded_solution(ops, u, sigma, alpha, info))
-}
-
-/// Dot product.
-pub fn dot(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
-}
-
-/// Error if any entry is not finite.
-pub fn finite(v: &[f64], stage: &str) -> Result<()> {
-    match v.iter().position(|x| !x.is_finite()) {
-        Some(i) => Err(Error::numerical(
-            stage,
-            format!("non-finite value at unknown {i}: the system is singular or overflowed"),
-        )),
-        None => Ok(()),
-    }
 }

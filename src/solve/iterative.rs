@@ -37,7 +37,7 @@
 
 use std::time::Instant;
 
-use super::bonded::dot;
+use super::linalg::dot;
 use super::linalg::{PlateInverse, SmallSpd, SparseFactor};
 use super::springs::SpringPlate;
 use crate::error::{Error, Result};
@@ -608,7 +608,7 @@ impl IterativeSchur {
 
     /// u = K⁻(f − Bσ) + Rα.
     pub fn displacements(&self, ops: &Operators, sigma: &[f64], alpha: &[f64]) -> Vec<f64> {
-        super::bonded::displacements(ops, &self.kinv, sigma, alpha)
+        super::linalg::displacements(ops, &self.kinv, sigma, alpha)
     }
 
     /// Whether the preconditioner is the matrix itself (so a tight solve costs about one CG

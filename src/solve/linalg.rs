@@ -408,3 +408,37 @@ impl SmallSpd {
         self.inverse_values.iter().filter(|&&v| v != 0.0).count()
     }
 }
+
+/// Displacements from pressures and rigid amplitudes: u = K⁻(f − Bσ) + Rα.
+pub fn displacements(
+    ops: &Operators,
+    kinv: &PlateInverse,
+    sigma: &[f64],
+    alpha: &[f64],
+) -> Vec<f64> {
+    let bs = ops.b_times(sigma);
+    let r: Vec<f64> = ops.f.iter().zip(&bs).map(|(f, b)| f - b).collect();
+    let mut u = kinv.apply(&r);
+    for (mode, &a) in ops.rigid.iter().zip(alpha) {
+        for (ui, ri) in u.iter_mut().zip(mode) {
+            *ui += a * ri;
+        }
+    }
+    u
+}
+
+/// Dot product.
+pub fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+/// Error if any entry is not finite.
+pub fn finite(v: &[f64], stage: &str) -> Result<()> {
+    match v.iter().position(|x| !x.is_finite()) {
+        Some(i) => Err(Error::numerical(
+            stage,
+            format!("non-finite value at unknown {i}: the system is singular or overflowed"),
+        )),
+        None => Ok(()),
+    }
+}

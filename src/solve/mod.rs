@@ -356,7 +356,7 @@ pub fn check_equilibrium(ops: &Operators, sol: &Solution) -> Result<()> {
 /// A tensionless foundation can only balance a net downward load whose line of action passes
 /// through the plate: check the rigid-body components of the load before solving.
 pub fn check_feasible(ops: &Operators) -> Result<()> {
-    let rf: Vec<f64> = ops.rigid.iter().map(|r| bonded::dot(r, &ops.f)).collect();
+    let rf: Vec<f64> = ops.rigid.iter().map(|r| linalg::dot(r, &ops.f)).collect();
     let total = rf[0];
     let scale: f64 = ops.f.iter().map(|v| v.abs()).sum();
     if total <= 1e-12 * scale {

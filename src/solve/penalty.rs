@@ -18,7 +18,7 @@
 
 use std::time::Instant;
 
-use super::bonded::finite;
+use super::linalg::finite;
 pub use super::penalty_step::WOODBURY_MAX_RANK;
 use super::penalty_step::{constraint_rows, Backend};
 use super::{discrete_gap, Iteration, PenaltyStage, Solution, SolveInfo, Status, Timings};

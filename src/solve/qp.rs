@@ -21,8 +21,8 @@ use clarabel::solver::{
     DefaultSettings, DefaultSettingsBuilder, DefaultSolver, IPSolver, SolverStatus, SupportedConeT,
 };
 
-use super::bonded::finite;
 use super::bonded::SchurSystem;
+use super::linalg::finite;
 use super::{discrete_gap, QpDiagnostics, Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
 use crate::method::{Method, QpForm, QpSettings, QpSolver};

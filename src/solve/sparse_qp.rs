@@ -63,7 +63,7 @@ use std::time::Instant;
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSolver, IPSolver, SolverStatus, SupportedConeT};
 
-use super::bonded::finite;
+use super::linalg::finite;
 use super::qp::{clarabel_settings, diagnostics};
 use super::{discrete_gap, Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};

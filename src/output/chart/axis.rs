@@ -1,5 +1,12 @@
-//! Axes: padded linear ranges, the finite extent of coordinates, tick labels, and logarithmic
-//! axes with their decade ticks and superscript labels.
+//! Axes: padded linear ranges, the finite extent of coordinates, tick labels, logarithmic
+//! axes with their decade ticks and superscript labels, and the plan-view chart type.
+
+use plotters::chart::ChartContext;
+use plotters::coord::cartesian::Cartesian2d;
+use plotters::coord::types::RangedCoordf64;
+
+/// A plan-view chart in the plate's coordinates.
+pub(super) type Plan<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
 /// Finite range of `values` including `always` (if given), padded by 5 % on both sides and
 /// never empty: a single value v gets ±10 % of |v| (±1 for 0); no finite value gives (−1, 1).

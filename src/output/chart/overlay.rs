@@ -6,7 +6,7 @@ use plotters::coord::Shift;
 use plotters::element::{DashedPathElement, DottedPathElement};
 use plotters::prelude::*;
 
-use super::plan::Plan;
+use super::axis::Plan;
 use super::style;
 use super::{txt, DrawResult};
 use crate::post::exceed::{self, Point};

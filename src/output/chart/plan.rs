@@ -1,12 +1,11 @@
 //! Plan views of the plate drawn to equal scale on x and y, and the colour map they share: cells
 //! coloured by a value, a colour bar, the contact boundary, an [`Overlay`] and its legend.
 
-use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::axis::{finite_extent, tick_format};
+use super::axis::{finite_extent, tick_format, Plan};
 use super::overlay::{draw_exceedance, draw_features, Overlay, Swatch, SWATCH_W};
 use super::style::{self, DESC_FONT, LABEL_FONT};
 use super::units::Scale;
@@ -19,9 +18,6 @@ pub(super) const MARGIN: i32 = 15;
 pub(super) const X_AREA: i32 = 50;
 /// Width of the y label area, pixels.
 pub(super) const Y_AREA: i32 = 70;
-
-/// A plan-view chart in the plate's coordinates.
-pub(super) type Plan<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
 /// Axes for the rectangle [x0, x1] × [y0, y1] on `area` with equal scales on x and y, centred;
 /// also returns the vertical room left above and below the drawing, pixels.

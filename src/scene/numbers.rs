@@ -1,0 +1,20 @@
+//! Checks of single numbers shared by the scene's readers ([`super::validate`], [`super::loads`]).
+
+use crate::error::{Error, Result};
+
+/// `v` if it is finite and positive, else an error naming `field` and the `unit` expected.
+pub(super) fn finite_positive(field: &str, v: f64, unit: &str) -> Result<f64> {
+    if !v.is_finite() {
+        return Err(Error::invalid(
+            field,
+            format!("must be a finite number, got {v}"),
+        ));
+    }
+    if v <= 0.0 {
+        return Err(Error::invalid(
+            field,
+            format!("must be positive ({unit}), got {v}"),
+        ));
+    }
+    Ok(v)
+}
