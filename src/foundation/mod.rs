@@ -4,8 +4,11 @@
 //! The pressure σ is interpolated with the same bilinear functions f_i as the deflection, one
 //! unknown per model node. The discrete gap is g = Tσ − Bᵀu and the plate feels the load −Bσ.
 
+pub mod boussinesq;
 pub mod fft;
 pub mod halfspace;
+pub mod kernel;
+pub mod pairs;
 pub mod winkler;
 
 use crate::mesh::{Dof, DofMap, Mesh};
