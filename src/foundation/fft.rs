@@ -455,8 +455,8 @@ pub fn toeplitz_bytes(mesh: &Mesh) -> usize {
 mod tests {
     use super::*;
 
-    fn dense(mesh: &Mesh, c: f64) -> faer::Mat<f64> {
-        pairs::dense_matrix(mesh, c, &Kernel::Boussinesq)
+    fn dense(mesh: &Mesh, c: f64, kernel: &Kernel) -> faer::Mat<f64> {
+        pairs::dense_matrix(mesh, c, kernel)
     }
 
     /// A reproducible field with both signs and no symmetry.
@@ -472,15 +472,27 @@ mod tests {
             .collect()
     }
 
-    /// The FFT product equals the dense product of `halfspace::compliance` (an independent
-    /// scatter of the same pair table) to round-off: the FFT's error is ~1e-16 × log N × max|T|·|x|.
+    /// The FFT product equals the dense product of `pairs::dense_matrix` (an independent
+    /// scatter of the same pair table), for the half-space and Pasternak kernels, to round-off: the FFT's error is ~1e-16 × log N × max|T|·|x|.
     fn check(a: f64, b: f64, full: [usize; 2], sym_x: bool, sym_y: bool) {
+        check_kernel(a, b, full, sym_x, sym_y, &Kernel::Boussinesq);
+        // A Pasternak kernel decaying within the plate (λ = 0.3) and one reaching beyond it.
+        for lambda in [0.3, 3.0] {
+            check_kernel(a, b, full, sym_x, sym_y, &Kernel::Pasternak { lambda });
+        }
+    }
+
+    fn check_kernel(a: f64, b: f64, full: [usize; 2], sym_x: bool, sym_y: bool, kernel: &Kernel) {
         let mesh = Mesh::new(a, b, full, sym_x, sym_y);
         let c = 0.37;
-        let t = dense(&mesh, c);
-        let op = ToeplitzCompliance::new(&mesh, c);
+        let t = dense(&mesh, c, kernel);
+        let op = ToeplitzCompliance::with_kernel(&mesh, c, kernel);
         let n = mesh.n_nodes();
-        let name = format!("{full:?} {} (μ = {})", mesh.symmetry_name(), b / a);
+        let name = format!(
+            "{kernel:?} {full:?} {} (μ = {})",
+            mesh.symmetry_name(),
+            b / a
+        );
         for seed in [1, 2] {
             let x = field(n, seed);
             let y = op.apply(&x);

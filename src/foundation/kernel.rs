@@ -195,21 +195,28 @@ fn generic_pair_block(k: &Kernel, di: usize, dj: usize, hx: f64, hy: f64) -> [[f
             return out;
         }
     }
-    // Correlation weights W_ab(t) = Cx(t_x) Cy(t_y).
-    let weight = |a: usize, b: usize, tx: f64, ty: f64| {
-        let (pa, qa) = hat(a);
-        let (pb, qb) = hat(b);
-        correlation(pa, pb, tx, hx) * correlation(qa, qb, ty, hy)
-    };
+    // Correlation weights W_ab(t) = Cx_{p_a p_b}(t_x) Cy_{q_a q_b}(t_y): four 1-D correlations
+    // per direction and point.
+    let hats: [(usize, usize); 4] = [hat(0), hat(1), hat(2), hat(3)];
     let add = |tx: f64, ty: f64, w: f64, out: &mut [[f64; 4]; 4]| {
         let rho = ((dx + tx).powi(2) + (dy + ty).powi(2)).sqrt();
         let kv = w * k.value(rho);
         if kv == 0.0 {
             return;
         }
+        let mut cxs = [[0.0; 2]; 2];
+        let mut cys = [[0.0; 2]; 2];
+        for p in 0..2 {
+            for q in 0..2 {
+                cxs[p][q] = correlation(p, q, tx, hx);
+                cys[p][q] = correlation(p, q, ty, hy);
+            }
+        }
         for (a, row) in out.iter_mut().enumerate() {
+            let (pa, qa) = hats[a];
             for (b, v) in row.iter_mut().enumerate() {
-                *v += kv * weight(a, b, tx, ty);
+                let (pb, qb) = hats[b];
+                *v += kv * cxs[pa][pb] * cys[qa][qb];
             }
         }
     };
@@ -243,7 +250,19 @@ fn generic_pair_block(k: &Kernel, di: usize, dj: usize, hx: f64, hy: f64) -> [[f
                 }
             } else {
                 // Smooth over the quadrant: composite Gauss, finer where the kernel varies
-                // faster than the element (Pasternak with λ < h), order by distance.
+                // faster than the element (Pasternak with λ < h), order by distance. Such a
+                // quadrant lies at least min(hx, hy) from the singular point; beyond the
+                // support it adds nothing. The sub-cells stop refining at 16 per side: that
+                // happens for λ < h/8, where the cells are at most 2λ... 6λ wide for 10 Gauss
+                // points (exponential decay over a few λ integrates to ~1e−10 of the cell) and
+                // the kernel there is below e^{−8} of its value at λ.
+                let near_x = (x0 + dx).max(0.0).max(-(x1 + dx));
+                let near_y = (y0 + dy).max(0.0).max(-(y1 + dy));
+                if let Some(s) = k.support() {
+                    if (near_x * near_x + near_y * near_y).sqrt() > s {
+                        continue;
+                    }
+                }
                 let dist = ((dx.abs() - hx).max(0.0).powi(2) + (dy.abs() - hy).max(0.0).powi(2))
                     .sqrt()
                     / h;
@@ -254,7 +273,7 @@ fn generic_pair_block(k: &Kernel, di: usize, dj: usize, hx: f64, hy: f64) -> [[f
                 } else {
                     4
                 };
-                let sub = ((2.0 * h / scale).ceil() as usize).clamp(1, 64);
+                let sub = ((2.0 * h / scale).ceil() as usize).clamp(1, 16);
                 let g = rule(order);
                 for ix in 0..sub {
                     let (a0, a1) = (
