@@ -42,7 +42,7 @@ pub fn dense_schur(
             s.resolve(foundation, constraint, false) == QpSolver::Clarabel
                 && s.form.is_dense(foundation)
         }
-        _ => foundation == FoundationKind::HalfSpace,
+        _ => !foundation.is_local(),
     }
 }
 
@@ -81,9 +81,10 @@ pub fn operator_bytes(mesh: &Mesh, foundation: FoundationKind) -> f64 {
     let n = mesh.n_nodes() as f64;
     let n_eq = 3.0 * n;
     let sparse = n_eq * 81.0 * 32.0 + 31.0 * n_eq * n.max(2.0).log2() * 16.0;
-    let dense_t = match foundation {
-        FoundationKind::HalfSpace => n * n * 8.0,
-        FoundationKind::Winkler => 0.0,
+    let dense_t = if foundation.is_local() {
+        0.0
+    } else {
+        n * n * 8.0
     };
     sparse + dense_t
 }
@@ -101,11 +102,7 @@ pub fn estimate_bytes(
     if dense_schur(foundation, constraint, method) {
         // The Schur complement S, its penalised copy and factor (and T where the operators do
         // not hold it already), plus a 256-column block of K⁻B.
-        let t_held = if foundation == FoundationKind::HalfSpace {
-            1.0
-        } else {
-            0.0
-        };
+        let t_held = if !foundation.is_local() { 1.0 } else { 0.0 };
         bytes += (4.0 - t_held) * n * n * 8.0 + n_eq * 256.0 * 8.0;
     }
     if let Method::Qp(s) = method {
@@ -143,7 +140,7 @@ pub fn iterative_bytes(mesh: &Mesh) -> f64 {
 pub fn toeplitz(model: &Model, method: &Method, route: Route) -> Result<bool> {
     let (mesh, _) = model.plan_mesh();
     let iterative = route.iterative(mesh.n_nodes(), method, model.constraint)?;
-    Ok(iterative && model.groups.foundation == FoundationKind::HalfSpace)
+    Ok(iterative && !model.groups.foundation.is_local())
 }
 
 /// Refuse a (model, method) pair that will not fit in `limit` bytes on `route`; returns whether

@@ -68,7 +68,7 @@ pub fn analyse(problem: &Problem, progress: &(dyn Fn(&str) + Sync)) -> Result<Co
     // Combinations run side by side: each needs its own factorisation.
     let parallel = rayon::current_num_threads().min(models.len()).max(1) as f64;
     // The route of `[solver] route` (the half-space T by FFT beyond the size `auto` allows).
-    let toeplitz = first.groups.foundation == crate::foundation::FoundationKind::HalfSpace
+    let toeplitz = !first.groups.foundation.is_local()
         && problem
             .route
             .iterative(mesh.n_nodes(), &problem.method, problem.model.constraint)?;

@@ -8,6 +8,11 @@ pub const SCENES: &[(&str, &str, &str)] = &[
         include_str!("../examples/slab-on-grade.toml"),
     ),
     (
+        "slab-pasternak",
+        "the slab-on-grade bay on a two-parameter (Pasternak) soil: k = 30 MN/m³, G_p = 15 MN/m (SI units)",
+        include_str!("../examples/slab-pasternak.toml"),
+    ),
+    (
         "footing",
         "6 m × 4 m mat, eccentric 200 kN column and self-weight on Winkler soil (SI units)",
         include_str!("../examples/footing.toml"),

@@ -248,7 +248,7 @@ impl QpForm {
     pub fn is_dense(self, foundation: crate::foundation::FoundationKind) -> bool {
         match self {
             QpForm::Schur => true,
-            QpForm::Auto => foundation == crate::foundation::FoundationKind::HalfSpace,
+            QpForm::Auto => !foundation.is_local(),
             QpForm::Lifted | QpForm::Primal => false,
         }
     }

@@ -64,7 +64,7 @@ names!(SymmetryMode, Auto => "auto", None => "none");
 pub struct Groups {
     /// Foundation model.
     pub foundation: FoundationKind,
-    /// Γ_w or Γ_h.
+    /// Γ_w or Γ_h (Pasternak: Γ_w of its springs, D/(k μ L⁴)).
     pub gamma: f64,
     /// Δ.
     pub delta: f64,
@@ -72,6 +72,17 @@ pub struct Groups {
     pub mu: f64,
     /// ν_p.
     pub nu: f64,
+    /// Pasternak only: the shear parameter Γ_g = G_p L²/D (None for the other soils).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub shear: Option<f64>,
+}
+
+impl Groups {
+    /// The Pasternak decay length λ/L = √(G_p/k)/L = √(Γ_g μ Γ_w); 0 for the other soils.
+    pub fn decay_length(&self) -> f64 {
+        self.shear
+            .map_or(0.0, |g| (g * self.mu * self.gamma).sqrt())
+    }
 }
 
 /// Physical scales of a scene given in SI units.

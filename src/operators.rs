@@ -10,7 +10,8 @@
 
 use std::sync::Arc;
 
-use crate::foundation::{self, fft, halfspace, winkler, Compliance, FoundationKind};
+use crate::foundation::kernel::Kernel;
+use crate::foundation::{self, fft, pairs, winkler, Compliance, FoundationKind};
 use crate::integrals::{line_integrals, patch_integrals};
 use crate::mesh::{Dof, DofMap, Mesh};
 use crate::model::{ConstraintPoints, Load, Model, Void, Zone};
@@ -82,6 +83,8 @@ pub struct Operators {
     pub section: Section,
     /// Foundation model.
     pub foundation: FoundationKind,
+    /// Its surface kernel (None for the local Winkler soil).
+    pub kernel: Option<Kernel>,
     /// Stiffness K (n_eq × n_eq, singular: free plate). Shared (not copied) by the operators
     /// of every load combination.
     pub k: Arc<sprs::CsMat<f64>>,
@@ -176,6 +179,7 @@ impl Operators {
             section,
             g.foundation,
             c,
+            g.decay_length(),
             &model.zones,
             &model.loads,
             model.constraint,
@@ -198,7 +202,8 @@ impl Operators {
 
     /// Assemble from parts: a mesh, a section, the foundation and its constant
     /// (1/K for Winkler, (1 − ν_s²)/(π E_s) for the half-space, in consistent units), whole-plate
-    /// loads and the constraint points.
+    /// loads and the constraint points. Not for a Pasternak soil, which needs its decay length
+    /// ([`Self::build_all`]).
     pub fn build(
         mesh: Mesh,
         section: Section,
@@ -213,6 +218,7 @@ impl Operators {
             section,
             foundation,
             foundation_constant,
+            0.0,
             &[],
             loads,
             constraint,
@@ -221,14 +227,17 @@ impl Operators {
         )
     }
 
-    /// [`Self::build`] with Winkler zones of another modulus and the half-space T dense or, `toeplitz`, as the FFT operator of
-    /// the iterative route ([`fft::ToeplitzCompliance`]).
+    /// [`Self::build`] with Winkler zones of another modulus, the Pasternak decay length
+    /// `decay_length` = √(G_p/k) in the unit system (ignored by the other soils; the constant
+    /// is then 1/k), and a non-local T dense or, `toeplitz`, as the FFT operator of the
+    /// iterative route ([`fft::ToeplitzCompliance`]).
     #[allow(clippy::too_many_arguments)]
     pub fn build_all(
         mesh: Mesh,
         section: Section,
         foundation: FoundationKind,
         foundation_constant: f64,
+        decay_length: f64,
         zones: &[Zone],
         loads: &[Load],
         constraint: ConstraintPoints,
@@ -238,13 +247,14 @@ impl Operators {
         let dofs = DofMap::new(&mesh);
         let k = plate::assemble_stiffness(&mesh, &dofs, &section);
         let f = load_vector_with(&mesh, &dofs, &section, loads);
-        let (b, t) = match foundation {
-            FoundationKind::Winkler => (
+        let kernel = foundation.kernel(decay_length);
+        let (b, t) = match &kernel {
+            None => (
                 foundation::coupling(&mesh, &dofs, true),
                 winkler::zoned_compliance(&mesh, 1.0 / foundation_constant, zones),
             ),
-            FoundationKind::HalfSpace if toeplitz => {
-                let t = fft::ToeplitzCompliance::new(&mesh, foundation_constant);
+            Some(kernel) if toeplitz => {
+                let t = fft::ToeplitzCompliance::with_kernel(&mesh, foundation_constant, kernel);
                 notes.push(format!(
                     "iterative route: T applied by FFT on a {} × {} padded grid, penalty steps by preconditioned conjugate gradients",
                     t.padded()[0],
@@ -255,9 +265,9 @@ impl Operators {
                     Compliance::Toeplitz(Box::new(t)),
                 )
             }
-            FoundationKind::HalfSpace => (
+            Some(kernel) => (
                 foundation::coupling(&mesh, &dofs, false),
-                halfspace::compliance(&mesh, foundation_constant),
+                pairs::compliance(&mesh, foundation_constant, kernel),
             ),
         };
         let constraints = constraint_points(&mesh, constraint);
@@ -268,6 +278,7 @@ impl Operators {
             dofs,
             section,
             foundation,
+            kernel,
             k: Arc::new(k),
             f,
             b: Arc::new(b),

@@ -21,6 +21,12 @@ pub struct DimensionlessGroups {
     pub mu: f64,
     /// ν_p.
     pub nu: f64,
+    /// Pasternak only: the shear parameter Γ_g = G_p L²/D (absent for the other soils).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub shear: Option<f64>,
+    /// Pasternak only: the decay length λ/L = √(Γ_g μ Γ_w) (absent for the other soils).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub decay_length: Option<f64>,
     /// ε̄ of the penalty method (null for the QP and bonded contact, which have none).
     pub penalty: Option<f64>,
 }
@@ -142,6 +148,8 @@ impl Summary {
                 delta: model.groups.delta,
                 mu: model.groups.mu,
                 nu: model.groups.nu,
+                shear: model.groups.shear,
+                decay_length: model.groups.shear.map(|_| model.groups.decay_length()),
                 penalty: sol.method.penalty_epsilon(),
             },
             physical: model.physical,

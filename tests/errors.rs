@@ -64,6 +64,12 @@ fn every_catalogue_entry_has_its_exit_code_and_message() {
         Case { id: "E39 active set with Gauss points", scene: Some(BASE.into()), args: vec!["--method", "qp", "--qp-solver", "active-set", "--constraint", "gauss"], code: 2, message: "solver.qp_solver" },
         Case { id: "E40 clarabel on the iterative route", scene: paper("paper-halfspace", "method = \"penalty\"", "method = \"qp\""), args: vec!["--qp-solver", "clarabel", "--solver", "iterative"], code: 2, message: "clarabel needs the dense Schur complement" },
         Case { id: "E41 a clarabel form with the active set", scene: Some(BASE.into()), args: vec!["--method", "qp", "--qp-solver", "active-set", "--qp-form", "schur"], code: 2, message: "solver.qp_form" },
+        Case { id: "E45 shear layer on a soil without one", scene: edit("modulus = 5e7", "modulus = 5e7\nshear_modulus = 1e6"), args: vec![], code: 2, message: "foundation.shear_modulus`: belongs to model = \"pasternak\"" },
+        Case { id: "E45 dimensionless shear on Winkler", scene: paper("paper-winkler", "nu = 0.3", "nu = 0.3\nshear = 1.0"), args: vec![], code: 2, message: "dimensionless.shear`: belongs to foundation = \"pasternak\"" },
+        Case { id: "E46 Pasternak without its shear modulus", scene: edit("model = \"winkler\"", "model = \"pasternak\""), args: vec![], code: 2, message: "missing: the Pasternak shear layer's modulus" },
+        Case { id: "E46 dimensionless Pasternak without Γ_g", scene: paper("paper-winkler", "foundation = \"winkler\"", "foundation = \"pasternak\""), args: vec![], code: 2, message: "missing: the Pasternak shear parameter" },
+        Case { id: "E47 decay length out of range", scene: edit("model = \"winkler\"\nmodulus = 5e7", "model = \"pasternak\"\nmodulus = 5e7\nshear_modulus = 1e20"), args: vec![], code: 2, message: "gives the decay length λ" },
+        Case { id: "E48 elastic constants on a Pasternak soil", scene: edit("model = \"winkler\"\nmodulus = 5e7", "model = \"pasternak\"\nmodulus = 5e7\nshear_modulus = 1e6\nyoungs_modulus = 1e8"), args: vec![], code: 2, message: "a Pasternak foundation takes `modulus`" },
         Case { id: "E29 unreadable scene", scene: None, args: vec![], code: 5, message: "cannot read scene file" },
     ];
     let dir = tempfile::tempdir().expect("tempdir");

@@ -5,7 +5,7 @@
 //!
 //! T_ij = c Σ_{e ∋ i (local a)} Σ_{e' ∋ j (local b)} I_ab(e' − e),
 //!
-//! where I_ab(d) is the pair block of [`super::halfspace::pair_block`] at the element offset d (the
+//! where I_ab(d) is the pair block of [`super::kernel::Kernel::pair_block`] at the element offset d (the
 //! same table the dense T is scattered from). Gathering the node values into four element
 //! fields w_b[e'] = σ(node b of e'), the product is four discrete correlations per output field,
 //!
@@ -16,7 +16,7 @@
 //! O(N log N) time and O(N) memory for N pressure nodes.
 //!
 //! A symmetry-reduced model's T includes the settlement of the mirror images of its pressure
-//! (see [`super::halfspace`]): that is the same correlation on the whole plate with the pressure
+//! (see [`super::pairs`]): that is the same correlation on the whole plate with the pressure
 //! extended by mirroring, σ(x) = σ(|x|) across each symmetry line. Only the model's own elements
 //! are read back, so the padding needs to cover the offsets from the model to the whole plate:
 //! N_d + n_d − 1 along a direction with n_d model and N_d whole-plate elements.
@@ -27,7 +27,8 @@ use realfft::num_complex::Complex;
 use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 use rustfft::{Fft, FftPlanner};
 
-use super::halfspace::{self, PairTable};
+use super::kernel::Kernel;
+use super::pairs::{self, PairTable};
 use crate::mesh::Mesh;
 
 /// Position (i, j) of local node a inside its element, counter-clockwise from the lower left
@@ -71,6 +72,7 @@ struct Scratch {
 pub struct ToeplitzCompliance {
     mesh: Mesh,
     constant: f64,
+    kernel: Kernel,
     /// Padded grid M1 × M2 (elements).
     m: [usize; 2],
     /// Where the model's elements sit in the whole plate (n_d if reduced along d, else 0).
@@ -100,6 +102,7 @@ impl Clone for ToeplitzCompliance {
         Self {
             mesh: self.mesh.clone(),
             constant: self.constant,
+            kernel: self.kernel.clone(),
             m: self.m,
             shift: self.shift,
             kernels: self.kernels.clone(),
@@ -147,12 +150,17 @@ fn preimages(mesh: &Mesh, shift: [usize; 2], i: usize, j: usize) -> Vec<(usize, 
 impl ToeplitzCompliance {
     /// Tabulate the pair kernels of `mesh` with the half-space constant `c` and transform them.
     pub fn new(mesh: &Mesh, c: f64) -> Self {
-        let full = mesh.full_elements();
-        let table = PairTable::new(full, mesh.hx, mesh.hy);
-        Self::from_table(mesh, c, &table)
+        Self::with_kernel(mesh, c, &Kernel::Boussinesq)
     }
 
-    pub(crate) fn from_table(mesh: &Mesh, c: f64, table: &PairTable) -> Self {
+    /// The same for any surface kernel ([`Kernel`]) with its constant `c`.
+    pub fn with_kernel(mesh: &Mesh, c: f64, kernel: &Kernel) -> Self {
+        let full = mesh.full_elements();
+        let table = PairTable::new(full, mesh.hx, mesh.hy, kernel);
+        Self::from_table(mesh, c, kernel, &table)
+    }
+
+    pub(crate) fn from_table(mesh: &Mesh, c: f64, kernel: &Kernel, table: &PairTable) -> Self {
         let full = mesh.full_elements();
         let n = [mesh.nx, mesh.ny];
         let shift = [
@@ -170,6 +178,7 @@ impl ToeplitzCompliance {
         let mut op = Self {
             mesh: mesh.clone(),
             constant: c,
+            kernel: kernel.clone(),
             m,
             shift,
             kernels: Vec::new(),
@@ -250,10 +259,10 @@ impl ToeplitzCompliance {
         toeplitz_bytes(&self.mesh)
     }
 
-    /// The dense matrix of the same operator ([`halfspace::compliance`]), for routes that need
+    /// The dense matrix of the same operator ([`pairs::dense_matrix`]), for routes that need
     /// it; n² doubles.
     pub fn dense(&self) -> faer::Mat<f64> {
-        halfspace::dense_matrix(&self.mesh, self.constant)
+        pairs::dense_matrix(&self.mesh, self.constant, &self.kernel)
     }
 
     fn new_scratch(&self) -> Scratch {
@@ -446,8 +455,8 @@ pub fn toeplitz_bytes(mesh: &Mesh) -> usize {
 mod tests {
     use super::*;
 
-    fn dense(mesh: &Mesh, c: f64) -> faer::Mat<f64> {
-        halfspace::dense_matrix(mesh, c)
+    fn dense(mesh: &Mesh, c: f64, kernel: &Kernel) -> faer::Mat<f64> {
+        pairs::dense_matrix(mesh, c, kernel)
     }
 
     /// A reproducible field with both signs and no symmetry.
@@ -463,15 +472,27 @@ mod tests {
             .collect()
     }
 
-    /// The FFT product equals the dense product of `halfspace::compliance` (an independent
-    /// scatter of the same pair table) to round-off: the FFT's error is ~1e-16 × log N × max|T|·|x|.
+    /// The FFT product equals the dense product of `pairs::dense_matrix` (an independent
+    /// scatter of the same pair table), for the half-space and Pasternak kernels, to round-off: the FFT's error is ~1e-16 × log N × max|T|·|x|.
     fn check(a: f64, b: f64, full: [usize; 2], sym_x: bool, sym_y: bool) {
+        check_kernel(a, b, full, sym_x, sym_y, &Kernel::Boussinesq);
+        // A Pasternak kernel decaying within the plate (λ = 0.3) and one reaching beyond it.
+        for lambda in [0.3, 3.0] {
+            check_kernel(a, b, full, sym_x, sym_y, &Kernel::Pasternak { lambda });
+        }
+    }
+
+    fn check_kernel(a: f64, b: f64, full: [usize; 2], sym_x: bool, sym_y: bool, kernel: &Kernel) {
         let mesh = Mesh::new(a, b, full, sym_x, sym_y);
         let c = 0.37;
-        let t = dense(&mesh, c);
-        let op = ToeplitzCompliance::new(&mesh, c);
+        let t = dense(&mesh, c, kernel);
+        let op = ToeplitzCompliance::with_kernel(&mesh, c, kernel);
         let n = mesh.n_nodes();
-        let name = format!("{full:?} {} (μ = {})", mesh.symmetry_name(), b / a);
+        let name = format!(
+            "{kernel:?} {full:?} {} (μ = {})",
+            mesh.symmetry_name(),
+            b / a
+        );
         for seed in [1, 2] {
             let x = field(n, seed);
             let y = op.apply(&x);

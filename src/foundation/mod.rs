@@ -4,8 +4,11 @@
 //! The pressure σ is interpolated with the same bilinear functions f_i as the deflection, one
 //! unknown per model node. The discrete gap is g = Tσ − Bᵀu and the plate feels the load −Bσ.
 
+pub mod boussinesq;
 pub mod fft;
 pub mod halfspace;
+pub mod kernel;
+pub mod pairs;
 pub mod winkler;
 
 use crate::mesh::{Dof, DofMap, Mesh};
@@ -18,6 +21,9 @@ pub enum FoundationKind {
     Winkler,
     /// Homogeneous isotropic elastic half-space (Boussinesq kernel, paper eq. 2.6).
     HalfSpace,
+    /// Two-parameter (Pasternak) soil k u − G_p ∇²u = p on the whole plane: springs coupled by
+    /// a shear layer, kernel K₀(ρ/λ)/(2π G_p), λ = √(G_p/k) ([`kernel::Kernel::Pasternak`]).
+    Pasternak,
 }
 
 impl FoundationKind {
@@ -26,6 +32,23 @@ impl FoundationKind {
         match self {
             FoundationKind::Winkler => "winkler",
             FoundationKind::HalfSpace => "half-space",
+            FoundationKind::Pasternak => "pasternak",
+        }
+    }
+
+    /// True for the local (Winkler) soil, whose T is diagonal; every other soil is a non-local
+    /// surface kernel with a dense (or FFT-applied) T.
+    pub fn is_local(self) -> bool {
+        self == FoundationKind::Winkler
+    }
+
+    /// The surface kernel of a non-local soil; `lambda` is the Pasternak decay length
+    /// √(G_p/k) in the caller's length unit (ignored by the others). None for Winkler.
+    pub fn kernel(self, lambda: f64) -> Option<kernel::Kernel> {
+        match self {
+            FoundationKind::Winkler => None,
+            FoundationKind::HalfSpace => Some(kernel::Kernel::Boussinesq),
+            FoundationKind::Pasternak => Some(kernel::Kernel::Pasternak { lambda }),
         }
     }
 }
@@ -35,9 +58,10 @@ impl FoundationKind {
 pub enum Compliance {
     /// Winkler: T = (1/K) diag(∫ f_i).
     Diagonal(Vec<f64>),
-    /// Half-space: T_ij = ⟨f_i, 𝒯 f_j⟩, dense symmetric positive definite.
+    /// A non-local soil (half-space, Pasternak): T_ij = ⟨f_i, 𝒯 f_j⟩, dense symmetric positive
+    /// definite.
     Dense(faer::Mat<f64>),
-    /// Half-space, the same T never stored: block-Toeplitz products by FFT
+    /// A non-local soil, the same T never stored: block-Toeplitz products by FFT
     /// ([`fft::ToeplitzCompliance`]), for the iterative route.
     Toeplitz(Box<fft::ToeplitzCompliance>),
 }

@@ -110,8 +110,13 @@ pub const SIGN_CONVENTION: &str = "Sign convention: deflection w and loads are p
 pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
     let g = &s.dimensionless;
     let mut l = vec![format!("liftoff — {}", s.title)];
+    // A Pasternak soil's second group and its decay length.
+    let shear = match (g.shear, g.decay_length) {
+        (Some(sh), Some(lambda)) => format!(", Γ_g = {sh:.4e}, λ/L = {lambda:.4}"),
+        _ => String::new(),
+    };
     l.push(format!(
-        "  foundation : {} (Γ = {:.4e}, Δ = {:.4e}, μ = {:.4}, ν = {})",
+        "  foundation : {} (Γ = {:.4e}{shear}, Δ = {:.4e}, μ = {:.4}, ν = {})",
         s.foundation, g.gamma, g.delta, g.mu, g.nu
     ));
     l.push(format!(

@@ -225,6 +225,7 @@ pub(super) fn foundation_label(f: FoundationKind) -> &'static str {
     match f {
         FoundationKind::HalfSpace => "elastic half-space",
         FoundationKind::Winkler => "Winkler subgrade",
+        FoundationKind::Pasternak => "Pasternak soil",
     }
 }
 

@@ -167,6 +167,7 @@ fn file_tag(f: FoundationKind) -> &'static str {
     match f {
         FoundationKind::HalfSpace => "halfspace",
         FoundationKind::Winkler => "winkler",
+        FoundationKind::Pasternak => "pasternak",
     }
 }
 

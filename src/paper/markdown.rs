@@ -392,6 +392,7 @@ fn foundation_short(f: FoundationKind) -> &'static str {
     match f {
         FoundationKind::HalfSpace => "half-space",
         FoundationKind::Winkler => "Winkler",
+        FoundationKind::Pasternak => "Pasternak",
     }
 }
 

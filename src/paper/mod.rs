@@ -75,7 +75,8 @@ pub const MAX_REFINE: usize = 8;
 /// The paper's quarter-mesh elements per side: 8 on the half-space, 10 on Winkler.
 pub fn paper_quarter_elements(foundation: FoundationKind) -> usize {
     match foundation {
-        FoundationKind::HalfSpace => 8,
+        // The paper has no Pasternak case; its non-local meshes are the half-space's.
+        FoundationKind::HalfSpace | FoundationKind::Pasternak => 8,
         FoundationKind::Winkler => 10,
     }
 }

@@ -58,7 +58,8 @@ use std::sync::OnceLock;
 use serde::Serialize;
 
 use super::FullField;
-use crate::foundation::{halfspace, nodal_areas, FoundationKind};
+use crate::foundation::kernel::Kernel;
+use crate::foundation::{nodal_areas, pairs};
 use crate::operators::Operators;
 use crate::quadrature::GaussRule;
 use crate::solve::Solution;
@@ -80,11 +81,11 @@ pub struct BoundarySegment {
 /// pyramid f_i over its four elements, divided by its area.
 pub fn self_compliance(ops: &Operators) -> f64 {
     let c = ops.foundation_constant;
-    match ops.foundation {
-        FoundationKind::Winkler => c,
-        FoundationKind::HalfSpace => {
+    match &ops.kernel {
+        None => c,
+        Some(kernel) => {
             let (hx, hy) = (ops.mesh.hx, ops.mesh.hy);
-            c * pyramid_self_integral(hx, hy) / (hx * hy)
+            c * pyramid_self_integral_of(kernel, hx, hy) / (hx * hy)
         }
     }
 }
@@ -92,6 +93,11 @@ pub fn self_compliance(ops: &Operators) -> f64 {
 /// ∫∫ f(x) f(x') / |x − x'| dA' dA for the bilinear pyramid f of an interior node of a grid of
 /// hx × hy elements, summed from the tabulated element-pair blocks.
 pub fn pyramid_self_integral(hx: f64, hy: f64) -> f64 {
+    pyramid_self_integral_of(&Kernel::Boussinesq, hx, hy)
+}
+
+/// The same with any surface kernel K(|x − x'|) in place of 1/|x − x'|.
+pub fn pyramid_self_integral_of(kernel: &Kernel, hx: f64, hy: f64) -> f64 {
     // The node's four elements (offsets from the node's lower-left element) and the node's
     // local index in each (counter-clockwise from the lower-left corner).
     const AROUND: [((isize, isize), usize); 4] =
@@ -100,8 +106,8 @@ pub fn pyramid_self_integral(hx: f64, hy: f64) -> f64 {
     for &((i0, j0), a) in &AROUND {
         for &((i1, j1), b) in &AROUND {
             let (di, dj) = (i1 - i0, j1 - j0);
-            let (a, b) = halfspace::reflect(di, dj, a, b);
-            sum += halfspace::pair_block(di.unsigned_abs(), dj.unsigned_abs(), hx, hy)[a][b];
+            let (a, b) = pairs::reflect(di, dj, a, b);
+            sum += kernel.pair_block(di.unsigned_abs(), dj.unsigned_abs(), hx, hy)[a][b];
         }
     }
     sum
@@ -483,7 +489,7 @@ mod tests {
     #[test]
     fn pyramid_self_integral_matches_the_assembled_compliance() {
         let mesh = crate::mesh::Mesh::new(2.0, 2.0, [8, 8], false, false);
-        let t = halfspace::dense_matrix(&mesh, 1.0);
+        let t = crate::foundation::halfspace::dense_matrix(&mesh, 1.0);
         let n = mesh.node(4, 4);
         let mine = pyramid_self_integral(mesh.hx, mesh.hy);
         assert!(

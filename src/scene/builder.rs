@@ -80,12 +80,22 @@ impl ModelBuilder {
         self.file.dimensionless = Some(DimensionlessSpec {
             foundation,
             gamma,
+            shear: None,
             delta,
             mu,
             nu,
             allowable_pressure: None,
             zone: Vec::new(),
         });
+        self
+    }
+
+    /// The Pasternak shear parameter Γ_g = G_p L²/D of a dimensionless scene (after
+    /// [`Self::dimensionless`] with `FoundationKind::Pasternak`).
+    pub fn shear(mut self, shear: f64) -> Self {
+        if let Some(d) = self.file.dimensionless.as_mut() {
+            d.shear = Some(shear);
+        }
         self
     }
 

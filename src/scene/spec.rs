@@ -54,11 +54,14 @@ impl PlateSpec {
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct FoundationSpec {
-    /// "winkler" or "half-space".
+    /// "winkler", "half-space" or "pasternak".
     pub model: FoundationKind,
-    /// Winkler subgrade modulus K, N/m³.
+    /// Winkler (or Pasternak spring) subgrade modulus K, N/m³.
     #[serde(default)]
     pub modulus: Option<f64>,
+    /// Pasternak shear-layer modulus G_p, N/m (force per unit length).
+    #[serde(default)]
+    pub shear_modulus: Option<f64>,
     /// Half-space E_s, Pa.
     #[serde(default)]
     pub youngs_modulus: Option<f64>,
@@ -79,6 +82,7 @@ impl FoundationSpec {
         Self {
             model: FoundationKind::Winkler,
             modulus: Some(k),
+            shear_modulus: None,
             youngs_modulus: None,
             poissons_ratio: None,
             allowable_pressure: None,
@@ -91,10 +95,21 @@ impl FoundationSpec {
         Self {
             model: FoundationKind::HalfSpace,
             modulus: None,
+            shear_modulus: None,
             youngs_modulus: Some(e),
             poissons_ratio: Some(nu),
             allowable_pressure: None,
             zone: Vec::new(),
+        }
+    }
+
+    /// A Pasternak soil: springs of modulus `k` (N/m³) coupled by a shear layer of modulus
+    /// `g_p` (N/m).
+    pub fn pasternak(k: f64, g_p: f64) -> Self {
+        Self {
+            model: FoundationKind::Pasternak,
+            shear_modulus: Some(g_p),
+            ..Self::winkler(k)
         }
     }
 }
@@ -144,10 +159,13 @@ pub struct CombinationSpec {
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct DimensionlessSpec {
-    /// "winkler" or "half-space".
+    /// "winkler", "half-space" or "pasternak".
     pub foundation: FoundationKind,
-    /// Γ_w or Γ_h.
+    /// Γ_w or Γ_h (Pasternak: Γ_w of its springs).
     pub gamma: f64,
+    /// Pasternak only: the shear parameter Γ_g = G_p L²/D.
+    #[serde(default)]
+    pub shear: Option<f64>,
     /// Δ.
     pub delta: f64,
     /// μ = width / length.

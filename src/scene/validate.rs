@@ -33,6 +33,25 @@ fn aspect_ratio(field: &str, mu: f64) -> Result<f64> {
     Ok(mu)
 }
 
+/// Upper limit of the Pasternak decay length λ/L = √(Γ_g μ Γ_w). Beyond it the shear layer
+/// spreads a load over more than a thousand plate lengths: the kernel is then a large constant
+/// plus a small logarithmic variation over the plate, and T loses the digits that tell its
+/// entries apart — the soil acts like a membrane of tension G_p, better modelled as such.
+pub const MAX_PASTERNAK_LENGTH: f64 = 1e3;
+
+/// Check the decay length the shear parameter `shear` = Γ_g gives with Γ_w = `gamma`, and
+/// return Γ_g.
+fn pasternak_length(field: &str, shear: f64, gamma: f64, mu: f64) -> Result<f64> {
+    let lambda = (shear * mu * gamma).sqrt();
+    if !(lambda.is_finite() && lambda > 0.0) || lambda > MAX_PASTERNAK_LENGTH {
+        return Err(Error::invalid(
+            field,
+            format!("gives the decay length λ = √(G_p/k) = {lambda:e} half-lengths L of the plate, outside (0, {MAX_PASTERNAK_LENGTH:e}]: check the units (G_p in N/m, k in N/m³) or lower the shear modulus"),
+        ));
+    }
+    Ok(shear)
+}
+
 fn poisson(field: &str, v: f64) -> Result<f64> {
     if !v.is_finite() || v <= -1.0 || v >= 0.5 {
         return Err(Error::invalid(
@@ -64,7 +83,7 @@ fn groups(file: &SceneFile) -> Result<(Groups, Option<(f64, f64)>, [f64; 2])> {
             (Some(_), None, None) => {
                 Err(Error::invalid(
                     "foundation",
-                    "missing: add [foundation] with model = \"winkler\" (modulus) or \"half-space\" (youngs_modulus, poissons_ratio)",
+                    "missing: add [foundation] with model = \"winkler\" (modulus), \"half-space\" (youngs_modulus, poissons_ratio) or \"pasternak\" (modulus, shear_modulus)",
                 ))
             }
             (None, Some(_), None) => {
@@ -93,7 +112,38 @@ fn groups(file: &SceneFile) -> Result<(Groups, Option<(f64, f64)>, [f64; 2])> {
                 let mu = aspect_ratio("plate.width", width / length)?;
                 let d = e * h.powi(3) / (12.0 * (1.0 - nu * nu));
                 let delta = h * h / (6.0 * chi * (1.0 - nu) * mu * l * l);
+                if f.model != FoundationKind::Pasternak && f.shear_modulus.is_some() {
+                    return Err(Error::invalid(
+                        "foundation.shear_modulus",
+                        format!("belongs to model = \"pasternak\"; a {} foundation has no shear layer (use model = \"pasternak\" with modulus and shear_modulus, or leave it out)", f.model.name()),
+                    ));
+                }
+                let mut shear = None;
                 let gamma = match f.model {
+                    FoundationKind::Pasternak => {
+                        if f.youngs_modulus.is_some() || f.poissons_ratio.is_some() {
+                            return Err(Error::invalid(
+                                "foundation.youngs_modulus",
+                                "belongs to model = \"half-space\"; a Pasternak foundation takes `modulus` (N/m³) and `shear_modulus` (N/m)",
+                            ));
+                        }
+                        let k = finite_positive(
+                            "foundation.modulus",
+                            f.modulus.ok_or_else(|| {
+                                Error::invalid("foundation.modulus", "missing: the Pasternak springs' modulus k in N/m³")
+                            })?,
+                            "N/m³",
+                        )?;
+                        let g_p = finite_positive(
+                            "foundation.shear_modulus",
+                            f.shear_modulus.ok_or_else(|| {
+                                Error::invalid("foundation.shear_modulus", "missing: the Pasternak shear layer's modulus G_p in N/m (for G_p = 0 use model = \"winkler\")")
+                            })?,
+                            "N/m",
+                        )?;
+                        shear = Some(pasternak_length("foundation.shear_modulus", g_p * l * l / d, d / (k * mu * l.powi(4)), mu)?);
+                        d / (k * mu * l.powi(4))
+                    }
                     FoundationKind::Winkler => {
                         if f.youngs_modulus.is_some() || f.poissons_ratio.is_some() {
                             return Err(Error::invalid(
@@ -146,7 +196,7 @@ fn groups(file: &SceneFile) -> Result<(Groups, Option<(f64, f64)>, [f64; 2])> {
                     }
                 }
                 Ok((
-                    Groups { foundation: f.model, gamma, delta, mu, nu },
+                    Groups { foundation: f.model, gamma, delta, mu, nu, shear },
                     Some((l, d)),
                     [1.0 / l, 1.0 / l],
                 ))
@@ -159,7 +209,26 @@ fn groups(file: &SceneFile) -> Result<(Groups, Option<(f64, f64)>, [f64; 2])> {
                     finite_positive("dimensionless.mu", g.mu, "width/length")?,
                 )?;
                 let nu = poisson("dimensionless.nu", g.nu)?;
-                Ok((Groups { foundation: g.foundation, gamma, delta, mu, nu }, None, [1.0, mu]))
+                let shear = match (g.foundation, g.shear) {
+                    (FoundationKind::Pasternak, Some(s)) => {
+                        let s = finite_positive("dimensionless.shear", s, "Γ_g = G_p L²/D")?;
+                        Some(pasternak_length("dimensionless.shear", s, gamma, mu)?)
+                    }
+                    (FoundationKind::Pasternak, None) => {
+                        return Err(Error::invalid(
+                            "dimensionless.shear",
+                            "missing: the Pasternak shear parameter Γ_g = G_p L²/D (for Γ_g = 0 use foundation = \"winkler\")",
+                        ))
+                    }
+                    (other, Some(_)) => {
+                        return Err(Error::invalid(
+                            "dimensionless.shear",
+                            format!("belongs to foundation = \"pasternak\"; a {} foundation has no shear layer (leave it out)", other.name()),
+                        ))
+                    }
+                    (_, None) => None,
+                };
+                Ok((Groups { foundation: g.foundation, gamma, delta, mu, nu, shear }, None, [1.0, mu]))
             }
         }
 }
