@@ -407,6 +407,9 @@ fn solve(args: SolveArgs) -> Result<(), Failure> {
             liftoff::Status::PenaltyTooWeak {
                 suggested_penalty, ..
             } => format!("\nhint: rerun with --penalty {suggested_penalty:.0e} or --method qp"),
+            _ if summary.method == "qp" => {
+                "\nhint: --method penalty solves the same operators by the paper's iteration, or try the other --qp-solver where it applies".into()
+            }
             _ => "\nhint: --method qp solves the same operators as a convex QP".into(),
         };
         return Err(Failure::new(exit::SOLVER, format!(

@@ -603,6 +603,8 @@ impl Run {
         } else {
             cg.loose_tolerance.max(tight_tol)
         };
+        // (fewest points changed by a step so far, steps since).
+        let mut wander = (usize::MAX, 0usize);
         while self.iterations < self.settings.max_iterations {
             let face = self.face(sys, ops, &held, &start, level)?;
             let tight = face.cg.residual <= tight_tol;
@@ -675,6 +677,22 @@ impl Run {
             }
             if seen.contains(&next) {
                 // A cycle: hand over to the monotone method.
+                return Ok(Err(face.sigma));
+            }
+            // Sets that wander without repeating (a soil whose gaps at the contact edge are
+            // below what a loose solve resolves): 100× tighter when five steps have not
+            // changed fewer points than the best so far; and at the tight tolerance, hand
+            // over to the monotone method after twenty such steps.
+            let changes = next.iter().zip(&held).filter(|(a, b)| a != b).count();
+            if changes < wander.0 {
+                wander = (changes, 0);
+            } else {
+                wander.1 += 1;
+            }
+            if wander.1 >= 5 && level > tight_tol {
+                level = (level * 1e-2).max(tight_tol);
+                wander = (changes, 0);
+            } else if wander.1 >= 20 {
                 return Ok(Err(face.sigma));
             }
             seen.push(held);
