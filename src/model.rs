@@ -2,7 +2,8 @@
 //! solver's unit system.
 //!
 //! * lengths in units of L (half the side along x): the plate is [−1, 1] × [−μ, μ];
-//! * forces in units of P, where 4P is the resultant of the loads;
+//! * forces in units of P, where 4P is the resultant of the loads (for a bonded plate whose loads
+//!   add up to zero, a stated reference instead: [`LoadReference`]);
 //! * flexural rigidity D = 1, so deflections are the paper's V = D w / (P L²);
 //! * shear rigidity κ_s = χ G H L² / D = 1 / (μ Δ);
 //! * Winkler modulus K L⁴ / D = 1 / (μ Γ_w); half-space constant
@@ -90,7 +91,7 @@ impl Groups {
 pub struct Physical {
     /// L: half the side along x, m.
     pub half_length: f64,
-    /// P: a quarter of the load resultant, N.
+    /// P: a quarter of the load resultant, N (or the stated reference: [`LoadReference`]).
     pub force: f64,
     /// D, N·m.
     pub rigidity: f64,
@@ -368,10 +369,52 @@ pub struct Model {
     /// P in the scene's own force unit (N for SI scenes; the loads' relative unit for
     /// dimensionless ones): what makes models of different load sets comparable.
     pub load_scale: f64,
+    /// What P is: a quarter of the net load, or, when the loads add up to zero (only a bonded
+    /// plate can carry such loads), the reference that stands in for it.
+    pub reference: LoadReference,
+}
+
+/// The force P that V = D w / (P L²) and σ = μ L² r / P are reported against.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum LoadReference {
+    /// 4P is the net vertical load (the paper's P; every scene with a net load).
+    NetLoad,
+    /// The loads add up to zero: 4P is the sum of the downward loads (as much again acts
+    /// upward).
+    DownwardLoad,
+    /// The loads add up to zero and only temperature acts: P = D κ, the moment per unit
+    /// length that holds the free curl κ = α ΔT / H flat (so V = w / (κ L²), σ = μ L² r / (D κ)).
+    ThermalMoment,
+}
+
+impl LoadReference {
+    /// The name used in the summary and tables.
+    pub fn name(self) -> &'static str {
+        match self {
+            LoadReference::NetLoad => "net-load",
+            LoadReference::DownwardLoad => "downward-load",
+            LoadReference::ThermalMoment => "thermal-moment",
+        }
+    }
+
+    /// What P is, in words, for tables and notes.
+    pub fn describe(self) -> &'static str {
+        match self {
+            LoadReference::NetLoad => "4P = the net load",
+            LoadReference::DownwardLoad => {
+                "the loads add up to zero: 4P = the sum of the downward loads"
+            }
+            LoadReference::ThermalMoment => {
+                "the loads add up to zero: P = D κ, the moment that holds the free curl κ flat (V = w / (κ L²))"
+            }
+        }
+    }
 }
 
 impl Model {
-    /// Sum of the loads in units of P: +4 for a net downward load, −4 for a net upward one.
+    /// Sum of the loads in units of P: +4 for a net downward load, −4 for a net upward one, 0
+    /// when they add up to zero (see [`LoadReference`]).
     pub fn resultant(&self) -> f64 {
         self.loads.iter().map(Load::resultant).sum()
     }

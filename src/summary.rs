@@ -5,7 +5,7 @@ use serde::Serialize;
 
 use crate::error::{Error, Result};
 use crate::method::Method;
-use crate::model::{Model, Physical};
+use crate::model::{LoadReference, Model, Physical};
 use crate::post::{Complementarity, Extent, Report, Resultant};
 use crate::solve::{Iteration, PenaltyStage, Solution};
 use crate::Operators;
@@ -29,6 +29,12 @@ pub struct DimensionlessGroups {
     pub decay_length: Option<f64>,
     /// ε̄ of the penalty method (null for the QP and bonded contact, which have none).
     pub penalty: Option<f64>,
+    /// What P in V = D w / (P L²) and σ = μ L² r / P is: "net-load" (4P = the net load, the
+    /// paper's P), or, when the loads add up to zero (bonded contact only), "downward-load"
+    /// (4P = the sum of the downward loads) or "thermal-moment" (P = D κ, so V = w / (κ L²)).
+    pub reference: LoadReference,
+    /// P in the scene's force unit (N for SI scenes; the loads' unit for dimensionless ones).
+    pub reference_force: f64,
 }
 
 /// Wall-clock times, seconds.
@@ -151,6 +157,8 @@ impl Summary {
                 shear: model.groups.shear,
                 decay_length: model.groups.shear.map(|_| model.groups.decay_length()),
                 penalty: sol.method.penalty_epsilon(),
+                reference: model.reference,
+                reference_force: model.load_scale,
             },
             physical: model.physical,
             converged: sol.status.converged(),

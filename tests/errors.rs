@@ -45,6 +45,7 @@ fn every_catalogue_entry_has_its_exit_code_and_message() {
         Case { id: "E12 key of another load kind", scene: edit("force = 2.0e5", "force = 2.0e5\npressure = 1e3"), args: vec![], code: 2, message: "does not apply to a point load" },
         Case { id: "E13 no loads", scene: edit("[[load]]\nkind = \"point\"\nx = 1.5\ny = 1.0\nforce = 2.0e5\n", ""), args: vec![], code: 2, message: "no [[load]] entries" },
         Case { id: "E14 zero resultant", scene: edit("force = 2.0e5", "force = 0.0"), args: vec![], code: 2, message: "add up to zero" },
+        Case { id: "E14 a couple on unbonded contact", scene: edit("force = 2.0e5", "force = 2.0e5\n[[load]]\nkind = \"point\"\nx = -1.5\ny = -1.0\nforce = -2.0e5"), args: vec![], code: 2, message: "bonded contact (solver.contact = \"bonded\") carries loads without a resultant" },
         Case { id: "E15 mesh size", scene: edit("elements = [8, 8]", "elements = [8, 0]"), args: vec![], code: 2, message: "mesh.elements[1]" },
         Case { id: "E16 solver setting", scene: Some(format!("{BASE}[solver]\npenalty = 0.0\n")), args: vec![], code: 2, message: "solver.penalty" },
         Case { id: "E17 too large for memory", scene: edit("elements = [8, 8]", "elements = [200, 200]"), args: vec!["--method", "qp", "--qp-form", "schur"], code: 2, message: "GiB" },

@@ -6,6 +6,7 @@ use std::path::Path;
 
 use crate::compare::Comparison;
 use crate::error::{Error, Result};
+use crate::model::LoadReference;
 use crate::output::chart::Units;
 use crate::output::Summary;
 use crate::post::{ElementField, FullField, Profile};
@@ -220,6 +221,14 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
         s.time_s.assemble, s.time_s.solve, s.time_s.total
     ));
     let r = &s.resultant;
+    if g.reference != LoadReference::NetLoad {
+        let unit = if s.physical.is_some() { " N" } else { "" };
+        l.push(format!(
+            "  reference  : {}; P = {:.4e}{unit}",
+            g.reference.describe(),
+            g.reference_force
+        ));
+    }
     let units = Units::new(s.physical, g.mu);
     let e = &s.contact_extent;
     if units.is_physical() {

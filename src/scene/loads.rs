@@ -7,7 +7,7 @@ use super::spec::{Coord, LoadKind, LoadSpec};
 use super::SceneFile;
 use crate::error::{Error, Result};
 use crate::foundation::FoundationKind;
-use crate::model::{Groups, Load, Void, Zone};
+use crate::model::{Groups, Load, LoadReference, Void, Zone};
 
 /// A load as written, in unit-system geometry, its magnitude not yet divided by P: newtons (SI
 /// scenes: forces in N, patches in N per unit of (x/L)(y/L), lines in N per unit of length/L,
@@ -280,10 +280,20 @@ pub(super) fn rect_range(
 
 /// Loads in units of P, and P (a quarter of the resultant, in the raw unit), for one set of
 /// factored loads; `what` names the set in errors.
-pub(super) fn normalise(raw: Vec<(usize, Load)>, what: &str) -> Result<(Vec<Load>, f64)> {
+pub(super) fn normalise(
+    raw: Vec<(usize, Load)>,
+    what: &str,
+) -> Result<(Vec<Load>, f64, LoadReference)> {
     let total: f64 = raw.iter().map(|(_, l)| l.resultant()).sum();
     let gross: f64 = raw.iter().map(|(_, l)| l.resultant().abs()).sum();
-    if !total.is_finite() || !gross.is_finite() {
+    let moments: Vec<f64> = raw
+        .iter()
+        .filter_map(|(_, l)| match l {
+            Load::Temperature { curvature } => Some(*curvature),
+            _ => None,
+        })
+        .collect();
+    if !total.is_finite() || !gross.is_finite() || moments.iter().any(|m| !m.is_finite()) {
         return Err(Error::invalid(
             "load",
             format!(
@@ -291,21 +301,31 @@ pub(super) fn normalise(raw: Vec<(usize, Load)>, what: &str) -> Result<(Vec<Load
             ),
         ));
     }
-    if total.abs() <= 1e-12 * gross.max(f64::MIN_POSITIVE) {
-        let hint = if raw
-            .iter()
-            .any(|(_, l)| matches!(l, Load::Temperature { .. }))
-        {
-            "; a temperature load alone has no resultant: add the plate's self-weight to the same combination"
+    // Loads that add up to zero (to round-off of their sum) have no paper's P; a bonded plate
+    // still carries them (curling, a self-equilibrated pair), against a stated reference. The
+    // method decides whether such a model can be solved: `validate::problem` refuses it for
+    // unbonded contact.
+    let (p_force, reference) = if total.abs() > 1e-12 * gross {
+        (total.abs() / 4.0, LoadReference::NetLoad)
+    } else if gross > 0.0 {
+        // Half the gross load acts downward.
+        (gross / 8.0, LoadReference::DownwardLoad)
+    } else {
+        let net: f64 = moments.iter().sum();
+        let largest = moments.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
+        let p = if net.abs() > 1e-12 * largest {
+            net.abs()
         } else {
-            ""
+            largest
         };
-        return Err(Error::invalid(
-            "load",
-            format!("{what}the loads add up to zero (resultant {total:e}); a free plate needs a net vertical load{hint}"),
-        ));
-    }
-    let p_force = total.abs() / 4.0;
+        if p == 0.0 {
+            return Err(Error::invalid(
+                "load",
+                format!("{what}the loads add up to zero (every magnitude is 0): give a load with a non-zero force, pressure or temperature difference"),
+            ));
+        }
+        (p, LoadReference::ThermalMoment)
+    };
     let mut loads = raw;
     for (k, l) in loads.iter_mut() {
         let (v, name) = match l {
@@ -326,7 +346,11 @@ pub(super) fn normalise(raw: Vec<(usize, Load)>, what: &str) -> Result<(Vec<Load
             ));
         }
     }
-    Ok((loads.into_iter().map(|(_, l)| l).collect(), p_force))
+    Ok((
+        loads.into_iter().map(|(_, l)| l).collect(),
+        p_force,
+        reference,
+    ))
 }
 
 /// A void as written: unit geometry, depth raw (SI: d D / L² in N).

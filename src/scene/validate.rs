@@ -6,13 +6,13 @@ use super::loads::{
     DEFAULT_CASE,
 };
 pub(super) use super::numbers::finite_positive;
-use super::spec::{MeshSpec, PenaltySpec, SolverSpec};
+use super::spec::{LoadKind, MeshSpec, PenaltySpec, SolverSpec};
 use super::{Combination, Problem, SceneFile};
 use crate::budget::default_memory_limit;
 use crate::error::{Error, Result};
 use crate::foundation::FoundationKind;
 use crate::method::{Contact, Method, PenaltySettings, QpSettings};
-use crate::model::{Groups, Load, Model, Physical, Zone};
+use crate::model::{Groups, Load, LoadReference, Model, Physical, Zone};
 
 /// Upper limit on elements per side: beyond it even a Winkler model exceeds any sane memory.
 pub const MAX_ELEMENTS_PER_SIDE: i64 = 4000;
@@ -362,7 +362,7 @@ impl Shared {
             .iter()
             .map(|&(k, f)| (k, scale(self.raw[k].load, f)))
             .collect();
-        let (loads, p_force) = normalise(loads, what)?;
+        let (loads, p_force, reference) = normalise(loads, what)?;
         let voids = voids_for(&self.voids, &self.groups, p_force, self.physical, what)?;
         Ok(Model {
             title,
@@ -380,6 +380,7 @@ impl Shared {
             zones: self.zones.clone(),
             allowable_pressure: self.allowable.map(|a| a / p_force),
             load_scale: p_force,
+            reference,
         })
     }
 }
@@ -509,6 +510,31 @@ pub fn problem(file: &SceneFile) -> Result<Problem> {
         None => model(file)?,
     };
     let (method, memory_limit) = solver(&file.solver)?;
+    if method != Method::Bonded {
+        let named =
+            |m: &Model, what: String| (m.reference != LoadReference::NetLoad).then_some(what);
+        let zero = match combinations.is_empty() {
+            true => named(&model, String::new()),
+            false => combinations
+                .iter()
+                .find_map(|c| named(&c.model, format!("combination `{}`: ", c.name))),
+        };
+        if let Some(what) = zero {
+            let hint = if file
+                .load
+                .iter()
+                .any(|l| matches!(l.kind, LoadKind::Temperature))
+            {
+                " (a temperature load alone has no resultant: add the plate's self-weight to it)"
+            } else {
+                ""
+            };
+            return Err(Error::invalid(
+                "load",
+                format!("{what}the loads add up to zero: a foundation that cannot pull needs a net downward load to hold the plate{hint}; bonded contact (solver.contact = \"bonded\") carries loads without a resultant"),
+            ));
+        }
+    }
     if method == Method::Bonded && !model.voids.is_empty() {
         return Err(Error::invalid(
             "void",
