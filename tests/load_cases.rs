@@ -7,6 +7,8 @@
 //! subgrade K = 50 MPa/m, so D = E H³ / (12 (1 − ν²)) = 2.083e7 N·m and the radius of relative
 //! stiffness ℓ = (D/K)^¼ = 0.803 m. Fields of an SI report are physical (m, Pa, N·m/m).
 
+mod common;
+use common::node_at;
 use liftoff::combination::{self, CombinationRun};
 use liftoff::error::Error;
 use liftoff::integrals::{line_integrals, patch_integrals};
@@ -83,18 +85,6 @@ fn element_at(r: &Report, x: f64, y: f64) -> usize {
         .min_by(|&a, &b| {
             let da = (e.x[a] - x).hypot(e.y[a] - y);
             let db = (e.x[b] - x).hypot(e.y[b] - y);
-            da.total_cmp(&db)
-        })
-        .unwrap_or(0)
-}
-
-/// Index of the node nearest (x, y).
-fn node_at(r: &Report, x: f64, y: f64) -> usize {
-    let f = &r.field;
-    (0..f.x.len())
-        .min_by(|&a, &b| {
-            let da = (f.x[a] - x).hypot(f.y[a] - y);
-            let db = (f.x[b] - x).hypot(f.y[b] - y);
             da.total_cmp(&db)
         })
         .unwrap_or(0)

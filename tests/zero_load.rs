@@ -10,10 +10,11 @@
 //! edge's disturbance decays like e^(−βx) and is e^(−12.6) ≈ 3e-6 of its size 15 m in, at the
 //! centre and at the corners' distance from a mid-edge.
 
+mod common;
+use common::node_at;
 use liftoff::error::Error;
 use liftoff::method::{Contact, MethodKind};
 use liftoff::model::{LoadReference, Model, SymmetryMode};
-use liftoff::post::Report;
 use liftoff::scene::{FoundationSpec, ModelBuilder, PlateSpec};
 use liftoff::{analyse, Analysis, Method, Operators, Problem};
 use rustfft::num_complex::Complex64 as C;
@@ -61,18 +62,6 @@ fn solve(b: &ModelBuilder) -> Analysis {
     let a = analyse(&p).unwrap_or_else(|e| panic!("solve failed: {e}"));
     assert!(a.solution.status.converged());
     a
-}
-
-/// Index of the node nearest (x, y).
-fn node_at(r: &Report, x: f64, y: f64) -> usize {
-    let f = &r.field;
-    (0..f.x.len())
-        .min_by(|&a, &b| {
-            let da = (f.x[a] - x).hypot(f.y[a] - y);
-            let db = (f.x[b] - x).hypot(f.y[b] - y);
-            da.total_cmp(&db)
-        })
-        .unwrap_or(0)
 }
 
 /// Deflection of the free edge of a semi-infinite Mindlin strip (plane strain) on Winkler

@@ -1,6 +1,7 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
 
+use liftoff::post::Report;
 use liftoff::{analyse, Analysis, Problem};
 
 /// A dimensionless scene with one point load (s, t) and the given groups.
@@ -88,3 +89,15 @@ pub const OUTCOMES: [&str; 8] = [
     "too-large",
     "numerical",
 ];
+
+/// Index of the node nearest (x, y).
+pub fn node_at(r: &Report, x: f64, y: f64) -> usize {
+    let f = &r.field;
+    (0..f.x.len())
+        .min_by(|&a, &b| {
+            let da = (f.x[a] - x).hypot(f.y[a] - y);
+            let db = (f.x[b] - x).hypot(f.y[b] - y);
+            da.total_cmp(&db)
+        })
+        .unwrap_or(0)
+}
