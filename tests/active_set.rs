@@ -354,3 +354,46 @@ fn a_wandering_contact_edge_is_settled_by_tighter_solves() {
         d.iterations
     );
 }
+
+/// From a cold start the contact edge moves by about a ring of nodes per face solve (the
+/// paper's point load on a Pasternak soil: 15, 32, 99 face solves at 64², 128², 256²). The
+/// analysis starts a large grid from the same plate solved on a grid twice as coarse: the
+/// same QP, so the same answer — to the solvers' tolerance, the same contact set — in fewer
+/// face solves (deterministic counts, not time).
+#[test]
+fn a_coarse_grid_start_gives_the_same_answer_in_fewer_face_solves() {
+    let text = paper_halfspace().replace(
+        "foundation = \"half-space\"",
+        "foundation = \"pasternak\"\nshear = 40.0",
+    );
+    let p = problem(&text, 128, "auto");
+    let ops = Operators::assemble_with(&p.model, true);
+    assert!(ops.n_sigma() >= liftoff::analysis::NESTED_MIN_NODES);
+    let method = qp(QpSolver::ActiveSet);
+    let cold = solve(&ops, &method).expect("cold start");
+    let nested = liftoff::analysis::run(&p.model, &ops, &method, 0.0)
+        .expect("nested start")
+        .solution;
+    assert!(cold.status.converged() && nested.status.converged());
+    assert!(
+        nested.info.notes.iter().any(|n| n.contains("started from")),
+        "{:?}",
+        nested.info.notes
+    );
+    let (c, n) = (
+        cold.info.active_set.expect("diagnostics").iterations,
+        nested.info.active_set.expect("diagnostics").iterations,
+    );
+    let peak = max_abs(&cold.sigma);
+    let ds = max_abs_diff(&cold.sigma, &nested.sigma) / peak;
+    eprintln!("Pasternak 128²: {c} face solves cold, {n} from the coarse start; Δσ {ds:.1e}");
+    // Both stop at the KKT tolerance 1e-10 of their scales.
+    assert!(ds <= SIGMA, "σ differs by {ds:.1e} of the peak");
+    let weak = 1e-7 * peak;
+    for (x, y) in cold.sigma.iter().zip(&nested.sigma) {
+        if x.abs() > weak || y.abs() > weak {
+            assert!(*x > 0.0 && *y > 0.0 || (*x <= weak && *y <= weak));
+        }
+    }
+    assert!(2 * n <= c, "{n} face solves from the coarse start, {c} cold");
+}

@@ -305,9 +305,10 @@ pub(super) fn normalise(
     // still carries them (curling, a self-equilibrated pair), against a stated reference. The
     // method decides whether such a model can be solved: `validate::problem` refuses it for
     // unbonded contact.
-    let (p_force, reference) = if total.abs() > 1e-12 * gross {
+    let tiny = f64::MIN_POSITIVE;
+    let (p_force, reference) = if total.abs() > 1e-12 * gross.max(tiny) {
         (total.abs() / 4.0, LoadReference::NetLoad)
-    } else if gross > 0.0 {
+    } else if gross / 8.0 >= tiny {
         // Half the gross load acts downward.
         (gross / 8.0, LoadReference::DownwardLoad)
     } else {
@@ -318,10 +319,10 @@ pub(super) fn normalise(
         } else {
             largest
         };
-        if p == 0.0 {
+        if p < tiny {
             return Err(Error::invalid(
                 "load",
-                format!("{what}the loads add up to zero (every magnitude is 0): give a load with a non-zero force, pressure or temperature difference"),
+                format!("{what}the loads add up to zero (every magnitude is 0, or below 1e-308): give a load with a non-zero force, pressure or temperature difference"),
             ));
         }
         (p, LoadReference::ThermalMoment)

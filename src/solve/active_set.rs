@@ -428,8 +428,10 @@ pub fn project(y: &[f64], c: &[Vec<f64>], b: &[f64]) -> Option<Vec<f64>> {
     (rel <= 1e-10).then_some(sigma)
 }
 
-/// Solve the unbonded QP by the matrix-free active-set method.
-pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
+/// Solve the unbonded QP by the matrix-free active-set method, from `start` when given
+/// (pressures at the nodes, e.g. a coarser grid's solution carried over: the first set is the
+/// points it leaves at zero), else from the feasible point nearest σ = 0.
+pub fn solve(ops: &Operators, settings: &QpSettings, start: Option<&[f64]>) -> Result<Solution> {
     let t0 = Instant::now();
     if ops.constraints.kind != ConstraintPoints::Nodal {
         return Err(Error::invalid(
@@ -458,7 +460,7 @@ pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
         safeguard_steps: 0,
         cg_total: 0,
     };
-    let end = match run.primal_dual(&mut sys, ops)? {
+    let end = match run.primal_dual(&mut sys, ops, start)? {
         Ok(end) => end,
         Err(last) => run.feasible(&mut sys, ops, &last)?,
     };
@@ -572,6 +574,7 @@ impl Run {
         &mut self,
         sys: &mut IterativeSchur,
         ops: &Operators,
+        warm: Option<&[f64]>,
     ) -> Result<std::result::Result<End, Vec<f64>>> {
         let n = ops.n_sigma();
         let tol = self.settings.tolerance;
@@ -587,6 +590,19 @@ impl Run {
         if k0.natural <= tol {
             return Ok(Ok((p0, alpha0, k0, Status::Converged)));
         }
+        // A start carried over from elsewhere, made feasible: its zeros whose gap does not
+        // close are the first set. (Checked against n: a start of another grid is ignored.)
+        let (p0, g0, alpha0) = match warm
+            .filter(|w| w.len() == n)
+            .and_then(|w| project(w, &sys.c, &sys.rf))
+        {
+            Some(x) => {
+                let p = Point::new(sys, ops, x);
+                let (g, alpha) = reduced_gradient(sys, &p);
+                (p, g, alpha)
+            }
+            None => (p0, g0, alpha0),
+        };
         let g_s = gap_scale(sys, &p0, &alpha0);
         let mut held: Vec<bool> = (0..n)
             .map(|i| p0.sigma[i] == 0.0 && g0[i] >= -tol * g_s)

@@ -247,6 +247,26 @@ pub struct Solution {
 /// a feasibility check) by the penalty iteration or the QP. Every solution's reaction is
 /// checked against the load.
 pub fn solve(ops: &Operators, method: &Method) -> Result<Solution> {
+    solve_from(ops, method, None)
+}
+
+/// Whether `method` on `ops` runs the matrix-free active-set QP, the one method that takes a
+/// start ([`solve_from`]).
+pub fn takes_start(ops: &Operators, method: &Method) -> bool {
+    match method {
+        Method::Qp(s) => {
+            let toeplitz = matches!(ops.t.as_ref(), Compliance::Toeplitz(_));
+            s.resolve(ops.foundation, ops.constraints.kind, toeplitz) == QpSolver::ActiveSet
+                && ops.constraints.kind == ConstraintPoints::Nodal
+        }
+        _ => false,
+    }
+}
+
+/// [`solve`], with the nodal pressures `start` as the matrix-free active-set QP's first
+/// iterate where it runs ([`takes_start`]); the other methods ignore it. The answer does not
+/// depend on the start (the QP's solution is unique), only the number of face solves does.
+pub fn solve_from(ops: &Operators, method: &Method, start: Option<&[f64]>) -> Result<Solution> {
     method.validate()?;
     let sol = match method {
         Method::Bonded => {
@@ -263,7 +283,7 @@ pub fn solve(ops: &Operators, method: &Method) -> Result<Solution> {
         }
         Method::Qp(settings) => {
             check_feasible(ops)?;
-            solve_qp(ops, settings)?
+            solve_qp(ops, settings, start)?
         }
     };
     check_equilibrium(ops, &sol)?;
@@ -273,11 +293,11 @@ pub fn solve(ops: &Operators, method: &Method) -> Result<Solution> {
 /// The QP by the solver its settings resolve to on these operators. Under `qp_solver = auto`
 /// a clarabel solve that stops without a solution is solved again by the active-set method
 /// where it can be (nodal constraints), and the notes say so.
-fn solve_qp(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
+fn solve_qp(ops: &Operators, settings: &QpSettings, start: Option<&[f64]>) -> Result<Solution> {
     let toeplitz = matches!(ops.t.as_ref(), Compliance::Toeplitz(_));
     let solver = settings.resolve(ops.foundation, ops.constraints.kind, toeplitz);
     if solver == QpSolver::ActiveSet {
-        return active_set::solve(ops, settings);
+        return active_set::solve(ops, settings, start);
     }
     let sol = match settings.form.resolve(&ops.t) {
         QpForm::Lifted => sparse_qp::solve_sparse(ops, settings, SparseForm::Lifted)?,
@@ -300,7 +320,7 @@ fn solve_qp(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
     if !retry {
         return Ok(sol);
     }
-    let mut again = active_set::solve(ops, settings)?;
+    let mut again = active_set::solve(ops, settings, start)?;
     again.info.notes.push(format!(
         "clarabel stopped ({}); solved again by the matrix-free active-set method",
         sol.status.describe()
