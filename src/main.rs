@@ -82,24 +82,16 @@ struct Overrides {
 }
 
 impl Overrides {
-    fn apply(&self, file: &mut SceneFile) {
-        if let Some(p) = self.penalty.clone() {
-            file.solver.penalty = p;
-        }
-        if let Some(c) = self.constraint {
-            file.solver.constraint = c;
-        }
-        if let Some(m) = self.mesh {
-            file.mesh.elements = m.to_vec();
-        }
-        if let Some(f) = self.qp_form {
-            file.solver.qp_form = f;
-        }
-        if let Some(q) = self.qp_solver {
-            file.solver.qp_solver = q;
-        }
-        if let Some(r) = self.solver {
-            file.solver.route = r;
+    /// The library's overrides (shared with the Python package) with these flags set.
+    fn library(&self) -> liftoff::scene::Overrides {
+        liftoff::scene::Overrides {
+            penalty: self.penalty.clone(),
+            constraint: self.constraint,
+            mesh: self.mesh,
+            qp_form: self.qp_form,
+            qp_solver: self.qp_solver,
+            solver: self.solver,
+            ..Default::default()
         }
     }
 }
@@ -369,18 +361,13 @@ fn with_progress<T>(len: usize, run: impl FnOnce(&mut dyn FnMut(&str)) -> T) -> 
 }
 
 fn solve(args: SolveArgs) -> Result<(), Failure> {
-    let problem = load_problem(&args.scene, |file| {
-        if let Some(c) = args.contact {
-            file.solver.contact = c;
-        }
-        if let Some(m) = args.method {
-            file.solver.method = m;
-        }
-        args.overrides.apply(file);
-        if let Some(s) = args.symmetry {
-            file.mesh.symmetry = s;
-        }
-    })?;
+    let overrides = liftoff::scene::Overrides {
+        contact: args.contact,
+        method: args.method,
+        symmetry: args.symmetry,
+        ..args.overrides.library()
+    };
+    let problem = load_problem(&args.scene, |file| overrides.apply(file))?;
     if let Some(dir) = &args.out {
         output::prepare_dir(dir)?;
     }
@@ -481,7 +468,7 @@ fn solve_combinations(args: &SolveArgs, problem: &Problem) -> Result<(), Failure
 }
 
 fn compare(args: CompareArgs) -> Result<(), Failure> {
-    let problem = load_problem(&args.scene, |file| args.overrides.apply(file))?;
+    let problem = load_problem(&args.scene, |file| args.overrides.library().apply(file))?;
     note_first_combination(&problem);
     output::prepare_dir(&args.out)?;
     let c = liftoff::compare::compare(&problem)?;

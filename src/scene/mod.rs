@@ -12,12 +12,14 @@
 
 pub mod builder;
 mod loads;
+pub mod overrides;
 mod numbers;
 pub mod spec;
 pub mod validate;
 
 pub use builder::ModelBuilder;
 pub use loads::{DEFAULT_CASE, MAX_VOID_DEPTH_RATIO};
+pub use overrides::Overrides;
 pub use spec::*;
 
 use crate::error::{Error, Result};
@@ -69,6 +71,23 @@ impl SceneFile {
     /// Parse TOML text.
     pub fn parse(text: &str) -> Result<Self> {
         toml::from_str(text).map_err(|e| Error::Parse(e.to_string()))
+    }
+
+    /// Parse a scene given as JSON with the scene file's keys (a Python dict, say).
+    pub fn from_json(text: &str) -> Result<Self> {
+        serde_json::from_str(text).map_err(|e| Error::Parse(e.to_string()))
+    }
+
+    /// A bundled scene (`example:NAME` on the command line), parsed.
+    pub fn example(name: &str) -> Result<Self> {
+        let text = crate::examples::scene(name).ok_or_else(|| {
+            let names: Vec<&str> = crate::examples::SCENES.iter().map(|s| s.0).collect();
+            Error::invalid(
+                "scene",
+                format!("no bundled example `{name}`; the examples are: {}", names.join(", ")),
+            )
+        })?;
+        Self::parse(text)
     }
 
     /// Validate and convert to the unit system.

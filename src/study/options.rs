@@ -9,7 +9,8 @@ use crate::scene::Problem;
 
 /// Which constraint points an ε̄ sweep compares; each kind gets its own assembly and QP
 /// reference.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
 pub enum ConstraintVariants {
     /// σ ≥ 0 at the nodes.
     #[default]
@@ -35,7 +36,8 @@ impl ConstraintVariants {
 
 /// Options of an ε̄ sweep ([`eps_sweep`]): which ε̄ and which constraint points. Field names
 /// are the names of the errors [`EpsSweepOptions::validate`] returns.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Deserialize)]
+#[serde(default, deny_unknown_fields)]
 pub struct EpsSweepOptions {
     /// Largest ε̄, in (0, 1).
     pub from: f64,
@@ -112,7 +114,8 @@ impl EpsSweepOptions {
 
 /// Options of a speed–accuracy study ([`tradeoff`]). Field names are the names of the errors
 /// [`TradeoffOptions::validate`] returns.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Deserialize)]
+#[serde(default, deny_unknown_fields)]
 pub struct TradeoffOptions {
     /// Elements per side of the whole plate along x (y follows μ), each in
     /// [`TradeoffOptions::MESH_RANGE`]; at least one.

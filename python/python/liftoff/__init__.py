@@ -1,0 +1,199 @@
+"""liftoff — rectangular Mindlin plates on tensionless (or bonded) Winkler, Pasternak and
+elastic half-space foundations, by the paper's penalty iteration or a convex QP.
+
+A thin, NumPy-native layer over the Rust library (the same code as the ``liftoff`` command):
+
+>>> import liftoff
+>>> s = liftoff.solve("example:paper-halfspace", method="qp")
+>>> s.V_max, s.contact_fraction, s.sigma.shape
+
+Scenes are a path to a ``.toml`` file, TOML text, ``"example:NAME"`` (``liftoff.examples()``)
+or a dict with the scene file's keys. Options are the CLI's: ``penalty`` ("auto" or ε̄),
+``qp_form``, ``qp_solver``, ``constraint``, ``solver`` (route), ``mesh`` (n or (nx, ny)),
+``symmetry``, ``contact``. Errors are ``liftoff.errors`` exceptions carrying the library's kind.
+"""
+
+from __future__ import annotations
+
+import json
+from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Union
+
+from . import _liftoff as _core
+from ._records import Records
+from ._scene import Scene, options_json, scene_pair
+from ._solution import Combinations, Solution, from_core
+from ._sweep import Grid, make_grid, run_all, stability_chunk
+from ._sweep import sweep as _sweep
+from .errors import (
+    Infeasible,
+    LiftoffError,
+    LiftoffIOError,
+    NotConverged,
+    NumericalError,
+    SceneError,
+    TooLarge,
+)
+
+__version__ = _core.__version__
+
+__all__ = [
+    "examples",
+    "example_text",
+    "solve",
+    "compare",
+    "eps_sweep",
+    "tradeoff",
+    "stability",
+    "grid",
+    "sweep",
+    "Solution",
+    "Combinations",
+    "Records",
+    "Grid",
+    "LiftoffError",
+    "SceneError",
+    "TooLarge",
+    "Infeasible",
+    "NumericalError",
+    "LiftoffIOError",
+    "NotConverged",
+]
+
+
+def examples() -> Dict[str, str]:
+    """The bundled scenes, name → one-line description (solve one as ``"example:NAME"``)."""
+    return dict(_core.examples())
+
+
+def example_text(name: str) -> str:
+    """The TOML text of a bundled scene (a starting point for your own)."""
+    return _core.example_text(name)
+
+
+def solve(scene: Scene, method: Optional[str] = None, **options: Any) -> Union[Solution, Combinations]:
+    """Solve a scene with ``method`` "penalty", "qp" or "bonded" (default: the scene's own).
+
+    Returns a :class:`Solution` (NumPy arrays over the whole plate, the summary as attributes),
+    or for a scene with ``[[combination]]``s a :class:`Combinations` (one Solution per
+    combination, and the envelope). Raises :class:`NotConverged` (with ``.solution``) when the
+    method stops without a solution, and the other ``liftoff.errors`` for bad input. The GIL is
+    released during assembly and solves.
+    """
+    kind, text = scene_pair(scene)
+    result = from_core(*_core.solve(kind, text, options_json(method, options)))
+    if isinstance(result, Combinations):
+        if not result.converged:
+            failed = {**result.errors, **{n: s.status for n, s in result.solutions.items() if not s.converged}}
+            raise NotConverged(
+                "not every combination has a solution: "
+                + "; ".join(f"{n}: {m}" for n, m in failed.items()),
+                solution=result,
+            )
+    elif not result.converged:
+        raise NotConverged(
+            f"the {result.method} method did not converge ({result.status}); the numbers are not a solution",
+            solution=result,
+        )
+    return result
+
+
+def compare(scene: Scene, **options: Any) -> Dict[str, Any]:
+    """Penalty and QP on one assembly (``liftoff compare``): both summaries and their
+    differences, as the CLI's ``compare.json``."""
+    kind, text = scene_pair(scene)
+    return json.loads(_core.compare(kind, text, options_json(None, options)))
+
+
+def eps_sweep(
+    scene: Scene,
+    *,
+    start: float = 1e-1,
+    stop: float = 1e-12,
+    points: int = 12,
+    constraints: str = "nodal",
+    **options: Any,
+) -> Records:
+    """The penalty solution against the QP as ε̄ falls from ``start`` to ``stop``
+    (``liftoff eps-sweep``): one record per (constraint points, ε̄); ``meta`` holds the fitted
+    slopes and the reference."""
+    kind, text = scene_pair(scene)
+    study = json.dumps({"from": start, "to": stop, "points": points, "constraints": constraints})
+    doc = json.loads(_core.eps_sweep(kind, text, options_json(None, options), study))
+    rows = doc.pop("rows", [])
+    return Records(rows, doc)
+
+
+def tradeoff(
+    scene: Scene,
+    *,
+    meshes: Sequence[int] = (8, 16, 32, 64),
+    penalties: Sequence[float] = (1e-2, 1e-4, 1e-6, 1e-8),
+    client: Any = None,
+    **options: Any,
+) -> Records:
+    """Speed against accuracy (``liftoff tradeoff``): one record per (method, mesh, ε̄) with its
+    time and error against the QP on twice the finest mesh. With a Dask ``client`` the study
+    runs as one task on the cluster (its points share that reference solve)."""
+    kind, text = scene_pair(scene)
+    study = json.dumps({"meshes": list(meshes), "penalties": list(penalties)})
+    opts = options_json(None, options)
+    if client is not None:
+        raw = client.gather(client.submit(_core.tradeoff, kind, text, opts, study, pure=False))
+    else:
+        raw = _core.tradeoff(kind, text, opts, study)
+    doc = json.loads(raw)
+    rows = doc.pop("points", [])
+    return Records(rows, doc)
+
+
+def stability(
+    scenes: Union[Scene, Sequence[Scene]],
+    *,
+    client: Any = None,
+    chunk: int = 8,
+    **options: Any,
+) -> Records:
+    """Where each method fails (``liftoff stability``): one record per run of the sweep over
+    Γ, Δ, μ, ε̄ and load position, for each scene. With a Dask ``client`` the runs are spread
+    over the cluster in tasks of ``chunk`` runs; rows come back in the study's order."""
+    if isinstance(scenes, (str, Mapping)) or not isinstance(scenes, Sequence):
+        scenes = [scenes]
+    pairs = [scene_pair(s) for s in scenes]
+    opts = options_json(None, options)
+    if client is None:
+        return Records(json.loads(_core.stability_rows(pairs, opts, None)))
+    n = _core.stability_len(pairs, opts)
+    tasks = [
+        {"scenes": pairs, "options": opts, "indices": list(range(i, min(i + chunk, n)))}
+        for i in range(0, n, chunk)
+    ]
+    rows: List[Dict[str, Any]] = []
+    for part in run_all(stability_chunk, tasks, client):
+        rows.extend(json.loads(part))
+    return Records(rows)
+
+
+def grid(base: Scene, axes: Mapping[str, Sequence[Any]]) -> Grid:
+    """Scenes for :func:`sweep`: ``base`` with dotted keys varied over value lists, e.g.
+    ``grid("example:slab-on-grade", {"plate.thickness": [0.15, 0.2], "foundation.modulus":
+    [2e7, 5e7]})`` — every combination, each row of the sweep carrying its parameters."""
+    return make_grid(base, axes)
+
+
+def sweep(
+    scenes_or_grid: Union[Iterable[Scene], Grid],
+    method: Optional[str] = None,
+    *,
+    client: Any = None,
+    workers: Optional[int] = None,
+    **options: Any,
+) -> Records:
+    """Solve many independent scenes: a list of scenes, or a :func:`grid`.
+
+    Runs on a local process pool (``workers`` processes, default: the CPU count) or, given a
+    ``dask.distributed.Client``, on its cluster (``pip install liftoff[dask]``; dask is imported
+    only by you). One record per scene in input order: its parameters, ``ok``, ``error`` and
+    ``error_kind`` (a failed case is a row, never a lost sweep), and the summary's scalars
+    (V_max, contact_fraction, w_max, pressure_max, status, iterations, …).
+    """
+    return _sweep(scenes_or_grid, method, client=client, workers=workers, **options)

@@ -1,0 +1,112 @@
+"""Solutions as NumPy arrays over the whole plate, with the summary as plain attributes."""
+
+from __future__ import annotations
+
+import json
+from typing import Any, Dict, List, Optional
+
+import numpy as np
+
+#: Nodal fields, each an array of shape (ny + 1, nx + 1) over the whole plate (row j is y_j).
+NODAL = ("x", "y", "s", "t", "w", "psi_x", "psi_y", "pressure", "gap", "V", "sigma", "contact")
+#: Element-centre fields, each of shape (ny, nx).
+ELEMENT = ("element_x", "element_y", "mx", "my", "mxy", "qx", "qy")
+
+
+def _array(raw: bytes, shape: Optional[tuple]) -> np.ndarray:
+    a = np.frombuffer(raw, dtype="<f8").copy()
+    return a.reshape(shape) if shape is not None and a.size == shape[0] * shape[1] else a
+
+
+class Solution:
+    """One solved scene (or one load combination).
+
+    Arrays over the whole plate, physical units for SI scenes (m, Pa, N·m/m) and the paper's
+    for dimensionless ones, as in ``nodes.csv`` / ``elements.csv``:
+
+    - nodal, shape ``(ny + 1, nx + 1)``: ``x``, ``y`` (coordinates), ``s``, ``t`` (x/L, y/μL),
+      ``w`` (deflection, downward), ``psi_x``, ``psi_y`` (rotations), ``pressure`` (contact
+      pressure, compression positive), ``gap`` (≥ 0 where the plate lifted), ``V`` and
+      ``sigma`` (the paper's dimensionless deflection and pressure), ``contact`` (bool);
+    - element centres, shape ``(ny, nx)``: ``element_x``, ``element_y``, ``mx``, ``my``,
+      ``mxy`` (moments per unit length, positive: tension on the soil side), ``qx``, ``qy``.
+
+    Every key of the summary (``liftoff solve --json``; README "summary.json") is an attribute:
+    ``V_max``, ``V_center``, ``V_corner``, ``w_max``, ``pressure_max``, ``contact_fraction``,
+    ``contact_radius``, ``contact_extent``, ``converged``, ``status``, ``iterations``,
+    ``time_s``, ``method``, ``qp_solver``, ``solver_info``, ``dimensionless``, … ``summary`` is
+    the whole dict.
+    """
+
+    def __init__(self, summary: Dict[str, Any], fields: Dict[str, Any]):
+        self.summary = summary
+        shape = tuple(fields.get("shape", ())) or None
+        eshape = tuple(fields.get("element_shape", ())) or None
+        for name in NODAL:
+            setattr(self, name, _array(fields[name], shape))
+        self.contact = self.contact.astype(bool)
+        for name in ELEMENT:
+            setattr(self, name, _array(fields[name], eshape))
+        for key, value in summary.items():
+            if not hasattr(self, key):
+                setattr(self, key, value)
+
+    @property
+    def arrays(self) -> Dict[str, np.ndarray]:
+        """Every array by name."""
+        return {n: getattr(self, n) for n in NODAL + ELEMENT}
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The summary with every array added (NumPy arrays)."""
+        out = dict(self.summary)
+        out.update(self.arrays)
+        return out
+
+    def __repr__(self) -> str:
+        return (
+            f"<liftoff.Solution {self.summary.get('title')!r}: {self.summary.get('method')}, "
+            f"{self.summary.get('status')}, V_max={self.summary.get('V_max'):.6g}, "
+            f"contact {100 * self.summary.get('contact_fraction', 0):.1f} %>"
+        )
+
+
+class Combinations:
+    """Every load combination of a scene: ``solutions`` (name → :class:`Solution`), ``errors``
+    (name → message, for combinations without a solution), ``envelope`` (extremes over all
+    combinations, the CLI's ``envelope.json``), ``summary`` (the whole ``--json`` document)."""
+
+    def __init__(self, doc: Dict[str, Any], fields: List[Any]):
+        self.summary = doc
+        self.solutions: Dict[str, Solution] = {}
+        self.errors: Dict[str, str] = {}
+        for run, f in zip(doc["combinations"], fields):
+            if run.get("summary") is not None and f is not None:
+                self.solutions[run["name"]] = Solution(run["summary"], f)
+            else:
+                self.errors[run["name"]] = run.get("error") or "no solution"
+        self.envelope = doc.get("envelope")
+
+    @property
+    def converged(self) -> bool:
+        """True when every combination converged."""
+        return not self.errors and all(s.converged for s in self.solutions.values())
+
+    def __getitem__(self, name: str) -> Solution:
+        return self.solutions[name]
+
+    def __iter__(self):
+        return iter(self.solutions.values())
+
+    def __len__(self) -> int:
+        return len(self.solutions) + len(self.errors)
+
+    def __repr__(self) -> str:
+        return f"<liftoff.Combinations {list(self.solutions)} errors={list(self.errors)}>"
+
+
+def from_core(summary_json: str, fields: Any):
+    """A Solution or Combinations from the compiled core's answer."""
+    doc = json.loads(summary_json)
+    if "combinations" in doc:
+        return Combinations(doc, fields)
+    return Solution(doc, fields)
