@@ -1,0 +1,262 @@
+"""The Python package against the command line (the same library, a different front end):
+numbers equal to the CLI's --json and CSV files, every public function, pickling, one exception
+per bad-input family, and sweeps on a real dask.distributed LocalCluster equal to serial runs.
+
+The CLI binary is ``target/release/liftoff`` of this checkout (``./test`` builds it first), or
+``$LIFTOFF_BIN``."""
+
+from __future__ import annotations
+
+import csv
+import json
+import os
+import pathlib
+import pickle
+import subprocess
+
+import numpy as np
+import pytest
+
+import liftoff
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+BIN = os.environ.get("LIFTOFF_BIN", str(ROOT / "target" / "release" / "liftoff"))
+
+SMALL = {
+    "dimensionless": {"foundation": "winkler", "gamma": 0.25e-3, "delta": 0.002857, "mu": 1.0, "nu": 0.3},
+    "load": [{"kind": "point", "x": 0.0, "y": 0.0, "force": 1.0}],
+    "mesh": {"elements": [8, 8]},
+}
+
+
+def cli(*args: str) -> subprocess.CompletedProcess:
+    if not os.path.exists(BIN):
+        pytest.fail(f"the CLI binary {BIN} is missing: run `cargo build --release` (./test does)")
+    return subprocess.run([BIN, *args], capture_output=True, text=True, check=False)
+
+
+def cli_json(*args: str) -> dict:
+    r = cli("solve", *args, "--json")
+    assert r.returncode == 0, r.stderr
+    return json.loads(r.stdout)
+
+
+def read_csv(path: pathlib.Path) -> dict:
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+
+
+# -- the issue's must-show line ---------------------------------------------------------------
+
+
+def test_v_max_equals_the_cli_json():
+    s = liftoff.solve("example:paper-halfspace", method="qp")
+    ref = cli_json("example:paper-halfspace", "--method", "qp")
+    # The same library on the same operators: the same bits.
+    assert s.V_max == ref["V_max"]
+    assert s.summary == ref | {"time_s": s.summary["time_s"], "method_time_s": s.summary["method_time_s"]}
+
+
+@pytest.mark.parametrize("name", ["slab-on-grade", "paper-halfspace", "footing"])
+def test_arrays_equal_the_cli_csv(name, tmp_path):
+    s = liftoff.solve(f"example:{name}")
+    r = cli("solve", f"example:{name}", "--out", str(tmp_path))
+    assert r.returncode == 0, r.stderr
+    nodes = read_csv(tmp_path / "nodes.csv")
+    elements = read_csv(tmp_path / "elements.csv")
+    # The CSV prints 10 significant digits ({:.9e}): equal to that round-off.
+    for key, arr in [("x", s.x), ("y", s.y), ("w", s.w), ("psi_x", s.psi_x), ("psi_y", s.psi_y),
+                     ("pressure", s.pressure), ("gap", s.gap), ("V", s.V), ("sigma", s.sigma)]:
+        ref = nodes[key]
+        scale = max(np.abs(ref).max(), 1e-300)
+        assert np.allclose(arr.ravel(), ref, rtol=1e-9, atol=1e-9 * scale), key
+    assert np.array_equal(s.contact.ravel(), nodes["contact"].astype(bool))
+    for key, arr in [("x", s.element_x), ("y", s.element_y), ("mx", s.mx), ("my", s.my),
+                     ("mxy", s.mxy), ("qx", s.qx), ("qy", s.qy)]:
+        ref = elements[key]
+        scale = max(np.abs(ref).max(), 1e-300)
+        assert np.allclose(arr.ravel(), ref, rtol=1e-9, atol=1e-9 * scale), key
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert s.V_max == summary["V_max"] and s.contact_fraction == summary["contact_fraction"]
+
+
+# -- scenes in every form ---------------------------------------------------------------------
+
+
+def test_examples_list_and_text():
+    ex = liftoff.examples()
+    assert "paper-halfspace" in ex and "slab-on-grade" in ex
+    assert all(isinstance(d, str) and d for d in ex.values())
+    assert "[plate]" in liftoff.example_text("slab-on-grade")
+
+
+def test_a_dict_a_path_and_toml_text_are_the_same_scene(tmp_path):
+    text = liftoff.example_text("paper-winkler")
+    path = tmp_path / "scene.toml"
+    path.write_text(text)
+    a = liftoff.solve(text)
+    b = liftoff.solve(str(path))
+    c = liftoff.solve(path)  # os.PathLike
+    d = liftoff.solve("example:paper-winkler")
+    for other in (b, c, d):
+        assert np.array_equal(a.w, other.w) and a.V_max == other.V_max
+    s = liftoff.solve(SMALL)
+    t = liftoff.solve(
+        "[dimensionless]\nfoundation = \"winkler\"\ngamma = 0.25e-3\ndelta = 0.002857\nmu = 1.0\n"
+        "nu = 0.3\n[[load]]\nkind = \"point\"\nx = 0.0\ny = 0.0\nforce = 1.0\n[mesh]\nelements = [8, 8]\n"
+    )
+    assert np.array_equal(s.sigma, t.sigma)
+
+
+def test_options_are_the_clis():
+    ref = cli_json("example:paper-winkler", "--method", "qp", "--mesh", "12,12", "--qp-solver", "clarabel")
+    s = liftoff.solve("example:paper-winkler", method="qp", mesh=12, qp_solver="clarabel")
+    assert s.V_max == ref["V_max"] and s.qp_solver == "clarabel"
+    assert s.sigma.shape == (13, 13)
+    p = liftoff.solve("example:paper-winkler", method="penalty", penalty=1e-6, symmetry="none")
+    ref = cli_json("example:paper-winkler", "--method", "penalty", "--penalty", "1e-6", "--symmetry", "none")
+    assert p.V_max == ref["V_max"] and p.symmetry == "full"
+    b = liftoff.solve("example:paper-winkler", method="bonded")
+    assert b.contact == "bonded" if isinstance(b.contact, str) else b.summary["contact"] == "bonded"
+
+
+def test_combinations_give_a_solution_each_and_the_envelope():
+    c = liftoff.solve("example:raft-combinations")
+    assert isinstance(c, liftoff.Combinations)
+    ref = cli_json("example:raft-combinations")
+    names = [r["name"] for r in ref["combinations"]]
+    assert list(c.solutions) == names and not c.errors
+    for r in ref["combinations"]:
+        assert c[r["name"]].V_max == r["summary"]["V_max"]
+    assert c.envelope == ref["envelope"]
+
+
+def test_solutions_and_records_pickle():
+    s = liftoff.solve(SMALL, method="qp")
+    t = pickle.loads(pickle.dumps(s))
+    assert np.array_equal(t.sigma, s.sigma) and t.V_max == s.V_max and t.summary == s.summary
+    d = s.to_dict()
+    assert d["V_max"] == s.V_max and np.array_equal(d["w"], s.w)
+    r = liftoff.sweep([SMALL], workers=1)
+    assert pickle.loads(pickle.dumps(r)) == r
+
+
+# -- errors: one per bad-input family ---------------------------------------------------------
+
+
+def test_a_bad_value_is_a_scene_error_naming_its_field():
+    bad = json.loads(json.dumps(SMALL))
+    bad["dimensionless"]["gamma"] = -1.0
+    with pytest.raises(liftoff.SceneError) as e:
+        liftoff.solve(bad)
+    assert e.value.field == "dimensionless.gamma" and e.value.kind == "invalid"
+    assert pickle.loads(pickle.dumps(e.value)).field == "dimensionless.gamma"
+
+
+def test_unparsable_text_unknown_keys_options_and_examples_are_scene_errors():
+    with pytest.raises(liftoff.SceneError):
+        liftoff.solve("[plate\nlength = 1")
+    with pytest.raises(liftoff.SceneError):
+        liftoff.solve({**SMALL, "plaet": {}})
+    with pytest.raises(liftoff.SceneError, match="unknown option"):
+        liftoff.solve(SMALL, methd="qp")
+    with pytest.raises(liftoff.SceneError, match="method"):
+        liftoff.solve(SMALL, method="simplex")
+    with pytest.raises(liftoff.SceneError, match="no bundled example"):
+        liftoff.solve("example:nope")
+    with pytest.raises(liftoff.SceneError):
+        liftoff.solve(42)
+
+
+def test_a_missing_file_is_an_io_error():
+    with pytest.raises(liftoff.LiftoffIOError) as e:
+        liftoff.solve("no/such/scene.toml")
+    assert isinstance(e.value, OSError)
+
+
+def test_too_large_infeasible_and_not_converged():
+    with pytest.raises(liftoff.TooLarge):
+        liftoff.solve("example:paper-halfspace", method="qp", qp_form="schur", solver="dense", mesh=400)
+    up = json.loads(json.dumps(SMALL))
+    up["load"][0]["force"] = -1.0
+    with pytest.raises(liftoff.Infeasible):
+        liftoff.solve(up, method="qp")
+    cap = json.loads(json.dumps(SMALL))
+    cap["solver"] = {"max_iterations": 1, "penalty": 1e-5}
+    with pytest.raises(liftoff.NotConverged) as e:
+        liftoff.solve(cap, method="penalty")
+    assert e.value.solution is not None and not e.value.solution.converged
+
+
+# -- studies -----------------------------------------------------------------------------------
+
+
+def test_compare_eps_sweep_and_tradeoff():
+    c = liftoff.compare(SMALL)
+    assert set(c) >= {"penalty", "qp"}
+    sw = liftoff.eps_sweep(SMALL, start=1e-3, stop=1e-7, points=3)
+    assert len(sw) == 3 and "slopes" in sw.meta
+    assert [r["eps"] for r in sw] == pytest.approx([1e-3, 1e-5, 1e-7])
+    tr = liftoff.tradeoff(SMALL, meshes=[4, 8], penalties=[1e-4])
+    assert {r["method"] for r in tr} == {"qp", "penalty"} and "reference" in tr.meta
+    frame = tr.to_pandas()
+    assert list(frame["mesh"]) == [r["mesh"] for r in tr]
+    with pytest.raises(liftoff.SceneError):
+        liftoff.eps_sweep(SMALL, points=1)
+
+
+# -- sweeps on Dask ----------------------------------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def client():
+    distributed = pytest.importorskip("distributed")
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                       dashboard_address=None)
+    c = distributed.Client(cluster)
+    yield c
+    c.close()
+    cluster.close()
+
+
+def grid_with_a_failure():
+    g = liftoff.grid(SMALL, {"dimensionless.gamma": [1e-4, 1e-3, 1e-2], "load[0].x": [0.0, 0.5, 1.5]})
+    # x = 1.5 lies outside the plate: those three rows fail with a scene error.
+    return g
+
+
+def test_a_sweep_on_a_local_cluster_equals_the_serial_sweep(client):
+    g = grid_with_a_failure()
+    serial = liftoff.sweep(g, method="qp", workers=1)
+    dask = liftoff.sweep(g, method="qp", client=client)
+    pool = liftoff.sweep(g, method="qp", workers=2)
+    assert [r["index"] for r in dask] == list(range(len(g)))
+    assert dask == serial == pool
+    failed = [r for r in serial if not r["ok"]]
+    assert len(failed) == 3 and all(r["error_kind"] == "invalid" and r["load[0].x"] == 1.5 for r in failed)
+    ok = [r for r in serial if r["ok"]]
+    assert all(r["converged"] and r["V_max"] > 0 for r in ok)
+    # The rows carry their parameters, and a grid row equals solving that scene alone.
+    one = liftoff.solve(g[4][1], method="qp")
+    assert serial[4]["V_max"] == one.V_max and serial[4]["dimensionless.gamma"] == 1e-3
+
+
+def test_a_bad_scene_in_a_list_is_a_row():
+    rows = liftoff.sweep([SMALL, "example:nope", "no/such.toml"], workers=1)
+    assert [r["ok"] for r in rows] == [True, False, False]
+    assert [r["error_kind"] for r in rows] == [None, "invalid", "io"]
+
+
+def test_stability_on_the_cluster_equals_the_local_run(client):
+    local = liftoff.stability(SMALL)
+    spread = liftoff.stability(SMALL, client=client, chunk=5)
+    strip = lambda rows: [{k: v for k, v in r.items() if k != "time_s"} for r in rows]
+    assert strip(spread) == strip(local) and len(local) > 20
+
+
+def test_tradeoff_takes_a_client(client):
+    a = liftoff.tradeoff(SMALL, meshes=[4, 8], penalties=[1e-4], client=client)
+    b = liftoff.tradeoff(SMALL, meshes=[4, 8], penalties=[1e-4])
+    strip = lambda rows: [{k: v for k, v in r.items() if k != "time_s"} for r in rows]
+    assert strip(a) == strip(b)
