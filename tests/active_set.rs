@@ -395,5 +395,8 @@ fn a_coarse_grid_start_gives_the_same_answer_in_fewer_face_solves() {
             assert!(*x > 0.0 && *y > 0.0 || (*x <= weak && *y <= weak));
         }
     }
-    assert!(2 * n <= c, "{n} face solves from the coarse start, {c} cold");
+    assert!(
+        2 * n <= c,
+        "{n} face solves from the coarse start, {c} cold"
+    );
 }

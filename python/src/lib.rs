@@ -93,8 +93,8 @@ fn scene_json(kind: &str, text: &str) -> PyResult<String> {
         "json" => return Ok(text.to_string()),
         _ => text.to_string(),
     };
-    let value: toml::Table = toml::from_str(&toml_text)
-        .map_err(|e| to_py(Error::Parse(e.to_string())))?;
+    let value: toml::Table =
+        toml::from_str(&toml_text).map_err(|e| to_py(Error::Parse(e.to_string())))?;
     json(&value)
 }
 

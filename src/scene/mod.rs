@@ -12,8 +12,8 @@
 
 pub mod builder;
 mod loads;
-pub mod overrides;
 mod numbers;
+pub mod overrides;
 pub mod spec;
 pub mod validate;
 
@@ -84,7 +84,10 @@ impl SceneFile {
             let names: Vec<&str> = crate::examples::SCENES.iter().map(|s| s.0).collect();
             Error::invalid(
                 "scene",
-                format!("no bundled example `{name}`; the examples are: {}", names.join(", ")),
+                format!(
+                    "no bundled example `{name}`; the examples are: {}",
+                    names.join(", ")
+                ),
             )
         })?;
         Self::parse(text)

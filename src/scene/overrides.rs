@@ -98,7 +98,11 @@ mod tests {
         assert_eq!(file.solver.contact, Contact::Bonded, "contact");
         assert_eq!(file.solver.method, MethodKind::Qp, "method");
         assert_eq!(file.solver.penalty, PenaltySpec::Value(1e-6), "penalty");
-        assert_eq!(file.solver.constraint, ConstraintPoints::Gauss, "constraint");
+        assert_eq!(
+            file.solver.constraint,
+            ConstraintPoints::Gauss,
+            "constraint"
+        );
         assert_eq!(file.mesh.elements, vec![8, 6], "mesh");
         assert_eq!(file.solver.qp_form, QpForm::Lifted, "qp_form");
         assert_eq!(file.solver.qp_solver, QpSolver::ActiveSet, "qp_solver");
@@ -116,7 +120,11 @@ mod tests {
 
     #[test]
     fn unknown_options_and_values_are_invalid() {
-        for bad in [r#"{"methd": "qp"}"#, r#"{"method": "simplex"}"#, r#"{"mesh": [8]}"#] {
+        for bad in [
+            r#"{"methd": "qp"}"#,
+            r#"{"method": "simplex"}"#,
+            r#"{"mesh": [8]}"#,
+        ] {
             match Overrides::from_json(bad) {
                 Err(Error::Invalid { field, .. }) => assert_eq!(field, "options", "{bad}"),
                 other => panic!("{bad}: expected Invalid, got {other:?}"),
