@@ -194,44 +194,38 @@ fn compare(py: Python<'_>, kind: &str, text: &str, options: &str) -> PyResult<St
     json(&c)
 }
 
-/// `liftoff eps-sweep` with the study's options (JSON of [`EpsSweepOptions`]).
+/// A study on one scene, `name` "eps_sweep" or "tradeoff" (`liftoff eps-sweep`,
+/// `liftoff tradeoff`), its options the JSON of [`EpsSweepOptions`] or [`TradeoffOptions`];
+/// the study's result as JSON.
 #[pyfunction]
-fn eps_sweep(
+fn study(
     py: Python<'_>,
+    name: &str,
     kind: &str,
     text: &str,
     options: &str,
     study: &str,
 ) -> PyResult<String> {
-    let o: EpsSweepOptions = serde_json::from_str(study)
-        .map_err(|e| to_py(Error::invalid("eps_sweep", e.to_string())))?;
-    let s = py
-        .detach(|| {
-            o.validate()?;
-            problem(kind, text, options).and_then(|p| o.run(&p, &mut |_| {}))
-        })
-        .map_err(to_py)?;
-    json(&s)
-}
-
-/// `liftoff tradeoff` with the study's options (JSON of [`TradeoffOptions`]).
-#[pyfunction]
-fn tradeoff(
-    py: Python<'_>,
-    kind: &str,
-    text: &str,
-    options: &str,
-    study: &str,
-) -> PyResult<String> {
-    let o: TradeoffOptions = serde_json::from_str(study)
-        .map_err(|e| to_py(Error::invalid("tradeoff", e.to_string())))?;
-    let t = py
-        .detach(|| {
-            o.validate()?;
-            problem(kind, text, options).and_then(|p| o.run(&p, &mut |_| {}))
-        })
-        .map_err(to_py)?;
-    json(&t)
+    let bad = |e: serde_json::Error| to_py(Error::invalid(name, e.to_string()));
+    match name {
+        "eps_sweep" => {
+            let o: EpsSweepOptions = serde_json::from_str(study).map_err(bad)?;
+            let r = py.detach(|| {
+                o.validate()?;
+                o.run(&problem(kind, text, options)?, &mut |_| {})
+            });
+            json(&r.map_err(to_py)?)
+        }
+        "tradeoff" => {
+            let o: TradeoffOptions = serde_json::from_str(study).map_err(bad)?;
+            let r = py.detach(|| {
+                o.validate()?;
+                o.run(&problem(kind, text, options)?, &mut |_| {})
+            });
+            json(&r.map_err(to_py)?)
+        }
+        _ => Err(PyRuntimeError::new_err(format!("no study `{name}`"))),
+    }
 }
 
 /// How many runs `liftoff stability` makes on these scenes (each a (kind, text) pair).
@@ -291,8 +285,7 @@ fn _liftoff(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(scene_json, m)?)?;
     m.add_function(wrap_pyfunction!(solve, m)?)?;
     m.add_function(wrap_pyfunction!(compare, m)?)?;
-    m.add_function(wrap_pyfunction!(eps_sweep, m)?)?;
-    m.add_function(wrap_pyfunction!(tradeoff, m)?)?;
+    m.add_function(wrap_pyfunction!(study, m)?)?;
     m.add_function(wrap_pyfunction!(stability_len, m)?)?;
     m.add_function(wrap_pyfunction!(stability_rows, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;

@@ -23,7 +23,7 @@ from ._records import Records
 from ._scene import Scene, options_json, scene_pair
 from ._solution import Combinations, Solution, from_core
 from ._sweep import Grid, make_grid, run_all, stability_chunk
-from ._sweep import sweep as _sweep
+from ._sweep import sweep as _run_sweep
 from .errors import (
     Infeasible,
     LiftoffError,
@@ -118,7 +118,7 @@ def eps_sweep(
     slopes and the reference."""
     kind, text = scene_pair(scene)
     study = json.dumps({"from": start, "to": stop, "points": points, "constraints": constraints})
-    doc = json.loads(_core.eps_sweep(kind, text, options_json(None, options), study))
+    doc = json.loads(_core.study("eps_sweep", kind, text, options_json(None, options), study))
     rows = doc.pop("rows", [])
     return Records(rows, doc)
 
@@ -138,9 +138,9 @@ def tradeoff(
     study = json.dumps({"meshes": list(meshes), "penalties": list(penalties)})
     opts = options_json(None, options)
     if client is not None:
-        raw = client.gather(client.submit(_core.tradeoff, kind, text, opts, study, pure=False))
+        raw = client.gather(client.submit(_core.study, "tradeoff", kind, text, opts, study, pure=False))
     else:
-        raw = _core.tradeoff(kind, text, opts, study)
+        raw = _core.study("tradeoff", kind, text, opts, study)
     doc = json.loads(raw)
     rows = doc.pop("points", [])
     return Records(rows, doc)
@@ -196,4 +196,4 @@ def sweep(
     ``error_kind`` (a failed case is a row, never a lost sweep), and the summary's scalars
     (V_max, contact_fraction, w_max, pressure_max, status, iterations, …).
     """
-    return _sweep(scenes_or_grid, method, client=client, workers=workers, **options)
+    return _run_sweep(scenes_or_grid, method, client=client, workers=workers, **options)
