@@ -13,6 +13,26 @@ use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict};
 
+/// Run a library call with the GIL released; a panic inside it (a bug) becomes a library
+/// error raised as `liftoff.NumericalError`, never a `PanicException` that `except Exception`
+/// would not catch.
+fn run<T: Send>(py: Python<'_>, f: impl FnOnce() -> liftoff::Result<T> + Send) -> PyResult<T> {
+    py.detach(|| {
+        std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)).unwrap_or_else(|panic| {
+            let what = panic
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| panic.downcast_ref::<String>().cloned())
+                .unwrap_or_default();
+            Err(Error::numerical(
+                "liftoff (internal error, please report the scene)",
+                what,
+            ))
+        })
+    })
+    .map_err(to_py)
+}
+
 /// A library error as the matching `liftoff.errors` exception (its class from the error's
 /// kind), carrying the message and, for a scene value, the field it names.
 fn to_py(e: Error) -> PyErr {
@@ -101,7 +121,7 @@ fn scene_json(kind: &str, text: &str) -> PyResult<String> {
 /// Validate a scene with options, without solving: its model's summary facts as JSON.
 #[pyfunction]
 fn check(py: Python<'_>, kind: &str, text: &str, options: &str) -> PyResult<String> {
-    let p = py.detach(|| problem(kind, text, options)).map_err(to_py)?;
+    let p = run(py, || problem(kind, text, options))?;
     json(&serde_json::json!({
         "title": p.model.title,
         "elements": p.model.elements,
@@ -116,30 +136,19 @@ fn fields<'py>(py: Python<'py>, r: &liftoff::post::Report) -> PyResult<Bound<'py
     let d = PyDict::new(py);
     let f = &r.field;
     let e = &r.elements;
+    // The columns of nodes.csv and elements.csv, by the same names and in the same order.
     let contact: Vec<f64> = f.contact.iter().map(|&c| f64::from(u8::from(c))).collect();
-    let nodal: [(&str, &[f64]); 12] = [
-        ("x", &f.x),
-        ("y", &f.y),
-        ("s", &f.s),
-        ("t", &f.t),
-        ("w", &f.w),
-        ("psi_x", &f.psi_x),
-        ("psi_y", &f.psi_y),
-        ("pressure", &f.pressure),
-        ("gap", &f.gap),
-        ("V", &f.v),
-        ("sigma", &f.sigma),
-        ("contact", &contact),
-    ];
-    let element: [(&str, &[f64]); 7] = [
-        ("element_x", &e.x),
-        ("element_y", &e.y),
-        ("mx", &e.mx),
-        ("my", &e.my),
-        ("mxy", &e.mxy),
-        ("qx", &e.qx),
-        ("qy", &e.qy),
-    ];
+    let mut nodal: Vec<(&str, &[f64])> = f.columns().to_vec();
+    nodal.push(("contact", &contact));
+    let element: Vec<(&str, &[f64])> = e
+        .columns()
+        .iter()
+        .map(|&(name, v)| match name {
+            "x" => ("element_x", v),
+            "y" => ("element_y", v),
+            _ => (name, v),
+        })
+        .collect();
     for (name, v) in nodal.iter().chain(element.iter()) {
         let bytes: Vec<u8> = v.iter().flat_map(|x| x.to_le_bytes()).collect();
         d.set_item(*name, PyBytes::new(py, &bytes))?;
@@ -162,15 +171,13 @@ fn solve<'py>(
     text: &str,
     options: &str,
 ) -> PyResult<(String, Bound<'py, PyAny>)> {
-    let p = py.detach(|| problem(kind, text, options)).map_err(to_py)?;
+    let p = run(py, || problem(kind, text, options))?;
     if p.combinations.is_empty() {
-        let a = py.detach(|| liftoff::analyse(&p)).map_err(to_py)?;
+        let a = run(py, || liftoff::analyse(&p))?;
         let s = a.summary.to_json().map_err(to_py)?;
         Ok((s, fields(py, &a.report)?.into_any()))
     } else {
-        let runs = py
-            .detach(|| liftoff::combination::analyse(&p, &|_| {}))
-            .map_err(to_py)?;
+        let runs = run(py, || liftoff::combination::analyse(&p, &|_| {}))?;
         let envelope = liftoff::combination::envelope(&runs.runs);
         let s = liftoff::output::combinations::combinations_json(&runs, envelope.as_ref())
             .map_err(to_py)?;
@@ -188,9 +195,9 @@ fn solve<'py>(
 /// `liftoff compare`: both methods on one assembly, as JSON.
 #[pyfunction]
 fn compare(py: Python<'_>, kind: &str, text: &str, options: &str) -> PyResult<String> {
-    let c = py
-        .detach(|| problem(kind, text, options).and_then(|p| liftoff::compare::compare(&p)))
-        .map_err(to_py)?;
+    let c = run(py, || {
+        problem(kind, text, options).and_then(|p| liftoff::compare::compare(&p))
+    })?;
     json(&c)
 }
 
@@ -210,19 +217,17 @@ fn study(
     match name {
         "eps_sweep" => {
             let o: EpsSweepOptions = serde_json::from_str(study).map_err(bad)?;
-            let r = py.detach(|| {
+            json(&run(py, || {
                 o.validate()?;
                 o.run(&problem(kind, text, options)?, &mut |_| {})
-            });
-            json(&r.map_err(to_py)?)
+            })?)
         }
         "tradeoff" => {
             let o: TradeoffOptions = serde_json::from_str(study).map_err(bad)?;
-            let r = py.detach(|| {
+            json(&run(py, || {
                 o.validate()?;
                 o.run(&problem(kind, text, options)?, &mut |_| {})
-            });
-            json(&r.map_err(to_py)?)
+            })?)
         }
         _ => Err(PyRuntimeError::new_err(format!("no study `{name}`"))),
     }
@@ -231,14 +236,12 @@ fn study(
 /// How many runs `liftoff stability` makes on these scenes (each a (kind, text) pair).
 #[pyfunction]
 fn stability_len(py: Python<'_>, scenes: Vec<(String, String)>, options: &str) -> PyResult<usize> {
-    let bases = py
-        .detach(|| {
-            scenes
-                .iter()
-                .map(|(k, t)| problem(k, t, options))
-                .collect::<liftoff::Result<Vec<_>>>()
-        })
-        .map_err(to_py)?;
+    let bases = run(py, || {
+        scenes
+            .iter()
+            .map(|(k, t)| problem(k, t, options))
+            .collect::<liftoff::Result<Vec<_>>>()
+    })?;
     Ok(stability_plan(&bases).len())
 }
 
@@ -252,33 +255,35 @@ fn stability_rows(
     options: &str,
     indices: Option<Vec<usize>>,
 ) -> PyResult<String> {
-    let rows = py
-        .detach(|| {
-            let bases = scenes
-                .iter()
-                .map(|(k, t)| problem(k, t, options))
-                .collect::<liftoff::Result<Vec<_>>>()?;
-            let plan = stability_plan(&bases);
-            let picked: Vec<usize> = indices.unwrap_or_else(|| (0..plan.len()).collect());
-            if let Some(&bad) = picked.iter().find(|&&i| i >= plan.len()) {
-                return Err(Error::invalid(
-                    "indices",
-                    format!("{bad} is beyond the plan's {} runs", plan.len()),
-                ));
-            }
-            use rayon::prelude::*;
-            Ok(picked
-                .par_iter()
-                .map(|&i| stability_run(&plan[i]))
-                .collect::<Vec<_>>())
-        })
-        .map_err(to_py)?;
+    let rows = run(py, || {
+        let bases = scenes
+            .iter()
+            .map(|(k, t)| problem(k, t, options))
+            .collect::<liftoff::Result<Vec<_>>>()?;
+        let plan = stability_plan(&bases);
+        let picked: Vec<usize> = indices.unwrap_or_else(|| (0..plan.len()).collect());
+        if let Some(&bad) = picked.iter().find(|&&i| i >= plan.len()) {
+            return Err(Error::invalid(
+                "indices",
+                format!("{bad} is beyond the plan's {} runs", plan.len()),
+            ));
+        }
+        use rayon::prelude::*;
+        Ok(picked
+            .par_iter()
+            .map(|&i| stability_run(&plan[i]))
+            .collect::<Vec<_>>())
+    })?;
     json(&rows)
 }
 
 /// The compiled core of `liftoff` (use the `liftoff` package, not this module).
 #[pymodule]
 fn _liftoff(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    // As the command line: faer's own threads off (the library parallelises where it pays), so
+    // a solve gives the command line's numbers to the last digit and pool or Dask workers do
+    // not oversubscribe the cores.
+    faer::set_global_parallelism(faer::Par::Seq);
     m.add_function(wrap_pyfunction!(examples, m)?)?;
     m.add_function(wrap_pyfunction!(example_text, m)?)?;
     m.add_function(wrap_pyfunction!(check, m)?)?;

@@ -97,6 +97,9 @@ def test_a_dict_a_path_and_toml_text_are_the_same_scene(tmp_path):
     path.write_text(text)
     a = liftoff.solve(text)
     b = liftoff.solve(str(path))
+    odd = tmp_path / "a = [b].toml"  # a file that exists is a path, whatever its name
+    odd.write_text(text)
+    assert liftoff.solve(str(odd)).V_max == b.V_max
     c = liftoff.solve(path)  # os.PathLike
     d = liftoff.solve("example:paper-winkler")
     for other in (b, c, d):
@@ -118,7 +121,8 @@ def test_options_are_the_clis():
     ref = cli_json("example:paper-winkler", "--method", "penalty", "--penalty", "1e-6", "--symmetry", "none")
     assert p.V_max == ref["V_max"] and p.symmetry == "full"
     b = liftoff.solve("example:paper-winkler", method="bonded")
-    assert b.contact == "bonded" if isinstance(b.contact, str) else b.summary["contact"] == "bonded"
+    assert b.contact_law == "bonded" == b.summary["contact"] and b.contact.dtype == bool
+    assert p.contact_law == "unbonded"
 
 
 def test_combinations_give_a_solution_each_and_the_envelope():

@@ -21,48 +21,43 @@ fn csv_err(path: &Path, e: csv::Error) -> Error {
 
 /// nodes.csv: x,y,s,t,w,psi_x,psi_y,pressure,gap,V,sigma,contact (whole plate).
 pub fn write_nodes(path: &Path, f: &FullField) -> Result<()> {
-    let mut w = csv::Writer::from_path(path).map_err(|e| csv_err(path, e))?;
-    w.write_record([
-        "x", "y", "s", "t", "w", "psi_x", "psi_y", "pressure", "gap", "V", "sigma", "contact",
-    ])
-    .map_err(|e| csv_err(path, e))?;
-    for i in 0..f.x.len() {
-        let row = [
-            f.x[i],
-            f.y[i],
-            f.s[i],
-            f.t[i],
-            f.w[i],
-            f.psi_x[i],
-            f.psi_y[i],
-            f.pressure[i],
-            f.gap[i],
-            f.v[i],
-            f.sigma[i],
-        ];
-        let mut rec: Vec<String> = row.iter().map(|v| format!("{v:.9e}")).collect();
+    let columns = f.columns();
+    let mut header: Vec<&str> = columns.iter().map(|(name, _)| *name).collect();
+    header.push("contact");
+    let rows = (0..f.x.len()).map(|i| {
+        let mut rec: Vec<String> = columns
+            .iter()
+            .map(|(_, c)| format!("{:.9e}", c[i]))
+            .collect();
         rec.push(if f.contact[i] { "1" } else { "0" }.to_string());
+        rec
+    });
+    write_csv(path, &header, rows)
+}
+
+/// elements.csv: x,y,mx,my,mxy,qx,qy at element centres.
+pub fn write_elements(path: &Path, e: &ElementField) -> Result<()> {
+    let columns = e.columns();
+    let header: Vec<&str> = columns.iter().map(|(name, _)| *name).collect();
+    let rows = (0..e.x.len()).map(|i| {
+        columns
+            .iter()
+            .map(|(_, c)| format!("{:.9e}", c[i]))
+            .collect()
+    });
+    write_csv(path, &header, rows)
+}
+
+/// A CSV file from its header and rows of formatted cells.
+fn write_csv(path: &Path, header: &[&str], rows: impl Iterator<Item = Vec<String>>) -> Result<()> {
+    let mut w = csv::Writer::from_path(path).map_err(|e| csv_err(path, e))?;
+    w.write_record(header).map_err(|e| csv_err(path, e))?;
+    for rec in rows {
         w.write_record(&rec).map_err(|e| csv_err(path, e))?;
     }
     w.flush().map_err(|e| Error::Io {
         path: path.display().to_string(),
         source: e,
-    })
-}
-
-/// elements.csv: x,y,mx,my,mxy,qx,qy at element centres.
-pub fn write_elements(path: &Path, e: &ElementField) -> Result<()> {
-    let mut w = csv::Writer::from_path(path).map_err(|er| csv_err(path, er))?;
-    w.write_record(["x", "y", "mx", "my", "mxy", "qx", "qy"])
-        .map_err(|er| csv_err(path, er))?;
-    for i in 0..e.x.len() {
-        let row = [e.x[i], e.y[i], e.mx[i], e.my[i], e.mxy[i], e.qx[i], e.qy[i]];
-        let rec: Vec<String> = row.iter().map(|v| format!("{v:.9e}")).collect();
-        w.write_record(&rec).map_err(|er| csv_err(path, er))?;
-    }
-    w.flush().map_err(|er| Error::Io {
-        path: path.display().to_string(),
-        source: er,
     })
 }
 

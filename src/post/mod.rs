@@ -76,6 +76,24 @@ impl FullField {
         self.nx + 1
     }
 
+    /// The numeric per-node columns of nodes.csv in its order, by name (node i + j (nx + 1));
+    /// `contact` is the one boolean column beside them.
+    pub fn columns(&self) -> [(&'static str, &[f64]); 11] {
+        [
+            ("x", &self.x),
+            ("y", &self.y),
+            ("s", &self.s),
+            ("t", &self.t),
+            ("w", &self.w),
+            ("psi_x", &self.psi_x),
+            ("psi_y", &self.psi_y),
+            ("pressure", &self.pressure),
+            ("gap", &self.gap),
+            ("V", &self.v),
+            ("sigma", &self.sigma),
+        ]
+    }
+
     /// Bilinear interpolation of a nodal field at (s, t) ∈ [−1, 1]².
     pub fn interpolate(&self, field: &[f64], s: f64, t: f64) -> f64 {
         let fx = ((s + 1.0) * 0.5 * self.nx as f64).clamp(0.0, self.nx as f64);
@@ -110,6 +128,21 @@ pub struct ElementField {
     pub qx: Vec<f64>,
     /// Transverse shear force on y faces, per unit length.
     pub qy: Vec<f64>,
+}
+
+impl ElementField {
+    /// The per-element columns of elements.csv in its order, by name (element ie + je nx).
+    pub fn columns(&self) -> [(&'static str, &[f64]); 7] {
+        [
+            ("x", &self.x),
+            ("y", &self.y),
+            ("mx", &self.mx),
+            ("my", &self.my),
+            ("mxy", &self.mxy),
+            ("qx", &self.qx),
+            ("qy", &self.qy),
+        ]
+    }
 }
 
 /// One point of a profile.

@@ -39,7 +39,9 @@ def scene_pair(scene: Scene) -> Tuple[str, str]:
         )
     if scene.startswith("example:"):
         return "example", scene[len("example:"):]
-    if "\n" in scene or "=" in scene or "[" in scene:
+    # A file that exists is a path whatever its name; text with a line break or a key = value
+    # is TOML; anything else is a path that must be readable.
+    if ("\n" in scene or "=" in scene) and not os.path.isfile(scene):
         return "toml", scene
     try:
         with open(scene, encoding="utf-8") as f:

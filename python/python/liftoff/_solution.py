@@ -35,7 +35,8 @@ class Solution:
     ``V_max``, ``V_center``, ``V_corner``, ``w_max``, ``pressure_max``, ``contact_fraction``,
     ``contact_radius``, ``contact_extent``, ``converged``, ``status``, ``iterations``,
     ``time_s``, ``method``, ``qp_solver``, ``solver_info``, ``dimensionless``, … ``summary`` is
-    the whole dict.
+    the whole dict. (One key is shadowed: ``contact`` is the nodal contact mask; the contact
+    law, "bonded" or "unbonded", is ``contact_law``.)
     """
 
     def __init__(self, summary: Dict[str, Any], fields: Dict[str, Any]):
@@ -47,6 +48,7 @@ class Solution:
         self.contact = self.contact.astype(bool)
         for name in ELEMENT:
             setattr(self, name, _array(fields[name], eshape))
+        self.contact_law = summary.get("contact")
         for key, value in summary.items():
             if not hasattr(self, key):
                 setattr(self, key, value)
