@@ -27,6 +27,12 @@ pub struct DimensionlessGroups {
     /// Pasternak only: the decay length λ/L = √(Γ_g μ Γ_w) (absent for the other soils).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub decay_length: Option<f64>,
+    /// Elastic layer only: the depth ratio h/L (absent for the other soils).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub depth: Option<f64>,
+    /// Elastic layer only: the layer's Poisson's ratio ν_s (absent for the other soils).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub soil_nu: Option<f64>,
     /// ε̄ of the penalty method (null for the QP and bonded contact, which have none).
     pub penalty: Option<f64>,
 }
@@ -150,6 +156,8 @@ impl Summary {
                 nu: model.groups.nu,
                 shear: model.groups.shear,
                 decay_length: model.groups.shear.map(|_| model.groups.decay_length()),
+                depth: model.groups.depth,
+                soil_nu: model.groups.soil_nu,
                 penalty: sol.method.penalty_epsilon(),
             },
             physical: model.physical,

@@ -408,7 +408,7 @@ pub(super) fn voids_for(
     let settlement = match groups.foundation {
         // Pasternak: its springs' settlement, an upper bound (the shear layer spreads the load).
         FoundationKind::Winkler | FoundationKind::Pasternak => 4.0 * c / area,
-        FoundationKind::HalfSpace => 3.0 * c * 4.0 / area.sqrt(),
+        FoundationKind::HalfSpace | FoundationKind::ElasticLayer => 3.0 * c * 4.0 / area.sqrt(),
     };
     raw.iter()
         .enumerate()

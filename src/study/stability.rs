@@ -56,7 +56,9 @@ impl StabilityParam {
                 // Half-space: the QP is dense and refused at 512 per side; the penalty takes
                 // the iterative route there (`Route::Auto`) and solves it.
                 // (the other non-local soil, Pasternak, likewise).
-                FoundationKind::HalfSpace | FoundationKind::Pasternak => {
+                FoundationKind::HalfSpace
+                | FoundationKind::Pasternak
+                | FoundationKind::ElasticLayer => {
                     vec![8.0, 16.0, 32.0, 64.0, 128.0, 512.0]
                 }
             },
