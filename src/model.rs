@@ -82,6 +82,9 @@ pub struct Groups {
     /// the factor 1 − ν_s² in Γ_h (None for the other soils).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub soil_nu: Option<f64>,
+    /// Elastic layer only: its rigid base, rough or smooth (None for the other soils).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub base: Option<crate::foundation::layer::Base>,
 }
 
 impl Groups {
@@ -92,6 +95,7 @@ impl Groups {
             Some(h) => crate::foundation::SoilShape {
                 length: h,
                 poisson: self.soil_nu.unwrap_or(0.0),
+                base: self.base.unwrap_or(crate::foundation::layer::Base::Rough),
             },
             None => crate::foundation::SoilShape::length(self.decay_length()),
         }

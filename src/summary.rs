@@ -33,6 +33,9 @@ pub struct DimensionlessGroups {
     /// Elastic layer only: the layer's Poisson's ratio ν_s (absent for the other soils).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub soil_nu: Option<f64>,
+    /// Elastic layer only: its rigid base, "rough" or "smooth" (absent for the other soils).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub base: Option<crate::foundation::layer::Base>,
     /// ε̄ of the penalty method (null for the QP and bonded contact, which have none).
     pub penalty: Option<f64>,
 }
@@ -158,6 +161,7 @@ impl Summary {
                 decay_length: model.groups.shear.map(|_| model.groups.decay_length()),
                 depth: model.groups.depth,
                 soil_nu: model.groups.soil_nu,
+                base: model.groups.base,
                 penalty: sol.method.penalty_epsilon(),
             },
             physical: model.physical,

@@ -9,7 +9,7 @@
 //!   wavenumber-domain integration.
 //! - Quarter and full models, dense and FFT routes, penalty and QP, SI and dimensionless.
 
-use liftoff::foundation::layer::LayerTable;
+use liftoff::foundation::layer::{Base, LayerTable};
 use liftoff::foundation::Compliance;
 use liftoff::method::{Method, PenaltySettings};
 use liftoff::model::ConstraintPoints;
@@ -31,8 +31,35 @@ fn scene(
     loads: &str,
     symmetry: &str,
 ) -> Problem {
+    scene_on(
+        Base::Rough,
+        foundation,
+        gamma,
+        depth,
+        delta,
+        n,
+        loads,
+        symmetry,
+    )
+}
+
+/// [`scene`] with the layer's base.
+#[allow(clippy::too_many_arguments)]
+fn scene_on(
+    base: Base,
+    foundation: &str,
+    gamma: f64,
+    depth: Option<f64>,
+    delta: f64,
+    n: usize,
+    loads: &str,
+    symmetry: &str,
+) -> Problem {
     let layer = depth.map_or(String::new(), |h| {
-        format!("depth = {h:e}\nsoil_nu = {NU_S}\n")
+        format!(
+            "depth = {h:e}\nsoil_nu = {NU_S}\nbase = \"{}\"\n",
+            base.name()
+        )
     });
     let text = format!(
         "[dimensionless]\nfoundation = \"{foundation}\"\ngamma = {gamma:e}\n{layer}delta = {delta:e}\nmu = 1.0\nnu = 0.3\n\n{loads}\n[mesh]\nelements = [{n}, {n}]\nsymmetry = \"{symmetry}\"\n\n[solver]\ncontact = \"unbonded\"\nmethod = \"penalty\"\npenalty = 1e-7\n"
@@ -72,8 +99,8 @@ fn centre_node(ops: &Operators) -> usize {
 
 /// h → ∞ gives the half-space, bonded and unbonded (point load, Γ_h = 0.25e−3, 16² quarter).
 /// The constant part of the correction settles the plate rigidly by c F(0)/h times the whole
-/// load (F(0) = ∫₀^∞ (1 − K) dt = 1.376854165455806 for ν = 0.3, by mpmath at 30 digits — a
-/// value the code does not use): after removing that shift, V differs from the half-space's
+/// load (F(0) = ∫₀^∞ (1 − K) dt = 1.376854165455806 for ν = 0.3 on the rough base and
+/// 1.167576837404346 on the smooth one, by mpmath at 25–30 digits — values the code does not use): after removing that shift, V differs from the half-space's
 /// by O(1/h³) (the ρ² term of F): a factor above 6 per doubling of h (third order gives 8;
 /// measured 7.9, 7.4) over h/L = 10, 20, 40, and below 1e−5 at 40. σ does not see the rigid
 /// shift and its O(1/h³) part is already 5e−6 at h/L = 10; it then meets a floor of ~5e−7,
@@ -82,18 +109,28 @@ fn centre_node(ops: &Operators) -> usize {
 /// asserted below 1e−5 at every depth and not rising.
 #[test]
 fn deep_layer_gives_the_half_space() {
-    let f0 = 1.376_854_165_455_805_7;
     let gamma = 0.25e-3;
-    for method in [
-        Method::Bonded,
-        Method::Penalty(PenaltySettings::fixed(1e-7)),
+    for (base, f0, method) in [
+        (Base::Rough, 1.376_854_165_455_805_7, Method::Bonded),
+        (
+            Base::Rough,
+            1.376_854_165_455_805_7,
+            Method::Penalty(PenaltySettings::fixed(1e-7)),
+        ),
+        (Base::Smooth, 1.167_576_837_404_345_7, Method::Bonded),
+        (
+            Base::Smooth,
+            1.167_576_837_404_345_7,
+            Method::Penalty(PenaltySettings::fixed(1e-7)),
+        ),
     ] {
         let hs = scene("half-space", gamma, None, 0.002857, 16, POINT, "auto");
         let (hops, hsol) = solve(&hs, &method, false);
         let w_hs = hops.node_w(&hsol.u);
         let mut diffs = Vec::new();
         for depth in [10.0, 20.0, 40.0] {
-            let p = scene(
+            let p = scene_on(
+                base,
                 "elastic-layer",
                 gamma,
                 Some(depth),
@@ -103,7 +140,7 @@ fn deep_layer_gives_the_half_space() {
                 "auto",
             );
             let (ops, sol) = solve(&p, &method, false);
-            assert!(sol.status.converged(), "layer h/L = {depth}");
+            assert!(sol.status.converged(), "{base:?} layer h/L = {depth}");
             // The whole plate's load is 4 (the quarter model carries 1).
             let shift = ops.foundation_constant * f0 / depth * 4.0;
             let w: Vec<f64> = ops.node_w(&sol.u).iter().map(|v| v + shift).collect();
@@ -111,7 +148,7 @@ fn deep_layer_gives_the_half_space() {
             let ds = rel_diff(&sol.sigma, &hsol.sigma);
             let raw = rel_diff(&ops.node_w(&sol.u), &w_hs);
             println!(
-                "{} h/L = {depth}: V {dv:.3e} (before the shift {raw:.3e}), σ {ds:.3e}",
+                "{base:?} {} h/L = {depth}: V {dv:.3e} (before the shift {raw:.3e}), σ {ds:.3e}",
                 method.name()
             );
             diffs.push((dv, ds));
@@ -129,7 +166,8 @@ fn deep_layer_gives_the_half_space() {
     }
 }
 
-/// h ≪ the loaded width gives Winkler with k = E_oed/h, i.e. Γ_w = Γ_h · 2π (h/L) ·
+/// h ≪ the loaded width gives Winkler with k = E_oed/h (rough base; the smooth base's
+/// k = E/((1 − ν²)h) likewise, bonded), i.e. Γ_w = Γ_h · 2π (h/L) ·
 /// (1 − 2ν_s)/(2(1 − ν_s)²) (the kernel's integral over the plane, C(0), in the groups); Γ_w =
 /// 0.25e−3 (ℓ = 0.126 L, resolved by the meshes) and Γ_h from it. With
 /// h = h_e/50 the layer's own departure from Winkler, O((h/ℓ)²) for the plate's radius of
@@ -142,10 +180,20 @@ fn deep_layer_gives_the_half_space() {
 #[test]
 fn thin_layer_gives_oedometric_winkler() {
     let gamma_w = 0.25e-3;
-    let slope = (1.0 - 2.0 * NU_S) / (2.0 * (1.0 - NU_S) * (1.0 - NU_S));
-    for method in [
-        Method::Bonded,
-        Method::Penalty(PenaltySettings::fixed(1e-7)),
+    // Rough base: K(t)/t → (1 − 2ν)/(2(1 − ν)²), k = E_oed/h; smooth: K(t)/t → 1/2,
+    // k = E/((1 − ν²)h) (the closed forms' slopes written out, not taken from the library).
+    for (base, slope, method) in [
+        (
+            Base::Rough,
+            (1.0 - 2.0 * NU_S) / (2.0 * (1.0 - NU_S) * (1.0 - NU_S)),
+            Method::Bonded,
+        ),
+        (
+            Base::Rough,
+            (1.0 - 2.0 * NU_S) / (2.0 * (1.0 - NU_S) * (1.0 - NU_S)),
+            Method::Penalty(PenaltySettings::fixed(1e-7)),
+        ),
+        (Base::Smooth, 0.5, Method::Bonded),
     ] {
         let mut diffs = Vec::new();
         for n in [10, 20, 40] {
@@ -153,7 +201,8 @@ fn thin_layer_gives_oedometric_winkler() {
             let depth = h_e / 50.0;
             let gamma_h = gamma_w / (2.0 * std::f64::consts::PI * depth * slope);
             let w = scene("winkler", gamma_w, None, 0.002857, n, POINT, "auto");
-            let p = scene(
+            let p = scene_on(
+                base,
                 "elastic-layer",
                 gamma_h,
                 Some(depth),
@@ -172,7 +221,7 @@ fn thin_layer_gives_oedometric_winkler() {
             let dv = rel_diff(&pops.node_w(&psol.u), &wops.node_w(&wsol.u));
             let ds = rel_diff(&psol.sigma, &wsol.sigma);
             println!(
-                "{} n = {n}: V differs by {dv:.3e}, σ by {ds:.3e}",
+                "{base:?} {} n = {n}: V differs by {dv:.3e}, σ by {ds:.3e}",
                 method.name()
             );
             diffs.push((dv, ds));
@@ -434,7 +483,9 @@ fn si_and_dimensionless_scenes_agree() {
 /// The shared table of one ν is computed once and reused (the cache the operators rely on).
 #[test]
 fn layer_table_is_shared_per_poisson_ratio() {
-    let a = LayerTable::shared(NU_S);
-    let b = LayerTable::shared(NU_S);
+    let a = LayerTable::shared(NU_S, Base::Rough);
+    let b = LayerTable::shared(NU_S, Base::Rough);
+    let c = LayerTable::shared(NU_S, Base::Smooth);
     assert!(std::sync::Arc::ptr_eq(&a, &b));
+    assert!(!std::sync::Arc::ptr_eq(&a, &c) && c.base == Base::Smooth);
 }

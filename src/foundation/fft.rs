@@ -482,7 +482,8 @@ mod tests {
         }
         // A layer whose kernel is cut within the plate (40 h = 0.8) and a deep one.
         for depth in [0.02, 0.7] {
-            let table = super::super::layer::LayerTable::shared(0.3);
+            let table =
+                super::super::layer::LayerTable::shared(0.3, super::super::layer::Base::Rough);
             check_kernel(
                 a,
                 b,

@@ -44,7 +44,7 @@ pub enum Kernel {
         /// λ in the caller's length unit.
         lambda: f64,
     },
-    /// Elastic layer of depth h on a rough rigid base: K(ρ) = 1/ρ − F(ρ/h)/h (the half-space
+    /// Elastic layer of depth h on a rigid base (rough or smooth): K(ρ) = 1/ρ − F(ρ/h)/h (the half-space
     /// minus a smooth correction, [`super::layer`]), c = (1 − ν_s²)/(π E_s) as for the
     /// half-space. Zero beyond [`super::layer::LAYER_CUTOFF`] depths.
     ElasticLayer {

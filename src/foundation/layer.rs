@@ -1,5 +1,6 @@
-//! The homogeneous elastic layer of depth h bonded to a rough rigid base: its surface compliance
-//! in the wavenumber domain and its spatial kernel by a Hankel transform.
+//! The homogeneous elastic layer of depth h on a rigid base, rough (bonded) or smooth
+//! (frictionless): its surface compliance in the wavenumber domain and its spatial kernel by a
+//! Hankel transform.
 //!
 //! **Symbol.** A surface pressure p cos(ξx) (or p J₀(ξρ)) on a layer of Young's modulus E and
 //! Poisson's ratio ν whose base z = h cannot move (u = w = 0) settles by C(ξ) p with
@@ -12,6 +13,11 @@
 //! closed form is checked in the tests below against a numerical solution of the layer's
 //! Navier equations for one wavenumber (the transfer matrix exp(A h) of the first-order
 //! system in (u, w, τ_xz, σ_zz), not derived from the closed form).
+//!
+//! **Smooth base** (τ_xz = w = 0 at z = h): K(t) = (cosh 2t − 1)/(sinh 2t + 2t), independent of
+//! ν (checked the same way). K(t) = t/2 − t⁵/90 + …: C(0) = (1 − ν²)h/E, a Winkler bed of modulus
+//! E/((1 − ν²)h) — the layer may now spread sideways on its base, so the long-wave modulus is not
+//! the oedometric one.
 //!
 //! **Spatial kernel.** The settlement at distance ρ from a unit point force is the Hankel
 //! transform w(ρ) = (1/2π) ∫₀^∞ C(ξ) J₀(ξρ) ξ dξ = (1 − ν²)/(πE) · G(ρ), with
@@ -37,8 +43,55 @@ const T_MAX: f64 = 30.0;
 /// Table spacing in s = ρ/h.
 const STEP: f64 = 1.0 / 64.0;
 
-/// The layer symbol K(t) of the rough rigid base (module docs), t = ξh ≥ 0.
-pub fn symbol(t: f64, nu: f64) -> f64 {
+/// How the layer meets its rigid base.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Base {
+    /// Bonded: u = w = 0 at the base.
+    Rough,
+    /// Frictionless: τ_xz = w = 0 at the base.
+    Smooth,
+}
+
+impl Base {
+    /// Name used in scene files and reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            Base::Rough => "rough",
+            Base::Smooth => "smooth",
+        }
+    }
+
+    /// The scene name's base, if it is one.
+    pub fn parse(name: &str) -> Option<Self> {
+        match name {
+            "rough" => Some(Base::Rough),
+            "smooth" => Some(Base::Smooth),
+            _ => None,
+        }
+    }
+
+    /// lim K(t)/t at t = 0: C(0) = 2(1 − ν²) h · slope / E.
+    pub fn slope(self, nu: f64) -> f64 {
+        match self {
+            Base::Rough => (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu) * (1.0 - nu)),
+            Base::Smooth => 0.5,
+        }
+    }
+}
+
+/// The layer symbol K(t) (module docs), t = ξh ≥ 0.
+pub fn symbol(t: f64, nu: f64, base: Base) -> f64 {
+    if base == Base::Smooth {
+        // (cosh 2t − 1)/(sinh 2t + 2t) with cosh 2t − 1 = 2 sinh² t (no cancellation near 0).
+        if t > 20.0 {
+            return 1.0 - one_minus_symbol(t, nu, base);
+        }
+        if t == 0.0 {
+            return 0.0;
+        }
+        return 2.0 * t.sinh().powi(2) / ((2.0 * t).sinh() + 2.0 * t);
+    }
     let kappa = 3.0 - 4.0 * nu;
     if t > 20.0 {
         // sinh, cosh overflow-free form: divide by e^{2t}/2.
@@ -53,7 +106,15 @@ pub fn symbol(t: f64, nu: f64) -> f64 {
 }
 
 /// 1 − K(t), without cancellation for large t.
-fn one_minus_symbol(t: f64, nu: f64) -> f64 {
+fn one_minus_symbol(t: f64, nu: f64, base: Base) -> f64 {
+    if base == Base::Smooth {
+        // 1 − K = (sinh 2t + 2t − cosh 2t + 1)/(sinh 2t + 2t) = (2t + 1 − e^{−2t})/(sinh 2t + 2t),
+        // 1 − e^{−2t} by expm1; at t = 0 the limit 1.
+        if t == 0.0 {
+            return 1.0;
+        }
+        return (2.0 * t - (-2.0 * t).exp_m1()) / ((2.0 * t).sinh() + 2.0 * t);
+    }
     let kappa = 3.0 - 4.0 * nu;
     // 1 − K = (2κ(cosh 2t − sinh 2t) + 4t² + 4t + 1 + κ²)/(2κ cosh 2t + 4t² + 1 + κ²), and
     // cosh 2t − sinh 2t = e^{−2t}.
@@ -67,11 +128,13 @@ pub fn bessel_j0(x: f64) -> f64 {
     libm::j0(x)
 }
 
-/// The correction F(s) = ∫₀^∞ (1 − K(t)) J₀(ts) dt of one Poisson's ratio, tabulated.
+/// The correction F(s) = ∫₀^∞ (1 − K(t)) J₀(ts) dt of one Poisson's ratio and base, tabulated.
 #[derive(Debug, PartialEq)]
 pub struct LayerTable {
     /// ν of the layer.
     pub nu: f64,
+    /// Its base.
+    pub base: Base,
     /// F(k·STEP), k = 0, 1, …
     values: Vec<f64>,
 }
@@ -79,29 +142,32 @@ pub struct LayerTable {
 /// The quadrature nodes (t, w·(1 − K(t))) of F on [0, T_MAX]: panels of width ¼ with 16
 /// Gauss points each. For s ≤ 41 a panel spans at most 1.7 periods of J₀(ts), which a 16-point
 /// rule (exact to degree 31) integrates to round-off.
-fn nodes(nu: f64) -> Vec<(f64, f64)> {
+fn nodes(nu: f64, base: Base) -> Vec<(f64, f64)> {
     let g = GaussRule::new(16);
     let panels = (T_MAX * 4.0) as usize;
     let mut out = Vec::with_capacity(panels * 16);
     for k in 0..panels {
         let (a, b) = (0.25 * k as f64, 0.25 * (k + 1) as f64);
         for (t, w) in g.on_interval(a, b) {
-            out.push((t, w * one_minus_symbol(t, nu)));
+            out.push((t, w * one_minus_symbol(t, nu, base)));
         }
     }
     out
 }
 
 /// F(s) by direct quadrature (no table): the reference of the table's interpolation.
-pub fn correction_direct(s: f64, nu: f64) -> f64 {
-    nodes(nu).iter().map(|&(t, w)| w * bessel_j0(t * s)).sum()
+pub fn correction_direct(s: f64, nu: f64, base: Base) -> f64 {
+    nodes(nu, base)
+        .iter()
+        .map(|&(t, w)| w * bessel_j0(t * s))
+        .sum()
 }
 
 impl LayerTable {
-    /// Tabulate F for Poisson's ratio `nu` (about 0.3 s on one core; see [`Self::shared`]).
-    pub fn new(nu: f64) -> Self {
+    /// Tabulate F for Poisson's ratio `nu` and `base` (see [`Self::shared`]).
+    pub fn new(nu: f64, base: Base) -> Self {
         use rayon::prelude::*;
-        let quad = nodes(nu);
+        let quad = nodes(nu, base);
         let n = (LAYER_CUTOFF / STEP) as usize + 8;
         let values = (0..n)
             .into_par_iter()
@@ -110,20 +176,23 @@ impl LayerTable {
                 quad.iter().map(|&(t, w)| w * bessel_j0(t * s)).sum()
             })
             .collect();
-        Self { nu, values }
+        Self { nu, base, values }
     }
 
-    /// The table of `nu`, computed once per process and shared.
-    pub fn shared(nu: f64) -> Arc<Self> {
+    /// The table of `nu` and `base`, computed once per process and shared.
+    pub fn shared(nu: f64, base: Base) -> Arc<Self> {
         static CACHE: OnceLock<Mutex<Vec<Arc<LayerTable>>>> = OnceLock::new();
         let cache = CACHE.get_or_init(|| Mutex::new(Vec::new()));
         // A poisoned lock only means another thread panicked while tabulating: recompute.
         if let Ok(list) = cache.lock() {
-            if let Some(t) = list.iter().find(|t| t.nu.to_bits() == nu.to_bits()) {
+            if let Some(t) = list
+                .iter()
+                .find(|t| t.nu.to_bits() == nu.to_bits() && t.base == base)
+            {
                 return Arc::clone(t);
             }
         }
-        let table = Arc::new(Self::new(nu));
+        let table = Arc::new(Self::new(nu, base));
         if let Ok(mut list) = cache.lock() {
             list.push(Arc::clone(&table));
         }
@@ -169,7 +238,7 @@ mod tests {
     /// satisfy y' = A y for y = (U, W, T, S) (from the strain–displacement law, Hooke and the
     /// two equilibrium equations); y(h) = exp(A h) y(0) with y(0) = (U₀, W₀, 0, −1) (no shear,
     /// unit pressure) and u = w = 0 at the base give U₀, W₀; K = W₀ · E ξ / (2(1 − ν²)).
-    fn symbol_by_navier(t: f64, nu: f64) -> f64 {
+    fn symbol_by_navier(t: f64, nu: f64, base: Base) -> f64 {
         let e = 1.0;
         let lam = e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
         let mu = e / (2.0 * (1.0 + nu));
@@ -193,8 +262,10 @@ mod tests {
             0.0,
         );
         let phi = (a * t).exp();
-        let lhs = Matrix2::new(phi[(0, 0)], phi[(0, 1)], phi[(1, 0)], phi[(1, 1)]);
-        let rhs = Vector2::new(phi[(0, 3)], phi[(1, 3)]);
+        // Rough: U = W = 0 at the base; smooth: T = W = 0.
+        let r0 = if base == Base::Rough { 0 } else { 2 };
+        let lhs = Matrix2::new(phi[(r0, 0)], phi[(r0, 1)], phi[(1, 0)], phi[(1, 1)]);
+        let rhs = Vector2::new(phi[(r0, 3)], phi[(1, 3)]);
         let x = lhs
             .lu()
             .solve(&rhs)
@@ -207,36 +278,57 @@ mod tests {
     /// like e^{2t} cond; at t = 5 it is ~1e−12).
     #[test]
     fn closed_form_symbol_matches_navier_solution() {
-        for nu in [0.0, 0.25, 0.3, 0.45, 0.49] {
-            for t in [0.05, 0.2, 0.5, 1.0, 2.0, 3.5, 5.0] {
-                let closed = symbol(t, nu);
-                let navier = symbol_by_navier(t, nu);
-                assert!(
-                    (closed - navier).abs() < 1e-10 * closed.abs().max(1e-3),
-                    "ν = {nu}, t = {t}: closed form K = {closed}, Navier {navier}"
-                );
-                assert!(
-                    (one_minus_symbol(t, nu) - (1.0 - closed)).abs() < 1e-14,
-                    "1 − K form at ν = {nu}, t = {t}"
-                );
+        for base in [Base::Rough, Base::Smooth] {
+            for nu in [0.0, 0.25, 0.3, 0.45, 0.49] {
+                for t in [0.05, 0.2, 0.5, 1.0, 2.0, 3.5, 5.0] {
+                    let closed = symbol(t, nu, base);
+                    let navier = symbol_by_navier(t, nu, base);
+                    assert!(
+                        (closed - navier).abs() < 1e-10 * closed.abs().max(1e-3),
+                        "{base:?}, ν = {nu}, t = {t}: closed form K = {closed}, Navier {navier}"
+                    );
+                    assert!(
+                        (one_minus_symbol(t, nu, base) - (1.0 - closed)).abs() < 1e-14,
+                        "1 − K form, {base:?}, ν = {nu}, t = {t}"
+                    );
+                }
             }
+        }
+        // The smooth base near t = 0 against its series t/2 − t⁵/90 (relative 1e−15).
+        for t in [1e-6_f64, 1e-4] {
+            let series = 0.5 * t - t.powi(5) / 90.0;
+            let k = symbol(t, 0.3, Base::Smooth);
+            assert!(
+                (k - series).abs() < 1e-15 * series,
+                "t = {t}: {k} vs {series}"
+            );
         }
     }
 
     /// Limits: K → 1 for deep layers (1 − K ≈ (4t² + 4t + 1 + κ²)e^{−2t}/κ, so below 1e−15 at
     /// t = 25) and K(t)/t → (1 − 2ν)/(2(1 − ν)²) for thin ones with an O(t²) remainder
-    /// (K/t is even): the relative error at t = 1e−3 is below 1e−5.
+    /// (K/t is even): the relative error at t = 1e−3 is below 1e−5. The smooth base likewise,
+    /// K/t → 1/2.
     #[test]
     fn symbol_limits_are_half_space_and_oedometric_winkler() {
         for nu in [0.0, 0.3, 0.45] {
-            assert!((symbol(25.0, nu) - 1.0).abs() < 1e-15, "deep, ν = {nu}");
-            assert!(
-                (symbol(400.0, nu) - 1.0).abs() < 1e-15,
-                "very deep, ν = {nu}"
-            );
+            for base in [Base::Rough, Base::Smooth] {
+                assert!(
+                    (symbol(25.0, nu, base) - 1.0).abs() < 1e-15,
+                    "deep, ν = {nu}"
+                );
+                assert!(
+                    (symbol(400.0, nu, base) - 1.0).abs() < 1e-15,
+                    "very deep, ν = {nu}"
+                );
+            }
+            // Smooth: K/t → 1/2 with an O(t⁴) remainder (−t⁴/45).
+            let rel = (symbol(1e-2, nu, Base::Smooth) / 1e-2 - 0.5).abs() / 0.5;
+            assert!(rel < 1e-3, "thin smooth: {rel}");
             let slope = (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu) * (1.0 - nu));
+            assert_eq!(slope, Base::Rough.slope(nu));
             for t in [1e-3, 1e-2] {
-                let rel = (symbol(t, nu) / t - slope).abs() / slope;
+                let rel = (symbol(t, nu, Base::Rough) / t - slope).abs() / slope;
                 assert!(rel < 0.5 * t, "thin, ν = {nu}, t = {t}: K/t off by {rel}");
             }
             // C(0)·E = 2(1 − ν²)·slope·h = h E/E_oed.
@@ -271,18 +363,25 @@ mod tests {
     #[test]
     fn correction_table_interpolates_and_decays() {
         let nu = 0.3;
-        let table = LayerTable::new(nu);
-        for s in [0.0, 0.003, 0.37, 1.01, 2.5, 7.77, 19.3, 39.9] {
-            let d = correction_direct(s, nu);
-            let i = table.correction(s);
-            assert!((d - i).abs() < 1e-11, "F({s}): table {i}, direct {d}");
+        for base in [Base::Smooth, Base::Rough] {
+            let table = LayerTable::new(nu, base);
+            for s in [0.0, 0.003, 0.37, 1.01, 2.5, 7.77, 19.3, 39.9] {
+                let d = correction_direct(s, nu, base);
+                let i = table.correction(s);
+                assert!(
+                    (d - i).abs() < 1e-11,
+                    "{base:?}: F({s}): table {i}, direct {d}"
+                );
+            }
+            assert!(table.kernel(30.0, 1.0).abs() < 1e-12, "{base:?}");
         }
+        let table = LayerTable::new(nu, Base::Rough);
         let n = 300_000;
         let h = T_MAX / n as f64;
         let trap: f64 = (0..=n)
             .map(|k| {
                 let w = if k == 0 || k == n { 0.5 } else { 1.0 };
-                w * h * one_minus_symbol(k as f64 * h, nu)
+                w * h * one_minus_symbol(k as f64 * h, nu, Base::Rough)
             })
             .sum();
         assert!(

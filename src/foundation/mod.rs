@@ -25,7 +25,7 @@ pub enum FoundationKind {
     /// Two-parameter (Pasternak) soil k u − G_p ∇²u = p on the whole plane: springs coupled by
     /// a shear layer, kernel K₀(ρ/λ)/(2π G_p), λ = √(G_p/k) ([`kernel::Kernel::Pasternak`]).
     Pasternak,
-    /// Homogeneous elastic layer of depth h on a rough rigid base: the half-space's kernel
+    /// Homogeneous elastic layer of depth h on a rigid base (rough or smooth): the half-space's kernel
     /// minus a smooth correction from Burmister's symbol ([`layer`]).
     ElasticLayer,
 }
@@ -57,7 +57,7 @@ impl FoundationKind {
             }),
             FoundationKind::ElasticLayer => Some(kernel::Kernel::ElasticLayer {
                 depth: shape.length,
-                table: layer::LayerTable::shared(shape.poisson),
+                table: layer::LayerTable::shared(shape.poisson, shape.base),
             }),
         }
     }
@@ -67,12 +67,20 @@ impl FoundationKind {
 /// √(G_p/k), the layer's depth h; in the caller's length unit) and the layer's Poisson's ratio
 /// ν_s (its symbol depends on ν_s apart from the factor 1 − ν_s² in c). Ignored where a soil
 /// has no such property.
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SoilShape {
     /// λ (Pasternak) or h (elastic layer).
     pub length: f64,
     /// ν_s (elastic layer).
     pub poisson: f64,
+    /// The layer's base.
+    pub base: layer::Base,
+}
+
+impl Default for SoilShape {
+    fn default() -> Self {
+        Self::length(0.0)
+    }
 }
 
 impl SoilShape {
@@ -81,6 +89,7 @@ impl SoilShape {
         Self {
             length,
             poisson: 0.0,
+            base: layer::Base::Rough,
         }
     }
 }

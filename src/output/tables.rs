@@ -114,8 +114,11 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
     let shear = match (g.shear, g.decay_length) {
         (Some(sh), Some(lambda)) => format!(", Γ_g = {sh:.4e}, λ/L = {lambda:.4}"),
         _ => match (g.depth, g.soil_nu) {
-            // An elastic layer's depth ratio and Poisson's ratio.
-            (Some(h), Some(nu_s)) => format!(", h/L = {h:.4}, ν_s = {nu_s}"),
+            // An elastic layer's depth ratio, Poisson's ratio and base.
+            (Some(h), Some(nu_s)) => format!(
+                ", h/L = {h:.4}, ν_s = {nu_s}, {} base",
+                g.base.map_or("rough", |b| b.name())
+            ),
             _ => String::new(),
         },
     };

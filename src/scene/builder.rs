@@ -83,6 +83,7 @@ impl ModelBuilder {
             shear: None,
             depth: None,
             soil_nu: None,
+            base: None,
             delta,
             mu,
             nu,

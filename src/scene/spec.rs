@@ -71,7 +71,8 @@ pub struct FoundationSpec {
     /// Elastic layer: its depth h down to the rigid base, m.
     #[serde(default)]
     pub depth: Option<f64>,
-    /// Elastic layer: the base, "rough" (bonded: u = w = 0; the default and the only one built).
+    /// Elastic layer: the base, "rough" (bonded: u = w = 0; the default) or "smooth"
+    /// (frictionless: τ = w = 0).
     #[serde(default)]
     pub base: Option<String>,
     /// Pressure the soil may take, Pa: the bearing check (optional).
@@ -192,6 +193,9 @@ pub struct DimensionlessSpec {
     /// Elastic layer only: the layer's Poisson's ratio ν_s.
     #[serde(default)]
     pub soil_nu: Option<f64>,
+    /// Elastic layer only: its rigid base, "rough" (default) or "smooth".
+    #[serde(default)]
+    pub base: Option<String>,
     /// Δ.
     pub delta: f64,
     /// μ = width / length.

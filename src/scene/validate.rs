@@ -10,6 +10,7 @@ use super::spec::{MeshSpec, PenaltySpec, SolverSpec};
 use super::{Combination, Problem, SceneFile};
 use crate::budget::default_memory_limit;
 use crate::error::{Error, Result};
+use crate::foundation::layer::Base;
 use crate::foundation::FoundationKind;
 use crate::method::{Contact, Method, PenaltySettings, QpSettings};
 use crate::model::{Groups, Load, Model, Physical, Zone};
@@ -68,16 +69,22 @@ fn depth_ratio(field: &str, h: f64) -> Result<f64> {
     Ok(h)
 }
 
-/// The SI layer's depth as h/L, and its base (rough only).
-fn layer_fields(f: &super::spec::FoundationSpec, l: f64) -> Result<f64> {
-    if let Some(base) = &f.base {
-        if base != "rough" {
-            return Err(Error::invalid(
-                "foundation.base",
-                format!("\"{base}\" is not built: the layer rests on a rough (bonded) rigid base, base = \"rough\" (the default); a smooth base has another symbol"),
-            ));
-        }
+/// A layer's base by name ("rough" when not given).
+fn layer_base(field: &str, base: Option<&str>) -> Result<Base> {
+    match base {
+        None => Ok(Base::Rough),
+        Some(name) => Base::parse(name).ok_or_else(|| {
+            Error::invalid(
+                field,
+                format!("\"{name}\" is not a base: give \"rough\" (the layer bonded to the rigid base, the default) or \"smooth\" (frictionless)"),
+            )
+        }),
     }
+}
+
+/// The SI layer's depth as h/L, and its base.
+fn layer_fields(f: &super::spec::FoundationSpec, l: f64) -> Result<(f64, Base)> {
+    let base = layer_base("foundation.base", f.base.as_deref())?;
     let h = f.depth.ok_or_else(|| {
         Error::invalid(
             "foundation.depth",
@@ -85,7 +92,7 @@ fn layer_fields(f: &super::spec::FoundationSpec, l: f64) -> Result<f64> {
         )
     })?;
     let h = finite_positive("foundation.depth", h, "m")?;
-    depth_ratio("foundation.depth", h / l)
+    Ok((depth_ratio("foundation.depth", h / l)?, base))
 }
 
 fn poisson(field: &str, v: f64) -> Result<f64> {
@@ -246,7 +253,7 @@ fn groups(file: &SceneFile) -> Result<(Groups, Option<(f64, f64)>, [f64; 2])> {
                     }
                 }
                 Ok((
-                    Groups { foundation: f.model, gamma, delta, mu, nu, shear, depth: layer.map(|x| x.0), soil_nu: layer.map(|x| x.1) },
+                    Groups { foundation: f.model, gamma, delta, mu, nu, shear, depth: layer.map(|x: ((f64, Base), f64)| x.0 .0), soil_nu: layer.map(|x| x.1), base: layer.map(|x| x.0 .1) },
                     Some((l, d)),
                     [1.0 / l, 1.0 / l],
                 ))
@@ -278,7 +285,7 @@ fn groups(file: &SceneFile) -> Result<(Groups, Option<(f64, f64)>, [f64; 2])> {
                     }
                     (_, None) => None,
                 };
-                let (depth, soil_nu) = match (g.foundation, g.depth, g.soil_nu) {
+                let (depth, soil_nu, base) = match (g.foundation, g.depth, g.soil_nu) {
                     (FoundationKind::ElasticLayer, depth, soil_nu) => {
                         let depth = depth.ok_or_else(|| {
                             Error::invalid("dimensionless.depth", "missing: the elastic layer's depth ratio h/L (depth to the rigid base over the plate's half-length)")
@@ -286,10 +293,14 @@ fn groups(file: &SceneFile) -> Result<(Groups, Option<(f64, f64)>, [f64; 2])> {
                         let soil_nu = soil_nu.ok_or_else(|| {
                             Error::invalid("dimensionless.soil_nu", "missing: the elastic layer's Poisson's ratio ν_s (its kernel depends on ν_s beyond the factor 1 − ν_s² in Γ_h)")
                         })?;
-                        (Some(depth_ratio("dimensionless.depth", depth)?), Some(poisson("dimensionless.soil_nu", soil_nu)?))
+                        (
+                            Some(depth_ratio("dimensionless.depth", depth)?),
+                            Some(poisson("dimensionless.soil_nu", soil_nu)?),
+                            Some(layer_base("dimensionless.base", g.base.as_deref())?),
+                        )
                     }
                     (other, depth, soil_nu) => {
-                        for (key, given) in [("dimensionless.depth", depth.is_some()), ("dimensionless.soil_nu", soil_nu.is_some())] {
+                        for (key, given) in [("dimensionless.depth", depth.is_some()), ("dimensionless.soil_nu", soil_nu.is_some()), ("dimensionless.base", g.base.is_some())] {
                             if given {
                                 return Err(Error::invalid(
                                     key,
@@ -297,10 +308,10 @@ fn groups(file: &SceneFile) -> Result<(Groups, Option<(f64, f64)>, [f64; 2])> {
                                 ));
                             }
                         }
-                        (None, None)
+                        (None, None, None)
                     }
                 };
-                Ok((Groups { foundation: g.foundation, gamma, delta, mu, nu, shear, depth, soil_nu }, None, [1.0, mu]))
+                Ok((Groups { foundation: g.foundation, gamma, delta, mu, nu, shear, depth, soil_nu, base }, None, [1.0, mu]))
             }
         }
 }
