@@ -13,6 +13,11 @@ pub const SCENES: &[(&str, &str, &str)] = &[
         include_str!("../examples/slab-pasternak.toml"),
     ),
     (
+        "slab-clay-layer",
+        "the slab-on-grade bay on a 3 m clay layer over rock: E_s = 20 MPa, ν_s = 0.3, rough base (SI units)",
+        include_str!("../examples/slab-clay-layer.toml"),
+    ),
+    (
         "footing",
         "6 m × 4 m mat, eccentric 200 kN column and self-weight on Winkler soil (SI units)",
         include_str!("../examples/footing.toml"),

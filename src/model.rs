@@ -76,9 +76,32 @@ pub struct Groups {
     /// Pasternak only: the shear parameter Γ_g = G_p L²/D (None for the other soils).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub shear: Option<f64>,
+    /// Elastic layer only: the depth ratio h/L (None for the other soils).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub depth: Option<f64>,
+    /// Elastic layer only: the layer's Poisson's ratio ν_s, which shapes its kernel beyond
+    /// the factor 1 − ν_s² in Γ_h (None for the other soils).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub soil_nu: Option<f64>,
+    /// Elastic layer only: its rigid base, rough or smooth (None for the other soils).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub base: Option<crate::foundation::layer::Base>,
 }
 
 impl Groups {
+    /// What the soil's kernel needs beyond Γ: the Pasternak decay length λ/L or the layer's
+    /// depth h/L with its ν_s.
+    pub fn soil_shape(&self) -> crate::foundation::SoilShape {
+        match self.depth {
+            Some(h) => crate::foundation::SoilShape {
+                length: h,
+                poisson: self.soil_nu.unwrap_or(0.0),
+                base: self.base.unwrap_or(crate::foundation::layer::Base::Rough),
+            },
+            None => crate::foundation::SoilShape::length(self.decay_length()),
+        }
+    }
+
     /// The Pasternak decay length λ/L = √(G_p/k)/L = √(Γ_g μ Γ_w); 0 for the other soils.
     pub fn decay_length(&self) -> f64 {
         self.shear

@@ -11,7 +11,7 @@
 use std::sync::Arc;
 
 use crate::foundation::kernel::Kernel;
-use crate::foundation::{self, fft, pairs, winkler, Compliance, FoundationKind};
+use crate::foundation::{self, fft, pairs, winkler, Compliance, FoundationKind, SoilShape};
 use crate::integrals::{line_integrals, patch_integrals};
 use crate::mesh::{Dof, DofMap, Mesh};
 use crate::model::{ConstraintPoints, Load, Model, Void, Zone};
@@ -179,7 +179,7 @@ impl Operators {
             section,
             g.foundation,
             c,
-            g.decay_length(),
+            g.soil_shape(),
             &model.zones,
             &model.loads,
             model.constraint,
@@ -218,7 +218,7 @@ impl Operators {
             section,
             foundation,
             foundation_constant,
-            0.0,
+            SoilShape::default(),
             &[],
             loads,
             constraint,
@@ -227,9 +227,9 @@ impl Operators {
         )
     }
 
-    /// [`Self::build`] with Winkler zones of another modulus, the Pasternak decay length
-    /// `decay_length` = √(G_p/k) in the unit system (ignored by the other soils; the constant
-    /// is then 1/k), and a non-local T dense or, `toeplitz`, as the FFT operator of the
+    /// [`Self::build`] with Winkler zones of another modulus, the soil's `shape` (the Pasternak
+    /// decay length √(G_p/k) in the unit system, the constant then 1/k; the layer's depth and
+    /// ν_s, the constant as for the half-space; ignored by the other soils), and a non-local T dense or, `toeplitz`, as the FFT operator of the
     /// iterative route ([`fft::ToeplitzCompliance`]).
     #[allow(clippy::too_many_arguments)]
     pub fn build_all(
@@ -237,7 +237,7 @@ impl Operators {
         section: Section,
         foundation: FoundationKind,
         foundation_constant: f64,
-        decay_length: f64,
+        shape: SoilShape,
         zones: &[Zone],
         loads: &[Load],
         constraint: ConstraintPoints,
@@ -247,7 +247,7 @@ impl Operators {
         let dofs = DofMap::new(&mesh);
         let k = plate::assemble_stiffness(&mesh, &dofs, &section);
         let f = load_vector_with(&mesh, &dofs, &section, loads);
-        let kernel = foundation.kernel(decay_length);
+        let kernel = foundation.kernel(shape);
         let (b, t) = match &kernel {
             None => (
                 foundation::coupling(&mesh, &dofs, true),

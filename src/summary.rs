@@ -27,6 +27,15 @@ pub struct DimensionlessGroups {
     /// Pasternak only: the decay length λ/L = √(Γ_g μ Γ_w) (absent for the other soils).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub decay_length: Option<f64>,
+    /// Elastic layer only: the depth ratio h/L (absent for the other soils).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub depth: Option<f64>,
+    /// Elastic layer only: the layer's Poisson's ratio ν_s (absent for the other soils).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub soil_nu: Option<f64>,
+    /// Elastic layer only: its rigid base, "rough" or "smooth" (absent for the other soils).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub base: Option<crate::foundation::layer::Base>,
     /// ε̄ of the penalty method (null for the QP and bonded contact, which have none).
     pub penalty: Option<f64>,
     /// What P in V = D w / (P L²) and σ = μ L² r / P is: "net-load" (4P = the net load, the
@@ -156,6 +165,9 @@ impl Summary {
                 nu: model.groups.nu,
                 shear: model.groups.shear,
                 decay_length: model.groups.shear.map(|_| model.groups.decay_length()),
+                depth: model.groups.depth,
+                soil_nu: model.groups.soil_nu,
+                base: model.groups.base,
                 penalty: sol.method.penalty_epsilon(),
                 reference: model.reference,
                 reference_force: model.load_scale,

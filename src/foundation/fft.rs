@@ -473,12 +473,25 @@ mod tests {
     }
 
     /// The FFT product equals the dense product of `pairs::dense_matrix` (an independent
-    /// scatter of the same pair table), for the half-space and Pasternak kernels, to round-off: the FFT's error is ~1e-16 × log N × max|T|·|x|.
+    /// scatter of the same pair table), for the half-space, Pasternak and elastic-layer kernels, to round-off: the FFT's error is ~1e-16 × log N × max|T|·|x|.
     fn check(a: f64, b: f64, full: [usize; 2], sym_x: bool, sym_y: bool) {
         check_kernel(a, b, full, sym_x, sym_y, &Kernel::Boussinesq);
         // A Pasternak kernel decaying within the plate (λ = 0.3) and one reaching beyond it.
         for lambda in [0.3, 3.0] {
             check_kernel(a, b, full, sym_x, sym_y, &Kernel::Pasternak { lambda });
+        }
+        // A layer whose kernel is cut within the plate (40 h = 0.8) and a deep one.
+        for depth in [0.02, 0.7] {
+            let table =
+                super::super::layer::LayerTable::shared(0.3, super::super::layer::Base::Rough);
+            check_kernel(
+                a,
+                b,
+                full,
+                sym_x,
+                sym_y,
+                &Kernel::ElasticLayer { depth, table },
+            );
         }
     }
 

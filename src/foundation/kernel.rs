@@ -23,7 +23,7 @@
 
 use crate::plate::{NODE_ETA, NODE_XI};
 use crate::quadrature::GaussRule;
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
 /// Euler–Mascheroni constant γ.
 const EULER_GAMMA: f64 = 0.577_215_664_901_532_9;
@@ -44,6 +44,15 @@ pub enum Kernel {
         /// λ in the caller's length unit.
         lambda: f64,
     },
+    /// Elastic layer of depth h on a rigid base (rough or smooth): K(ρ) = 1/ρ − F(ρ/h)/h (the half-space
+    /// minus a smooth correction, [`super::layer`]), c = (1 − ν_s²)/(π E_s) as for the
+    /// half-space. Zero beyond [`super::layer::LAYER_CUTOFF`] depths.
+    ElasticLayer {
+        /// h in the caller's length unit.
+        depth: f64,
+        /// The correction F of the layer's Poisson's ratio.
+        table: Arc<super::layer::LayerTable>,
+    },
 }
 
 impl Kernel {
@@ -54,6 +63,7 @@ impl Kernel {
             Kernel::Pasternak { lambda } => {
                 bessel_k0(rho / lambda) / (2.0 * std::f64::consts::PI * lambda * lambda)
             }
+            Kernel::ElasticLayer { depth, table } => table.kernel(rho, *depth),
         }
     }
 
@@ -62,6 +72,7 @@ impl Kernel {
         match self {
             Kernel::Boussinesq => None,
             Kernel::Pasternak { lambda } => Some(PASTERNAK_CUTOFF * lambda),
+            Kernel::ElasticLayer { depth, .. } => Some(super::layer::LAYER_CUTOFF * depth),
         }
     }
 
@@ -70,6 +81,7 @@ impl Kernel {
         match self {
             Kernel::Boussinesq => f64::INFINITY,
             Kernel::Pasternak { lambda } => *lambda,
+            Kernel::ElasticLayer { depth, .. } => *depth,
         }
     }
 

@@ -8,6 +8,7 @@ pub mod boussinesq;
 pub mod fft;
 pub mod halfspace;
 pub mod kernel;
+pub mod layer;
 pub mod pairs;
 pub mod winkler;
 
@@ -24,6 +25,9 @@ pub enum FoundationKind {
     /// Two-parameter (Pasternak) soil k u − G_p ∇²u = p on the whole plane: springs coupled by
     /// a shear layer, kernel K₀(ρ/λ)/(2π G_p), λ = √(G_p/k) ([`kernel::Kernel::Pasternak`]).
     Pasternak,
+    /// Homogeneous elastic layer of depth h on a rigid base (rough or smooth): the half-space's kernel
+    /// minus a smooth correction from Burmister's symbol ([`layer`]).
+    ElasticLayer,
 }
 
 impl FoundationKind {
@@ -33,6 +37,7 @@ impl FoundationKind {
             FoundationKind::Winkler => "winkler",
             FoundationKind::HalfSpace => "half-space",
             FoundationKind::Pasternak => "pasternak",
+            FoundationKind::ElasticLayer => "elastic-layer",
         }
     }
 
@@ -42,13 +47,49 @@ impl FoundationKind {
         self == FoundationKind::Winkler
     }
 
-    /// The surface kernel of a non-local soil; `lambda` is the Pasternak decay length
-    /// √(G_p/k) in the caller's length unit (ignored by the others). None for Winkler.
-    pub fn kernel(self, lambda: f64) -> Option<kernel::Kernel> {
+    /// The surface kernel of a non-local soil. None for Winkler.
+    pub fn kernel(self, shape: SoilShape) -> Option<kernel::Kernel> {
         match self {
             FoundationKind::Winkler => None,
             FoundationKind::HalfSpace => Some(kernel::Kernel::Boussinesq),
-            FoundationKind::Pasternak => Some(kernel::Kernel::Pasternak { lambda }),
+            FoundationKind::Pasternak => Some(kernel::Kernel::Pasternak {
+                lambda: shape.length,
+            }),
+            FoundationKind::ElasticLayer => Some(kernel::Kernel::ElasticLayer {
+                depth: shape.length,
+                table: layer::LayerTable::shared(shape.poisson, shape.base),
+            }),
+        }
+    }
+}
+
+/// What a soil's kernel needs beyond its constant c: its length (the Pasternak decay length
+/// √(G_p/k), the layer's depth h; in the caller's length unit) and the layer's Poisson's ratio
+/// ν_s (its symbol depends on ν_s apart from the factor 1 − ν_s² in c). Ignored where a soil
+/// has no such property.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SoilShape {
+    /// λ (Pasternak) or h (elastic layer).
+    pub length: f64,
+    /// ν_s (elastic layer).
+    pub poisson: f64,
+    /// The layer's base.
+    pub base: layer::Base,
+}
+
+impl Default for SoilShape {
+    fn default() -> Self {
+        Self::length(0.0)
+    }
+}
+
+impl SoilShape {
+    /// A kernel length alone.
+    pub fn length(length: f64) -> Self {
+        Self {
+            length,
+            poisson: 0.0,
+            base: layer::Base::Rough,
         }
     }
 }

@@ -109,7 +109,14 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
     // A Pasternak soil's second group and its decay length.
     let shear = match (g.shear, g.decay_length) {
         (Some(sh), Some(lambda)) => format!(", Γ_g = {sh:.4e}, λ/L = {lambda:.4}"),
-        _ => String::new(),
+        _ => match (g.depth, g.soil_nu) {
+            // An elastic layer's depth ratio, Poisson's ratio and base.
+            (Some(h), Some(nu_s)) => format!(
+                ", h/L = {h:.4}, ν_s = {nu_s}, {} base",
+                g.base.map_or("rough", |b| b.name())
+            ),
+            _ => String::new(),
+        },
     };
     l.push(format!(
         "  foundation : {} (Γ = {:.4e}{shear}, Δ = {:.4e}, μ = {:.4}, ν = {})",

@@ -226,6 +226,7 @@ pub(super) fn foundation_label(f: FoundationKind) -> &'static str {
         FoundationKind::HalfSpace => "elastic half-space",
         FoundationKind::Winkler => "Winkler subgrade",
         FoundationKind::Pasternak => "Pasternak soil",
+        FoundationKind::ElasticLayer => "elastic layer",
     }
 }
 

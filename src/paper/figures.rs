@@ -168,6 +168,7 @@ fn file_tag(f: FoundationKind) -> &'static str {
         FoundationKind::HalfSpace => "halfspace",
         FoundationKind::Winkler => "winkler",
         FoundationKind::Pasternak => "pasternak",
+        FoundationKind::ElasticLayer => "layer",
     }
 }
 

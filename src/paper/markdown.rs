@@ -393,6 +393,7 @@ fn foundation_short(f: FoundationKind) -> &'static str {
         FoundationKind::HalfSpace => "half-space",
         FoundationKind::Winkler => "Winkler",
         FoundationKind::Pasternak => "Pasternak",
+        FoundationKind::ElasticLayer => "elastic layer",
     }
 }
 

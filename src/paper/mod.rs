@@ -76,7 +76,7 @@ pub const MAX_REFINE: usize = 8;
 pub fn paper_quarter_elements(foundation: FoundationKind) -> usize {
     match foundation {
         // The paper has no Pasternak case; its non-local meshes are the half-space's.
-        FoundationKind::HalfSpace | FoundationKind::Pasternak => 8,
+        FoundationKind::HalfSpace | FoundationKind::Pasternak | FoundationKind::ElasticLayer => 8,
         FoundationKind::Winkler => 10,
     }
 }

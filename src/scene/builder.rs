@@ -81,6 +81,9 @@ impl ModelBuilder {
             foundation,
             gamma,
             shear: None,
+            depth: None,
+            soil_nu: None,
+            base: None,
             delta,
             mu,
             nu,
@@ -95,6 +98,16 @@ impl ModelBuilder {
     pub fn shear(mut self, shear: f64) -> Self {
         if let Some(d) = self.file.dimensionless.as_mut() {
             d.shear = Some(shear);
+        }
+        self
+    }
+
+    /// The elastic layer's depth ratio h/L and Poisson's ratio ν_s of a dimensionless scene
+    /// (after [`Self::dimensionless`] with `FoundationKind::ElasticLayer`).
+    pub fn layer(mut self, depth: f64, soil_nu: f64) -> Self {
+        if let Some(d) = self.file.dimensionless.as_mut() {
+            d.depth = Some(depth);
+            d.soil_nu = Some(soil_nu);
         }
         self
     }

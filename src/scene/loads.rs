@@ -433,7 +433,7 @@ pub(super) fn voids_for(
     let settlement = match groups.foundation {
         // Pasternak: its springs' settlement, an upper bound (the shear layer spreads the load).
         FoundationKind::Winkler | FoundationKind::Pasternak => 4.0 * c / area,
-        FoundationKind::HalfSpace => 3.0 * c * 4.0 / area.sqrt(),
+        FoundationKind::HalfSpace | FoundationKind::ElasticLayer => 3.0 * c * 4.0 / area.sqrt(),
     };
     raw.iter()
         .enumerate()
@@ -482,7 +482,7 @@ pub(super) fn zones(file: &SceneFile, groups: &Groups, scale_xy: [f64; 2]) -> Re
     if groups.foundation != FoundationKind::Winkler {
         return Err(Error::invalid(
             format!("{prefix}[0]"),
-            "zones of another modulus apply to a Winkler subgrade only; a half-space or a Pasternak soil is homogeneous (model the soft patch with a Winkler foundation, or leave the zone out)",
+            "zones of another modulus apply to a Winkler subgrade only; a half-space, a Pasternak soil or an elastic layer is homogeneous (model the soft patch with a Winkler foundation, or leave the zone out)",
         ));
     }
     let unit = if physical { "m" } else { "s or t" };

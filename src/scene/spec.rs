@@ -54,7 +54,7 @@ impl PlateSpec {
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct FoundationSpec {
-    /// "winkler", "half-space" or "pasternak".
+    /// "winkler", "half-space", "pasternak" or "elastic-layer".
     pub model: FoundationKind,
     /// Winkler (or Pasternak spring) subgrade modulus K, N/m³.
     #[serde(default)]
@@ -62,12 +62,19 @@ pub struct FoundationSpec {
     /// Pasternak shear-layer modulus G_p, N/m (force per unit length).
     #[serde(default)]
     pub shear_modulus: Option<f64>,
-    /// Half-space E_s, Pa.
+    /// Half-space or elastic layer E_s, Pa.
     #[serde(default)]
     pub youngs_modulus: Option<f64>,
-    /// Half-space ν_s.
+    /// Half-space or elastic layer ν_s.
     #[serde(default)]
     pub poissons_ratio: Option<f64>,
+    /// Elastic layer: its depth h down to the rigid base, m.
+    #[serde(default)]
+    pub depth: Option<f64>,
+    /// Elastic layer: the base, "rough" (bonded: u = w = 0; the default) or "smooth"
+    /// (frictionless: τ = w = 0).
+    #[serde(default)]
+    pub base: Option<String>,
     /// Pressure the soil may take, Pa: the bearing check (optional).
     #[serde(default)]
     pub allowable_pressure: Option<f64>,
@@ -85,6 +92,8 @@ impl FoundationSpec {
             shear_modulus: None,
             youngs_modulus: None,
             poissons_ratio: None,
+            depth: None,
+            base: None,
             allowable_pressure: None,
             zone: Vec::new(),
         }
@@ -98,6 +107,8 @@ impl FoundationSpec {
             shear_modulus: None,
             youngs_modulus: Some(e),
             poissons_ratio: Some(nu),
+            depth: None,
+            base: None,
             allowable_pressure: None,
             zone: Vec::new(),
         }
@@ -110,6 +121,16 @@ impl FoundationSpec {
             model: FoundationKind::Pasternak,
             shear_modulus: Some(g_p),
             ..Self::winkler(k)
+        }
+    }
+
+    /// An elastic layer of Young's modulus `e` (Pa), Poisson's ratio `nu` and depth `h` (m)
+    /// on a rough rigid base.
+    pub fn elastic_layer(e: f64, nu: f64, h: f64) -> Self {
+        Self {
+            model: FoundationKind::ElasticLayer,
+            depth: Some(h),
+            ..Self::half_space(e, nu)
         }
     }
 }
@@ -159,13 +180,22 @@ pub struct CombinationSpec {
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct DimensionlessSpec {
-    /// "winkler", "half-space" or "pasternak".
+    /// "winkler", "half-space", "pasternak" or "elastic-layer".
     pub foundation: FoundationKind,
-    /// Γ_w or Γ_h (Pasternak: Γ_w of its springs).
+    /// Γ_w or Γ_h (Pasternak: Γ_w of its springs; elastic layer: Γ_h of its E_s, ν_s).
     pub gamma: f64,
     /// Pasternak only: the shear parameter Γ_g = G_p L²/D.
     #[serde(default)]
     pub shear: Option<f64>,
+    /// Elastic layer only: the depth ratio h/L (layer depth over the plate's half-length).
+    #[serde(default)]
+    pub depth: Option<f64>,
+    /// Elastic layer only: the layer's Poisson's ratio ν_s.
+    #[serde(default)]
+    pub soil_nu: Option<f64>,
+    /// Elastic layer only: its rigid base, "rough" (default) or "smooth".
+    #[serde(default)]
+    pub base: Option<String>,
     /// Δ.
     pub delta: f64,
     /// μ = width / length.

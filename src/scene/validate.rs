@@ -10,6 +10,7 @@ use super::spec::{LoadKind, MeshSpec, PenaltySpec, SolverSpec};
 use super::{Combination, Problem, SceneFile};
 use crate::budget::default_memory_limit;
 use crate::error::{Error, Result};
+use crate::foundation::layer::Base;
 use crate::foundation::FoundationKind;
 use crate::method::{Contact, Method, PenaltySettings, QpSettings};
 use crate::model::{Groups, Load, LoadReference, Model, Physical, Zone};
@@ -52,6 +53,48 @@ fn pasternak_length(field: &str, shear: f64, gamma: f64, mu: f64) -> Result<f64>
     Ok(shear)
 }
 
+/// Range of the elastic layer's depth ratio h/L. Deeper layers are the half-space to within
+/// e^{−2·1e4}; thinner ones than 1e−4 L put the whole kernel (40 depths) below the radial
+/// quadrature's innermost panel of an element pair, and are a Winkler bed k = E_oed/h anyway.
+pub const LAYER_DEPTH_RANGE: [f64; 2] = [1e-4, 1e4];
+
+fn depth_ratio(field: &str, h: f64) -> Result<f64> {
+    let [lo, hi] = LAYER_DEPTH_RANGE;
+    if !(h.is_finite() && (lo..=hi).contains(&h)) {
+        return Err(Error::invalid(
+            field,
+            format!("gives the layer depth h = {h:e} half-lengths L of the plate, outside [{lo:e}, {hi:e}]: check the units (m); a deeper layer is a half-space (model = \"half-space\"), a thinner one a Winkler bed of modulus E_oed/h (model = \"winkler\")"),
+        ));
+    }
+    Ok(h)
+}
+
+/// A layer's base by name ("rough" when not given).
+fn layer_base(field: &str, base: Option<&str>) -> Result<Base> {
+    match base {
+        None => Ok(Base::Rough),
+        Some(name) => Base::parse(name).ok_or_else(|| {
+            Error::invalid(
+                field,
+                format!("\"{name}\" is not a base: give \"rough\" (the layer bonded to the rigid base, the default) or \"smooth\" (frictionless)"),
+            )
+        }),
+    }
+}
+
+/// The SI layer's depth as h/L, and its base.
+fn layer_fields(f: &super::spec::FoundationSpec, l: f64) -> Result<(f64, Base)> {
+    let base = layer_base("foundation.base", f.base.as_deref())?;
+    let h = f.depth.ok_or_else(|| {
+        Error::invalid(
+            "foundation.depth",
+            "missing: the elastic layer's depth h to the rigid base, in m",
+        )
+    })?;
+    let h = finite_positive("foundation.depth", h, "m")?;
+    Ok((depth_ratio("foundation.depth", h / l)?, base))
+}
+
 fn poisson(field: &str, v: f64) -> Result<f64> {
     if !v.is_finite() || v <= -1.0 || v >= 0.5 {
         return Err(Error::invalid(
@@ -83,7 +126,7 @@ fn groups(file: &SceneFile) -> Result<(Groups, Option<(f64, f64)>, [f64; 2])> {
             (Some(_), None, None) => {
                 Err(Error::invalid(
                     "foundation",
-                    "missing: add [foundation] with model = \"winkler\" (modulus), \"half-space\" (youngs_modulus, poissons_ratio) or \"pasternak\" (modulus, shear_modulus)",
+                    "missing: add [foundation] with model = \"winkler\" (modulus), \"half-space\" (youngs_modulus, poissons_ratio), \"pasternak\" (modulus, shear_modulus) or \"elastic-layer\" (youngs_modulus, poissons_ratio, depth)",
                 ))
             }
             (None, Some(_), None) => {
@@ -118,7 +161,18 @@ fn groups(file: &SceneFile) -> Result<(Groups, Option<(f64, f64)>, [f64; 2])> {
                         format!("belongs to model = \"pasternak\"; a {} foundation has no shear layer (use model = \"pasternak\" with modulus and shear_modulus, or leave it out)", f.model.name()),
                     ));
                 }
+                if f.model != FoundationKind::ElasticLayer {
+                    for (key, given) in [("foundation.depth", f.depth.is_some()), ("foundation.base", f.base.is_some())] {
+                        if given {
+                            return Err(Error::invalid(
+                                key,
+                                format!("belongs to model = \"elastic-layer\"; a {} foundation has no rigid base below it (use model = \"elastic-layer\" with youngs_modulus, poissons_ratio and depth, or leave it out)", f.model.name()),
+                            ));
+                        }
+                    }
+                }
                 let mut shear = None;
+                let mut layer = None;
                 let gamma = match f.model {
                     FoundationKind::Pasternak => {
                         if f.youngs_modulus.is_some() || f.poissons_ratio.is_some() {
@@ -160,7 +214,7 @@ fn groups(file: &SceneFile) -> Result<(Groups, Option<(f64, f64)>, [f64; 2])> {
                         )?;
                         d / (k * mu * l.powi(4))
                     }
-                    FoundationKind::HalfSpace => {
+                    FoundationKind::HalfSpace | FoundationKind::ElasticLayer => {
                         if f.modulus.is_some() {
                             return Err(Error::invalid(
                                 "foundation.modulus",
@@ -180,6 +234,9 @@ fn groups(file: &SceneFile) -> Result<(Groups, Option<(f64, f64)>, [f64; 2])> {
                                 Error::invalid("foundation.poissons_ratio", "missing: soil Poisson's ratio ν_s")
                             })?,
                         )?;
+                        if f.model == FoundationKind::ElasticLayer {
+                            layer = Some((layer_fields(f, l)?, nus));
+                        }
                         d * (1.0 - nus * nus) / (std::f64::consts::PI * es * mu * l.powi(3))
                     }
                 };
@@ -196,7 +253,7 @@ fn groups(file: &SceneFile) -> Result<(Groups, Option<(f64, f64)>, [f64; 2])> {
                     }
                 }
                 Ok((
-                    Groups { foundation: f.model, gamma, delta, mu, nu, shear },
+                    Groups { foundation: f.model, gamma, delta, mu, nu, shear, depth: layer.map(|x: ((f64, Base), f64)| x.0 .0), soil_nu: layer.map(|x| x.1), base: layer.map(|x| x.0 .1) },
                     Some((l, d)),
                     [1.0 / l, 1.0 / l],
                 ))
@@ -228,7 +285,33 @@ fn groups(file: &SceneFile) -> Result<(Groups, Option<(f64, f64)>, [f64; 2])> {
                     }
                     (_, None) => None,
                 };
-                Ok((Groups { foundation: g.foundation, gamma, delta, mu, nu, shear }, None, [1.0, mu]))
+                let (depth, soil_nu, base) = match (g.foundation, g.depth, g.soil_nu) {
+                    (FoundationKind::ElasticLayer, depth, soil_nu) => {
+                        let depth = depth.ok_or_else(|| {
+                            Error::invalid("dimensionless.depth", "missing: the elastic layer's depth ratio h/L (depth to the rigid base over the plate's half-length)")
+                        })?;
+                        let soil_nu = soil_nu.ok_or_else(|| {
+                            Error::invalid("dimensionless.soil_nu", "missing: the elastic layer's Poisson's ratio ν_s (its kernel depends on ν_s beyond the factor 1 − ν_s² in Γ_h)")
+                        })?;
+                        (
+                            Some(depth_ratio("dimensionless.depth", depth)?),
+                            Some(poisson("dimensionless.soil_nu", soil_nu)?),
+                            Some(layer_base("dimensionless.base", g.base.as_deref())?),
+                        )
+                    }
+                    (other, depth, soil_nu) => {
+                        for (key, given) in [("dimensionless.depth", depth.is_some()), ("dimensionless.soil_nu", soil_nu.is_some()), ("dimensionless.base", g.base.is_some())] {
+                            if given {
+                                return Err(Error::invalid(
+                                    key,
+                                    format!("belongs to foundation = \"elastic-layer\"; a {} foundation has no rigid base below it (leave it out)", other.name()),
+                                ));
+                            }
+                        }
+                        (None, None, None)
+                    }
+                };
+                Ok((Groups { foundation: g.foundation, gamma, delta, mu, nu, shear, depth, soil_nu, base }, None, [1.0, mu]))
             }
         }
 }

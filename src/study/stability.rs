@@ -55,8 +55,10 @@ impl StabilityParam {
                 FoundationKind::Winkler => vec![8.0, 16.0, 32.0, 64.0, 128.0, 256.0, 512.0],
                 // Half-space: the QP is dense and refused at 512 per side; the penalty takes
                 // the iterative route there (`Route::Auto`) and solves it.
-                // (the other non-local soil, Pasternak, likewise).
-                FoundationKind::HalfSpace | FoundationKind::Pasternak => {
+                // (the other non-local soils, Pasternak and the elastic layer, likewise).
+                FoundationKind::HalfSpace
+                | FoundationKind::Pasternak
+                | FoundationKind::ElasticLayer => {
                     vec![8.0, 16.0, 32.0, 64.0, 128.0, 512.0]
                 }
             },
