@@ -126,8 +126,13 @@ def run_all(
     if not items:
         return []
     if client is not None:
-        futures = client.map(fn, items, pure=False)
-        return client.gather(futures)
+        # Tasks of several cases each (about four per worker): one scheduler round trip per
+        # task, not per case, so short solves are not dominated by it.
+        workers_now = max(1, len(client.scheduler_info().get("workers", {})))
+        size = max(1, len(items) // (4 * workers_now))
+        chunks = [items[i:i + size] for i in range(0, len(items), size)]
+        futures = client.map(run_chunk, [fn] * len(chunks), chunks, pure=False)
+        return [r for part in client.gather(futures) for r in part]
     n = workers if workers is not None else (os.cpu_count() or 1)
     if n <= 1 or len(items) == 1:
         return [fn(x) for x in items]
@@ -135,6 +140,11 @@ def run_all(
     ctx = multiprocessing.get_context("spawn")
     with cf.ProcessPoolExecutor(max_workers=min(n, len(items)), mp_context=ctx) as pool:
         return list(pool.map(fn, items))
+
+
+def run_chunk(fn: Callable[[Any], Any], chunk: List[Any]) -> List[Any]:
+    """One Dask task: ``fn`` over a chunk of cases, in order."""
+    return [fn(x) for x in chunk]
 
 
 def sweep(
