@@ -7,11 +7,10 @@
 //!   same soil, computed in the wavenumber domain (symbol below), with its convergence rate.
 //! - Quarter and full models, dense and FFT routes, penalty and QP.
 
+mod common;
 use liftoff::foundation::Compliance;
 use liftoff::method::{Method, PenaltySettings};
-use liftoff::model::ConstraintPoints;
 use liftoff::quadrature::GaussRule;
-use liftoff::study::{eps_sweep, log_space};
 use liftoff::{Operators, Problem, Solution};
 
 /// A dimensionless square-plate scene: `foundation` with Γ_w = `gamma` (and Γ_g = `shear` on
@@ -320,32 +319,7 @@ fn penalty_tends_to_qp_at_first_order() {
         POINT,
         "auto",
     );
-    let eps = log_space(1e-2, 1e-9, 15);
-    let sweep = eps_sweep(
-        &p,
-        &eps,
-        &[ConstraintPoints::Nodal],
-        [1e-9, 1e-2],
-        &mut |_| {},
-    )
-    .expect("sweep");
-    for (kind, slope, range) in &sweep.slopes {
-        let slope = slope.unwrap_or(f64::NAN);
-        println!("{kind}: slope {slope}, range {range:?}");
-        assert!((slope - 1.0).abs() < 0.1, "{kind}: fitted slope {slope}");
-        assert!(range[1] / range[0] > 0.99e3, "{kind}: span {range:?}");
-    }
-    let floor_from = sweep.slopes.first().map_or(1e-8, |s| s.2[0]);
-    for r in sweep.rows.iter().filter(|r| r.eps <= 1e-5) {
-        println!("ε̄ = {:e}: error {:e}", r.eps, r.rel_l2_sigma);
-        assert!(r.converged, "ε̄ = {:e}: {}", r.eps, r.status);
-        assert!(
-            r.eps < floor_from || r.rel_l2_sigma < 100.0 * r.eps,
-            "ε̄ = {:e}: error {:e}",
-            r.eps,
-            r.rel_l2_sigma
-        );
-    }
+    common::assert_first_order_in_eps(&p);
 }
 
 /// A Pasternak scene in SI units and the same scene in its groups (Γ_w = D/(kμL⁴),

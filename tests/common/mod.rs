@@ -1,7 +1,9 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
 
+use liftoff::model::ConstraintPoints;
 use liftoff::post::Report;
+use liftoff::study::{eps_sweep, log_space};
 use liftoff::{analyse, Analysis, Problem};
 
 /// A dimensionless scene with one point load (s, t) and the given groups.
@@ -100,4 +102,36 @@ pub fn node_at(r: &Report, x: f64, y: f64) -> usize {
             da.total_cmp(&db)
         })
         .unwrap_or(0)
+}
+
+/// Penalty → QP at first order in ε̄ on `p`: the fitted log–log slope of the relative L2
+/// error of σ against the QP on the same operators lies within 0.1 of 1 over at least three
+/// decades, and the error is below 100 ε̄ from the fit's lower end to ε̄ = 1e−5.
+pub fn assert_first_order_in_eps(p: &Problem) {
+    let eps = log_space(1e-2, 1e-9, 15);
+    let sweep = eps_sweep(
+        p,
+        &eps,
+        &[ConstraintPoints::Nodal],
+        [1e-9, 1e-2],
+        &mut |_| {},
+    )
+    .expect("sweep");
+    for (kind, slope, range) in &sweep.slopes {
+        let slope = slope.unwrap_or(f64::NAN);
+        println!("{kind}: slope {slope}, range {range:?}");
+        assert!((slope - 1.0).abs() < 0.1, "{kind}: fitted slope {slope}");
+        assert!(range[1] / range[0] > 0.99e3, "{kind}: span {range:?}");
+    }
+    let floor_from = sweep.slopes.first().map_or(1e-8, |s| s.2[0]);
+    for r in sweep.rows.iter().filter(|r| r.eps <= 1e-5) {
+        println!("ε̄ = {:e}: error {:e}", r.eps, r.rel_l2_sigma);
+        assert!(r.converged, "ε̄ = {:e}: {}", r.eps, r.status);
+        assert!(
+            r.eps < floor_from || r.rel_l2_sigma < 100.0 * r.eps,
+            "ε̄ = {:e}: error {:e}",
+            r.eps,
+            r.rel_l2_sigma
+        );
+    }
 }
