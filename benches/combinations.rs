@@ -61,7 +61,9 @@ fn ten(c: &mut Criterion) {
         let (combined, separate) = slab(foundation, elements);
         assert_eq!(combined.combinations.len(), 10);
         g.bench_function(format!("{name}/one-assembly"), |b| {
-            b.iter(|| liftoff::combination::analyse(&combined, &|_| {}).expect("run"))
+            b.iter(|| {
+                liftoff::combination::analyse(&combined, &liftoff::Monitor::NONE).expect("run")
+            })
         });
         g.bench_function(format!("{name}/ten-analyses"), |b| {
             b.iter(|| {

@@ -12,6 +12,7 @@ use crate::analysis::{self, Outcome};
 use crate::budget;
 use crate::error::{Error, Result};
 use crate::model::Model;
+use crate::monitor::{Cases, Monitor};
 use crate::scene::{Combination, Problem};
 use crate::Operators;
 
@@ -33,24 +34,70 @@ pub struct CombinationRun {
 pub struct Combinations {
     /// Per combination, in the scene's order.
     pub runs: Vec<CombinationRun>,
+    /// The envelope over every combination — built only when every one converged (an
+    /// envelope missing a combination is not an envelope); [`Combinations::missing`] names
+    /// the ones that did not.
+    pub envelope: Option<Envelope>,
     /// Seconds to assemble the shared operators (once).
     pub assemble_s: f64,
     /// Wall-clock seconds of the whole run.
     pub total_s: f64,
 }
 
-impl Combinations {
-    /// True when every combination converged.
-    pub fn all_converged(&self) -> bool {
-        self.runs
-            .iter()
-            .all(|r| matches!(&r.outcome, Ok(o) if o.solution.status.converged()))
+impl CombinationRun {
+    /// Whether this combination has a converged solution.
+    pub fn converged(&self) -> bool {
+        matches!(&self.outcome, Ok(o) if o.solution.status.converged())
     }
 }
 
-/// Solve every combination of `problem` (which must have some) on one assembly; `progress` is
-/// called with each finished combination's name.
-pub fn analyse(problem: &Problem, progress: &(dyn Fn(&str) + Sync)) -> Result<Combinations> {
+impl Combinations {
+    /// True when every combination converged.
+    pub fn all_converged(&self) -> bool {
+        self.runs.iter().all(CombinationRun::converged)
+    }
+
+    /// Names of the combinations without a converged solution (an error, or a solve that
+    /// stopped): the ones the envelope would miss.
+    pub fn missing(&self) -> Vec<&str> {
+        self.runs
+            .iter()
+            .filter(|r| !r.converged())
+            .map(|r| r.name.as_str())
+            .collect()
+    }
+
+    /// `liftoff solve --json` of a scene with combinations: each combination's summary (or its
+    /// error), the names of the ones without a solution, and the envelope's extremes (null
+    /// when one is missing).
+    pub fn to_json(&self) -> Result<String> {
+        let runs: Vec<serde_json::Value> = self
+            .runs
+            .iter()
+            .map(|r| {
+                let summary = r
+                    .outcome
+                    .as_ref()
+                    .ok()
+                    .and_then(|o| serde_json::to_value(&o.summary).ok());
+                let error = r.outcome.as_ref().err().map(|e| e.to_string());
+                serde_json::json!({ "name": r.name, "summary": summary, "error": error })
+            })
+            .collect();
+        let doc = serde_json::json!({
+            "combinations": runs,
+            "missing": self.missing(),
+            "envelope": self.envelope.as_ref().map(|e| &e.quantities),
+        });
+        serde_json::to_string_pretty(&doc)
+            .map_err(|e| Error::numerical("envelope", format!("cannot serialise: {e}")))
+    }
+}
+
+/// Solve every combination of `problem` (which must have some) on one assembly, in parallel;
+/// `monitor` gets a [`Progress::Case`] per finished combination and can cancel the run. The
+/// envelope is built when every combination converged.
+pub fn analyse(problem: &Problem, monitor: &Monitor<'_>) -> Result<Combinations> {
     let t0 = Instant::now();
     let models: Vec<Model> = problem
         .combinations
@@ -98,14 +145,19 @@ pub fn analyse(problem: &Problem, progress: &(dyn Fn(&str) + Sync)) -> Result<Co
     }
     let base = Operators::assemble_shared_with(&models, toeplitz);
     let assemble_s = t0.elapsed().as_secs_f64();
-    let runs = problem
+    let cases = Cases::new(monitor, problem.combinations.len());
+    let inner = cases.inner();
+    let runs: Vec<CombinationRun> = problem
         .combinations
         .par_iter()
         .map(|c: &Combination| {
             let t = Instant::now();
             let ops = base.loaded(&c.model);
-            let outcome = analysis::run(&c.model, &ops, &problem.method, 0.0);
-            progress(&c.name);
+            let outcome = inner
+                .check("load combinations")
+                .and_then(|()| analysis::run(&c.model, &ops, &problem.method, 0.0));
+            // A cancelled run is caught below, once every worker has stopped.
+            let _ = cases.finish(&c.name);
             CombinationRun {
                 name: c.name.clone(),
                 factors: c.factors.clone(),
@@ -115,8 +167,16 @@ pub fn analyse(problem: &Problem, progress: &(dyn Fn(&str) + Sync)) -> Result<Co
             }
         })
         .collect();
+    // A cancelled run is not a set of combinations that did not converge: say it was cancelled.
+    monitor.check("load combinations")?;
+    let envelope = if runs.iter().all(CombinationRun::converged) {
+        envelope(&runs)
+    } else {
+        None
+    };
     Ok(Combinations {
         runs,
+        envelope,
         assemble_s,
         total_s: t0.elapsed().as_secs_f64(),
     })
@@ -178,7 +238,8 @@ pub struct Envelope {
     pub elements: Vec<(&'static str, &'static str, PointEnvelope)>,
 }
 
-/// Envelope of the converged runs (None when there are none). Fields are taken in physical
+/// Envelope of the converged runs (None when there are none; [`analyse`] calls it only when
+/// every run converged). Fields are taken in physical
 /// units for SI scenes; in a dimensionless scene they are rescaled to the scene's own force
 /// unit (V and σ times each combination's P), since every combination has its own P.
 pub fn envelope(runs: &[CombinationRun]) -> Option<Envelope> {

@@ -43,6 +43,9 @@ pub enum Error {
     /// The requested combination is not available.
     #[error("{0}")]
     Unsupported(String),
+    /// The caller asked the run to stop (a cancel flag, Ctrl-C in Python) before it finished.
+    #[error("cancelled before the run finished: {0}")]
+    Cancelled(String),
     /// Reading or writing a file failed.
     #[error("{path}: {source}")]
     Io {
@@ -62,14 +65,16 @@ impl Error {
         }
     }
 
-    /// Short machine-readable kind, as in the studies' CSV files.
-    pub fn kind(&self) -> &'static str {
+    /// Which kind of failure, as the studies' CSV files, the command line's exit code and the
+    /// Python exception classes tell them apart.
+    pub fn kind(&self) -> ErrorKind {
         match self {
-            Error::TooLarge { .. } => "too-large",
-            Error::Infeasible(_) => "infeasible",
-            Error::Numerical { .. } => "numerical",
-            Error::Parse(_) | Error::Invalid { .. } | Error::Unsupported(_) => "invalid",
-            Error::Io { .. } => "io",
+            Error::TooLarge { .. } => ErrorKind::TooLarge,
+            Error::Infeasible(_) => ErrorKind::Infeasible,
+            Error::Numerical { .. } => ErrorKind::Numerical,
+            Error::Parse(_) | Error::Invalid { .. } | Error::Unsupported(_) => ErrorKind::Invalid,
+            Error::Io { .. } => ErrorKind::Io,
+            Error::Cancelled(_) => ErrorKind::Cancelled,
         }
     }
 
@@ -81,6 +86,27 @@ impl Error {
         }
     }
 }
+
+/// The kinds of [`Error`]: what a front end branches on (an exit code, an exception class).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ErrorKind {
+    /// Bad input: a scene, an option or a combination the library does not take.
+    Invalid,
+    /// More memory than allowed.
+    TooLarge,
+    /// No equilibrium is possible with the contact law.
+    Infeasible,
+    /// A factorisation or a solver broke down.
+    Numerical,
+    /// A file could not be read or written.
+    Io,
+    /// The run was cancelled by its caller.
+    Cancelled,
+}
+
+crate::names!(ErrorKind, Invalid => "invalid", TooLarge => "too-large", Infeasible => "infeasible",
+    Numerical => "numerical", Io => "io", Cancelled => "cancelled");
 
 /// Result alias of the library.
 pub type Result<T, E = Error> = std::result::Result<T, E>;

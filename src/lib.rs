@@ -27,8 +27,10 @@
 
 pub mod analysis;
 pub mod budget;
+pub mod choice;
 pub mod combination;
 pub mod compare;
+pub mod entry;
 pub mod error;
 pub mod examples;
 pub mod foundation;
@@ -37,8 +39,11 @@ pub mod mesh;
 pub mod method;
 pub mod metrics;
 pub mod model;
+pub mod monitor;
 pub mod operators;
+#[cfg(feature = "output")]
 pub mod output;
+#[cfg(feature = "output")]
 pub mod paper;
 pub mod plate;
 pub mod post;
@@ -49,9 +54,11 @@ pub mod study;
 pub mod summary;
 
 pub use analysis::{analyse, Analysis};
-pub use error::{Error, Result};
+pub use entry::{load, run, Outcome, Source};
+pub use error::{Error, ErrorKind, Result};
 pub use method::{CgSettings, Method, PenaltySettings, QpSettings, Route};
 pub use model::Model;
+pub use monitor::{Monitor, Progress};
 pub use operators::Operators;
 pub use scene::Problem;
 pub use solve::{solve, Solution, SolveInfo, Status};

@@ -5,13 +5,15 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::{Parser, Subcommand};
+use liftoff::choice::Choice;
 use liftoff::method::{Contact, MethodKind, QpForm, QpSolver, Route};
 use liftoff::model::{ConstraintPoints, SymmetryMode};
 use liftoff::output::{self, tables};
-use liftoff::scene::{PenaltySpec, SceneFile};
+use liftoff::scene::PenaltySpec;
 use liftoff::study::{self, ConstraintVariants, EpsSweepOptions, TradeoffOptions};
-use liftoff::{Error, Problem};
+use liftoff::{Error, ErrorKind, Method, Monitor, Outcome, Problem, Source};
 
 /// Exit codes, one per kind of failure (docs/ERRORS.md).
 mod exit {
@@ -60,24 +62,24 @@ struct Overrides {
     #[arg(long, value_parser = parse_penalty)]
     penalty: Option<PenaltySpec>,
     /// Constraint points (overrides [solver] constraint).
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = choice::<ConstraintPoints>())]
     constraint: Option<ConstraintPoints>,
     /// Elements over the whole plate, NX,NY (overrides [mesh] elements).
     #[arg(long, value_parser = parse_mesh)]
     mesh: Option<[i64; 2]>,
     /// How the QP is posed: auto (primal on Winkler, schur on the half-space), schur, lifted or
     /// primal (overrides [solver] qp_form).
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = choice::<QpForm>())]
     qp_form: Option<QpForm>,
     /// Which solver runs the QP: auto (clarabel where its form fits and is robust, the
     /// matrix-free active-set method elsewhere), clarabel, or active-set (overrides [solver]
     /// qp_solver).
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = choice::<QpSolver>())]
     qp_solver: Option<QpSolver>,
     /// How the half-space is held and solved: auto (dense up to 1500 pressure nodes, iterative
     /// beyond), dense (dense T, direct factorisations) or iterative (T by FFT, conjugate
     /// gradients) (overrides [solver] route).
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = choice::<Route>())]
     solver: Option<Route>,
 }
 
@@ -101,15 +103,15 @@ struct SolveArgs {
     /// Scene file (TOML), or `example:NAME` for a bundled scene.
     scene: String,
     /// Contact law (overrides [solver] contact).
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = choice::<Contact>())]
     contact: Option<Contact>,
     /// Method for unbonded contact (overrides [solver] method).
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = choice::<MethodKind>())]
     method: Option<MethodKind>,
     #[command(flatten)]
     overrides: Overrides,
     /// Symmetry reduction (overrides [mesh] symmetry).
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = choice::<SymmetryMode>())]
     symmetry: Option<SymmetryMode>,
     /// Directory for summary.json, CSV tables, plate.vtu and charts.
     #[arg(long)]
@@ -145,7 +147,7 @@ struct EpsSweepArgs {
     #[arg(long, default_value_t = EpsSweepOptions::default().points)]
     points: usize,
     /// Constraint variants: nodal, gauss or both.
-    #[arg(long, value_enum, hide_possible_values = true,
+    #[arg(long, value_parser = choice::<ConstraintVariants>(), hide_possible_values = true,
           default_value_t = EpsSweepOptions::default().constraints)]
     constraints: ConstraintVariants,
     /// Directory for eps_sweep.csv and eps_sweep.svg.
@@ -185,7 +187,7 @@ struct PaperArgs {
     #[arg(long, default_value = "paper")]
     out: PathBuf,
     /// Method for the unbonded solves.
-    #[arg(long, value_enum, default_value = "penalty")]
+    #[arg(long, value_parser = choice::<MethodKind>(), default_value = "penalty")]
     method: MethodKind,
     /// Reading of the paper's load condition 2: patch (γ from Fig. 6's captions), patch=G, or edge-band.
     #[arg(long, default_value = "patch")]
@@ -193,6 +195,13 @@ struct PaperArgs {
     /// Also solve on meshes 2, 4, … up to this many times finer than the paper's.
     #[arg(long, default_value_t = 1)]
     refine: usize,
+}
+
+/// A flag whose values are a library [`Choice`]'s names (one list, shared with the scene files
+/// and the Python package).
+fn choice<T: Choice + Clone + Send + Sync>() -> impl TypedValueParser<Value = T> {
+    PossibleValuesParser::new(T::names())
+        .try_map(|name: String| T::from_name(&name).ok_or_else(|| format!("`{name}` is no choice")))
 }
 
 fn parse_penalty(s: &str) -> Result<PenaltySpec, String> {
@@ -272,23 +281,32 @@ impl Failure {
 
 impl From<Error> for Failure {
     fn from(e: Error) -> Self {
-        let (code, hint) = match &e {
-            Error::Parse(_)
-            | Error::Invalid { .. }
-            | Error::TooLarge { .. }
-            | Error::Unsupported(_) => (exit::BAD_INPUT, ""),
-            Error::Infeasible(_) => (
+        let (code, hint) = match e.kind() {
+            ErrorKind::Invalid | ErrorKind::TooLarge => (exit::BAD_INPUT, ""),
+            ErrorKind::Infeasible => (
                 exit::INFEASIBLE,
                 "\nhint: bonded contact (--contact bonded) lets the foundation pull",
             ),
-            Error::Numerical { stage, .. } if stage.contains("QP") => (
-                exit::SOLVER,
-                "\nhint: --method penalty, or the other --qp-solver where it applies (clarabel needs the dense route or Winkler soil)",
-            ),
-            Error::Numerical { .. } => (exit::SOLVER, "\nhint: --method qp, or a coarser --mesh"),
-            Error::Io { .. } => (exit::IO, ""),
+            ErrorKind::Numerical | ErrorKind::Cancelled => (exit::SOLVER, ""),
+            ErrorKind::Io => (exit::IO, ""),
         };
         Failure::new(code, format!("{e}{hint}"))
+    }
+}
+
+impl Failure {
+    /// A library error from solving with `method`: a numerical failure hints at the other
+    /// method (the same operators, solved another way).
+    fn solving(e: Error, method: &Method) -> Self {
+        let numerical = e.kind() == ErrorKind::Numerical;
+        let mut f = Failure::from(e);
+        if numerical {
+            f.message.push_str(match method {
+                Method::Qp(_) => "\nhint: --method penalty, or the other --qp-solver where it applies (clarabel needs the dense route or Winkler soil)",
+                _ => "\nhint: --method qp, or a coarser --mesh",
+            });
+        }
+        f
     }
 }
 
@@ -314,23 +332,13 @@ fn example(name: Option<&str>) -> Result<(), Failure> {
     Ok(())
 }
 
-/// A scene file, or `example:NAME` for a bundled one, parsed but not yet validated.
-fn read_scene(spec: &str) -> Result<SceneFile, Failure> {
-    let text = match spec.strip_prefix("example:") {
-        Some(name) => liftoff::examples::scene(name)
-            .ok_or_else(|| no_example(name))?
-            .to_string(),
-        None => std::fs::read_to_string(spec)
-            .map_err(|e| Failure::new(exit::IO, format!("cannot read scene file {spec}: {e}")))?,
-    };
-    SceneFile::parse(&text).map_err(|e| Failure::new(exit::BAD_INPUT, format!("{spec}: {e}")))
-}
-
-/// Read a scene, apply the command line's overrides, validate.
-fn load_problem(spec: &str, edit: impl FnOnce(&mut SceneFile)) -> Result<Problem, Failure> {
-    let mut file = read_scene(spec)?;
-    edit(&mut file);
-    file.validate().map_err(|e| Failure::in_scene(spec, e))
+/// Read a scene (a path, or `example:NAME`), apply the command line's overrides, validate.
+fn load_problem(spec: &str, overrides: &liftoff::scene::Overrides) -> Result<Problem, Failure> {
+    liftoff::load(&Source::from_arg(spec), overrides).map_err(|e| match &e {
+        Error::Invalid { field, .. } if field == "scene" => Failure::from(e),
+        Error::Io { .. } => Failure::from(e),
+        _ => Failure::in_scene(spec, e),
+    })
 }
 
 /// The studies compare methods on one load set: say which one a scene with combinations gives.
@@ -344,22 +352,6 @@ fn note_first_combination(problem: &Problem) {
     }
 }
 
-/// Run a library study under a progress bar of `len` steps; each progress line is one step.
-fn with_progress<T>(len: usize, run: impl FnOnce(&mut dyn FnMut(&str)) -> T) -> T {
-    let pb = indicatif::ProgressBar::new(len as u64);
-    if let Ok(style) =
-        indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} {elapsed_precise} {msg}")
-    {
-        pb.set_style(style);
-    }
-    let result = run(&mut |m: &str| {
-        pb.set_message(m.to_string());
-        pb.inc(1);
-    });
-    pb.finish_and_clear();
-    result
-}
-
 fn solve(args: SolveArgs) -> Result<(), Failure> {
     let overrides = liftoff::scene::Overrides {
         contact: args.contact,
@@ -367,108 +359,121 @@ fn solve(args: SolveArgs) -> Result<(), Failure> {
         symmetry: args.symmetry,
         ..args.overrides.library()
     };
-    let problem = load_problem(&args.scene, |file| overrides.apply(file))?;
+    let problem = load_problem(&args.scene, &overrides)?;
     if let Some(dir) = &args.out {
         output::prepare_dir(dir)?;
     }
-    if !problem.combinations.is_empty() {
-        return solve_combinations(&args, &problem);
-    }
-    let analysis = liftoff::analyse(&problem)?;
-    let summary = &analysis.summary;
-    // A result that did not converge is not a solution: no files are written for it.
-    let written = match (&args.out, summary.converged) {
-        (Some(dir), true) => {
-            output::write_all(dir, &problem.model, &analysis.report, summary)?.len()
+    let outcome = with_progress(false, |m| liftoff::run(&problem, m))
+        .map_err(|e| Failure::solving(e, &problem.method))?;
+    // A result that did not converge is not a solution (and an envelope missing a combination
+    // is not an envelope): no files are written for it.
+    let written = match (&args.out, &outcome) {
+        (Some(dir), Outcome::Single(a)) if a.summary.converged => {
+            output::write_all(dir, &problem.model, &a.report, &a.summary)?.len()
         }
+        (Some(dir), Outcome::Combinations(c)) => match &c.envelope {
+            Some(env) => output::combinations::write_combinations(dir, c, env)?.len(),
+            None => 0,
+        },
         _ => 0,
     };
+    let files = args.out.as_deref().map(|dir| (written, dir));
     if args.json {
-        println!("{}", summary.to_json()?);
+        println!("{}", outcome.to_json()?);
     } else {
-        let files = args.out.as_deref().map(|dir| (written, dir));
-        print!("{}", tables::solve_table(summary, files));
-    }
-    if !summary.converged {
-        let hint = match analysis.solution.status {
-            liftoff::Status::PenaltyTooWeak {
-                suggested_penalty, ..
-            } => format!("\nhint: rerun with --penalty {suggested_penalty:.0e} or --method qp"),
-            _ if summary.method == "qp" => {
-                "\nhint: --method penalty solves the same operators by the paper's iteration, or try the other --qp-solver where it applies".into()
+        match &outcome {
+            Outcome::Single(a) => print!("{}", tables::solve_table(&a.summary, files)),
+            Outcome::Combinations(c) => {
+                let title = problem
+                    .combinations
+                    .first()
+                    .map_or(problem.model.title.as_str(), |c| c.scene_title());
+                print!(
+                    "{}",
+                    output::combinations::combinations_table(title, c, files)
+                );
+                println!("\n{}", tables::SIGN_CONVENTION);
             }
-            _ => "\nhint: --method qp solves the same operators as a convex QP".into(),
-        };
-        return Err(Failure::new(exit::SOLVER, format!(
-            "the {} method did not converge ({}); the numbers above are not a solution and no files were written{hint}",
-            summary.method, summary.status
-        )));
+        }
     }
-    Ok(())
+    match &outcome {
+        Outcome::Single(a) if !a.summary.converged => {
+            let hint = match (&a.solution.status, &problem.method) {
+                (liftoff::Status::PenaltyTooWeak { suggested_penalty, .. }, _) => format!(
+                    "\nhint: rerun with --penalty {suggested_penalty:.0e} or --method qp"
+                ),
+                (_, Method::Qp(_)) => "\nhint: --method penalty solves the same operators by the paper's iteration, or try the other --qp-solver where it applies".into(),
+                _ => "\nhint: --method qp solves the same operators as a convex QP".into(),
+            };
+            Err(Failure::new(exit::SOLVER, format!(
+                "the {} method did not converge ({}); the numbers above are not a solution and no files were written{hint}",
+                a.summary.method, a.summary.status
+            )))
+        }
+        Outcome::Combinations(c) if !c.all_converged() => {
+            let infeasible = c
+                .runs
+                .iter()
+                .any(|r| matches!(&r.outcome, Err(e) if e.kind() == ErrorKind::Infeasible));
+            let code = if infeasible {
+                exit::INFEASIBLE
+            } else {
+                exit::SOLVER
+            };
+            Err(Failure::new(
+                code,
+                format!(
+                    "not every combination has a solution ({} missing; see the table); no envelope and no files were written",
+                    c.missing().join(", ")
+                ),
+            ))
+        }
+        _ => Ok(()),
+    }
 }
 
-/// Every `[[combination]]` of a scene on one assembly, a line each, and the envelope.
-fn solve_combinations(args: &SolveArgs, problem: &Problem) -> Result<(), Failure> {
-    let n = problem.combinations.len();
-    let pb = indicatif::ProgressBar::new(n as u64);
-    if let Ok(style) =
+/// Run a library call under a progress bar drawn from its [`liftoff::Progress`] events (on a
+/// terminal only): the cases done of a run over several (combinations, a study's solves), the
+/// steps of one long solve. With `log`, every case's label is also printed as a line.
+fn with_progress<T>(log: bool, run: impl FnOnce(&Monitor<'_>) -> T) -> T {
+    let pb = indicatif::ProgressBar::new_spinner();
+    let bar =
         indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} {elapsed_precise} {msg}")
+            .ok();
+    if let Ok(style) = indicatif::ProgressStyle::with_template("{spinner} {elapsed_precise} {msg}")
     {
         pb.set_style(style);
     }
-    let run = liftoff::combination::analyse(problem, &|name: &str| {
-        pb.set_message(name.to_string());
-        pb.inc(1);
-    });
+    let report = |p: liftoff::Progress<'_>| match p {
+        liftoff::Progress::Case { done, total, label } => {
+            if pb.length() != Some(total as u64) {
+                if let Some(style) = bar.clone() {
+                    pb.set_style(style);
+                }
+                pb.set_length(total as u64);
+            }
+            pb.set_position(done as u64);
+            pb.set_message(label.to_string());
+            if log {
+                pb.println(label);
+            }
+        }
+        liftoff::Progress::Step {
+            method,
+            step,
+            changes,
+        } => {
+            pb.set_message(format!("{method} {step} ({changes} changed)"));
+            pb.tick();
+        }
+    };
+    let result = run(&Monitor::NONE.with_progress(&report));
     pb.finish_and_clear();
-    let run = run?;
-    let all = run.all_converged();
-    let env = if all {
-        liftoff::combination::envelope(&run.runs)
-    } else {
-        None
-    };
-    // Only a complete set is written: an envelope missing a combination is not an envelope.
-    let written = match (&args.out, &env) {
-        (Some(dir), Some(env)) => output::combinations::write_combinations(dir, &run, env)?.len(),
-        _ => 0,
-    };
-    let title = problem
-        .combinations
-        .first()
-        .map_or(problem.model.title.as_str(), |c| c.scene_title());
-    if args.json {
-        let json = output::combinations::combinations_json(&run, env.as_ref())
-            .map_err(|e| Failure::new(exit::IO, format!("cannot serialise the envelope: {e}")))?;
-        println!("{json}");
-    } else {
-        let files = args.out.as_deref().map(|dir| (written, dir));
-        print!(
-            "{}",
-            output::combinations::combinations_table(title, &run, env.as_ref(), files)
-        );
-        println!("\n{}", tables::SIGN_CONVENTION);
-    }
-    if !all {
-        let infeasible = run
-            .runs
-            .iter()
-            .any(|r| matches!(&r.outcome, Err(e) if e.kind() == "infeasible"));
-        let code = if infeasible {
-            exit::INFEASIBLE
-        } else {
-            exit::SOLVER
-        };
-        return Err(Failure::new(
-            code,
-            "not every combination has a solution (see the table); no files were written",
-        ));
-    }
-    Ok(())
+    result
 }
 
 fn compare(args: CompareArgs) -> Result<(), Failure> {
-    let problem = load_problem(&args.scene, |file| args.overrides.library().apply(file))?;
+    let problem = load_problem(&args.scene, &args.overrides.library())?;
     note_first_combination(&problem);
     output::prepare_dir(&args.out)?;
     let c = liftoff::compare::compare(&problem)?;
@@ -496,10 +501,10 @@ fn eps_sweep(args: EpsSweepArgs) -> Result<(), Failure> {
         constraints: args.constraints,
     };
     options.validate().map_err(Failure::option)?;
-    let problem = load_problem(&args.scene, |_| {})?;
+    let problem = load_problem(&args.scene, &Default::default())?;
     note_first_combination(&problem);
     output::prepare_dir(&args.out)?;
-    let sweep = with_progress(options.progress_steps(), |p| options.run(&problem, p))?;
+    let sweep = with_progress(false, |m| options.run(&problem, m))?;
     let title = &problem.model.title;
     let chart_title = format!("{title} — penalty against QP");
     output::studies::write_sweep(&args.out, &sweep, &chart_title)?;
@@ -513,10 +518,10 @@ fn tradeoff(args: TradeoffArgs) -> Result<(), Failure> {
         penalties: args.penalties,
     };
     options.validate().map_err(Failure::option)?;
-    let problem = load_problem(&args.scene, |_| {})?;
+    let problem = load_problem(&args.scene, &Default::default())?;
     note_first_combination(&problem);
     output::prepare_dir(&args.out)?;
-    let t = with_progress(options.progress_steps(), |p| options.run(&problem, p))?;
+    let t = with_progress(false, |m| options.run(&problem, m))?;
     let title = &problem.model.title;
     let chart_title = format!("{title} — speed against accuracy");
     output::studies::write_tradeoff(&args.out, &t, &chart_title)?;
@@ -535,11 +540,11 @@ fn stability(args: StabilityArgs) -> Result<(), Failure> {
     };
     let bases = scenes
         .iter()
-        .map(|s| load_problem(s, |_| {}))
+        .map(|s| load_problem(s, &Default::default()))
         .collect::<Result<Vec<_>, _>>()?;
     output::prepare_dir(&args.out)?;
     let plan = study::stability_plan(&bases);
-    let rows = with_progress(plan.len(), |p| study::stability_sweep(&plan, p));
+    let rows = with_progress(false, |m| study::stability_sweep(&plan, m))?;
     output::studies::write_stability(&args.out, &rows, "liftoff stability")?;
     print!("{}", tables::stability_table(&rows, &args.out));
     Ok(())
@@ -551,7 +556,7 @@ fn paper(args: PaperArgs) -> Result<(), Failure> {
         load2: args.load2.parse()?,
         refine: args.refine,
     };
-    let report = liftoff::paper::run(&options, &args.out, &mut |line: &str| eprintln!("{line}"))?;
+    let report = with_progress(true, |m| liftoff::paper::run(&options, &args.out, m))?;
     print!("{}", liftoff::paper::write_markdown(&report));
     println!(
         "\nwritten: {} files in {}",
@@ -578,6 +583,45 @@ mod tests {
         let d = TradeoffOptions::default();
         assert_eq!(args.meshes, d.meshes, "--meshes default");
         assert_eq!(args.penalties, d.penalties, "--penalties default");
+    }
+
+    /// The flags of `solve` that override the scene are the library's option list, no more
+    /// and no fewer; `compare`'s are a part of it (it runs both methods, so it has no
+    /// --method, --contact or --symmetry). Adding an option to the library without its flag,
+    /// or a flag without the library's option, fails here.
+    #[test]
+    fn solve_flags_are_the_library_options() {
+        use clap::CommandFactory;
+        let cli = Cli::command();
+        let flags = |sub: &str| -> Vec<String> {
+            let Some(cmd) = cli.find_subcommand(sub) else {
+                panic!("subcommand {sub}");
+            };
+            let mut v: Vec<String> = cmd
+                .get_arguments()
+                .filter_map(|a| a.get_long())
+                .filter(|l| !matches!(*l, "out" | "json" | "help"))
+                .map(|l| l.replace('-', "_"))
+                .collect();
+            v.sort();
+            v
+        };
+        let mut options: Vec<String> = liftoff::scene::OPTIONS
+            .iter()
+            .map(|o| o.0.to_string())
+            .collect();
+        options.sort();
+        assert_eq!(
+            flags("solve"),
+            options,
+            "solve's flags against scene::OPTIONS"
+        );
+        for f in flags("compare") {
+            assert!(
+                options.contains(&f),
+                "compare's --{f} is not a library option"
+            );
+        }
     }
 
     /// An option error names the flag, in the wording the library gives.

@@ -47,8 +47,8 @@ impl Mesh {
     pub fn new(a: f64, b: f64, full: [usize; 2], sym_x: bool, sym_y: bool) -> Self {
         let hx = a / full[0] as f64;
         let hy = b / full[1] as f64;
-        let sym_x = sym_x && full[0] % 2 == 0;
-        let sym_y = sym_y && full[1] % 2 == 0;
+        let sym_x = sym_x && full[0].is_multiple_of(2);
+        let sym_y = sym_y && full[1].is_multiple_of(2);
         Self {
             nx: if sym_x { full[0] / 2 } else { full[0] },
             ny: if sym_y { full[1] / 2 } else { full[1] },

@@ -9,7 +9,7 @@ use crate::foundation::FoundationKind;
 use crate::model::ConstraintPoints;
 
 /// Contact law between plate and foundation.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Contact {
     /// Bilateral: the foundation may pull (gap = 0 everywhere).
@@ -19,7 +19,7 @@ pub enum Contact {
 }
 
 /// Which method solves unbonded contact (the scene's `[solver] method`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum MethodKind {
     /// The paper's penalty iteration (eqs. 4.5–4.6).
@@ -81,7 +81,7 @@ impl Default for CgSettings {
 
 /// How the half-space compliance T is held and the penalty steps solved (the scene's
 /// `[solver] route`, the CLI's `--solver`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Route {
     /// Dense up to [`Route::AUTO_DENSE_NODES`] pressure nodes (and always for the QP), iterative
@@ -214,7 +214,7 @@ impl KktSolver {
 }
 
 /// How the QP is posed for clarabel (all forms are exact and give the same σ).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum QpForm {
     /// Primal for a diagonal (Winkler) T, Schur for a dense (half-space) T.
@@ -255,7 +255,7 @@ impl QpForm {
 }
 
 /// Which solver runs the QP (the scene's `[solver] qp_solver`, the CLI's `--qp-solver`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum QpSolver {
     /// clarabel where its dense or sparse form fits and is robust (Gauss-point constraints, a

@@ -21,7 +21,7 @@ use crate::foundation::FoundationKind;
 use crate::mesh::Mesh;
 
 /// Where σ ≥ 0 is imposed.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum ConstraintPoints {
     /// At the nodes (σ ≥ 0 everywhere for bilinear σ).
@@ -31,7 +31,7 @@ pub enum ConstraintPoints {
 }
 
 /// Whether to reduce the model by symmetry.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum SymmetryMode {
     /// Model a half or a quarter when the loads allow it.
@@ -40,25 +40,8 @@ pub enum SymmetryMode {
     None,
 }
 
-/// `name()` and `Display` for the small enums of scene files and reports.
-#[macro_export]
-macro_rules! names {
-    ($t:ty, $($v:ident => $s:literal),+) => {
-        impl $t {
-            /// Name as written in scene files and reports.
-            pub fn name(self) -> &'static str {
-                match self { $(Self::$v => $s),+ }
-            }
-        }
-        impl std::fmt::Display for $t {
-            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-                f.pad(self.name())
-            }
-        }
-    };
-}
-names!(ConstraintPoints, Nodal => "nodal", Gauss => "gauss");
-names!(SymmetryMode, Auto => "auto", None => "none");
+crate::names!(ConstraintPoints, Nodal => "nodal", Gauss => "gauss");
+crate::names!(SymmetryMode, Auto => "auto", None => "none");
 
 /// The paper's dimensionless groups of a problem.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]

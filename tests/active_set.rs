@@ -193,7 +193,9 @@ fn equals_clarabel_on_every_combination() {
     for solver in [QpSolver::Clarabel, QpSolver::ActiveSet] {
         let mut p = Problem::from_toml(&text).expect("raft");
         p.method = qp(solver);
-        runs.push(liftoff::combination::analyse(&p, &|_| {}).expect("combinations"));
+        runs.push(
+            liftoff::combination::analyse(&p, &liftoff::Monitor::NONE).expect("combinations"),
+        );
     }
     assert!(runs[0].runs.len() >= 2, "the raft has several combinations");
     for (a, b) in runs[0].runs.iter().zip(&runs[1].runs) {

@@ -326,7 +326,7 @@ fn factored_slab(dead: f64, live: f64, temp: f64) -> ModelBuilder {
 fn run_combinations(b: &ModelBuilder, method: &Method) -> Vec<CombinationRun> {
     let mut p = problem(b);
     p.method = method.clone();
-    let runs = combination::analyse(&p, &|_| {})
+    let runs = combination::analyse(&p, &liftoff::Monitor::NONE)
         .unwrap_or_else(|e| panic!("combinations failed: {e}"))
         .runs;
     for r in &runs {

@@ -119,8 +119,19 @@ fn run_writes_the_figures_and_tables() {
         load2: LoadCondition2::CaptionPatch,
         refine: 1,
     };
-    let mut lines = Vec::new();
-    let report = paper::run(&options, &out, &mut |s| lines.push(s.to_string())).expect("run");
+    let lines = std::sync::Mutex::new(Vec::new());
+    let record = |p: liftoff::Progress<'_>| {
+        if let (liftoff::Progress::Case { label, .. }, Ok(mut l)) = (p, lines.lock()) {
+            l.push(label.to_string());
+        }
+    };
+    let report = paper::run(
+        &options,
+        &out,
+        &liftoff::Monitor::NONE.with_progress(&record),
+    )
+    .expect("run");
+    let lines = lines.into_inner().unwrap_or_default();
     assert!(!lines.is_empty(), "progress is reported");
     assert_eq!(report.levels, vec![1]);
     assert_eq!(
@@ -302,12 +313,12 @@ fn run_refuses_bad_options() {
             refine,
             ..PaperOptions::default()
         };
-        assert!(paper::run(&options, &out, &mut |_| {}).is_err());
+        assert!(paper::run(&options, &out, &liftoff::Monitor::NONE).is_err());
     }
     let options = PaperOptions {
         load2: LoadCondition2::Patch { gamma: 1.5 },
         ..PaperOptions::default()
     };
-    assert!(paper::run(&options, &out, &mut |_| {}).is_err());
+    assert!(paper::run(&options, &out, &liftoff::Monitor::NONE).is_err());
     assert!(!out.exists(), "nothing written");
 }

@@ -19,7 +19,7 @@ fn penalty_error_is_first_order_in_epsilon() {
             &eps,
             &[ConstraintPoints::Nodal, ConstraintPoints::Gauss],
             [1e-9, 1e-2],
-            &mut |_| {},
+            &liftoff::Monitor::NONE,
         )
         .expect("sweep");
         for (kind, slope, range) in &sweep.slopes {

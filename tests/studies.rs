@@ -110,11 +110,20 @@ fn tradeoff_points_front_and_convergence() {
     for foundation in [FoundationKind::Winkler, FoundationKind::HalfSpace] {
         let name = foundation.name();
         let problem = paper_plate(foundation, 16, budget::default_memory_limit());
-        let mut messages = Vec::new();
-        let t = study::tradeoff(&problem, &meshes, &penalties, &mut |m| {
-            messages.push(m.to_string())
-        })
+        let events = std::sync::Mutex::new(Vec::new());
+        let record = |p: liftoff::Progress<'_>| {
+            if let (liftoff::Progress::Case { done, total, .. }, Ok(mut v)) = (p, events.lock()) {
+                v.push((done, total));
+            }
+        };
+        let t = study::tradeoff(
+            &problem,
+            &meshes,
+            &penalties,
+            &liftoff::Monitor::NONE.with_progress(&record),
+        )
         .unwrap_or_else(|e| panic!("{name}: {e}"));
+        let messages = events.into_inner().unwrap_or_default();
         check_tradeoff(name, &t, &meshes, &penalties);
         assert!(
             t.reference
@@ -127,6 +136,14 @@ fn tradeoff_points_front_and_convergence() {
             1 + meshes.len() * (1 + penalties.len()),
             "{name}: one progress message per solve: {messages:?}"
         );
+        // Cases counted 0, 1, … of the run's total, which is known from the start.
+        for (k, &(done, total)) in messages.iter().enumerate() {
+            assert_eq!(
+                (done, total),
+                (k, messages.len()),
+                "{name}: progress event {k}"
+            );
+        }
         let qp: Vec<&TradeoffPoint> = t.points.iter().filter(|p| p.method == "qp").collect();
         for p in &qp {
             assert!(p.converged, "{name}: QP at {}: {}", p.mesh, p.status);
@@ -173,7 +190,7 @@ fn tradeoff_reference_falls_back_to_the_finest_mesh() {
     let limit = (need(8) * need(16)).sqrt();
     assert!(need(8) < limit && limit < need(16));
     let problem = paper_plate(FoundationKind::Winkler, 8, limit);
-    let t = study::tradeoff(&problem, &meshes, &[1e-8], &mut |_| {}).expect("tradeoff");
+    let t = study::tradeoff(&problem, &meshes, &[1e-8], &liftoff::Monitor::NONE).expect("tradeoff");
     assert!(
         t.reference.contains("8 elements per side (the finest mesh"),
         "{}",
@@ -185,7 +202,7 @@ fn tradeoff_reference_falls_back_to_the_finest_mesh() {
     // The same model solved twice by the same deterministic method: round-off at most.
     assert!(finest_qp.error <= 1e-12, "{:e}", finest_qp.error);
 
-    let none = study::tradeoff(&problem, &[], &[1e-8], &mut |_| {});
+    let none = study::tradeoff(&problem, &[], &[1e-8], &liftoff::Monitor::NONE);
     assert!(
         matches!(none, Err(Error::Invalid { ref field, .. }) if field == "meshes"),
         "no meshes: {:?}",

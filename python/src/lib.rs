@@ -6,49 +6,128 @@
 //! No mechanics lives here; the public API (signatures, docstrings, stubs) is the pure-Python
 //! layer in `python/liftoff/`.
 
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc;
+use std::time::Duration;
+
 use liftoff::scene::{Overrides, Problem, SceneFile};
 use liftoff::study::{stability_plan, stability_run, EpsSweepOptions, TradeoffOptions};
-use liftoff::Error;
+use liftoff::{Error, ErrorKind, Monitor, Outcome, Progress, Source};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
-use pyo3::types::{PyBytes, PyDict};
+use pyo3::types::{PyBytes, PyDict, PyList};
 
-/// Run a library call with the GIL released; a panic inside it (a bug) becomes a library
-/// error raised as `liftoff.NumericalError`, never a `PanicException` that `except Exception`
-/// would not catch.
-fn run<T: Send>(py: Python<'_>, f: impl FnOnce() -> liftoff::Result<T> + Send) -> PyResult<T> {
-    py.detach(|| {
-        std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)).unwrap_or_else(|panic| {
-            let what = panic
-                .downcast_ref::<&str>()
-                .map(|s| s.to_string())
-                .or_else(|| panic.downcast_ref::<String>().cloned())
-                .unwrap_or_default();
-            Err(Error::numerical(
-                "liftoff (internal error, please report the scene)",
-                what,
-            ))
+/// How often the waiting thread looks for Ctrl-C and passes progress on: well inside the one
+/// second within which an interrupted solve must stop.
+const POLL: Duration = Duration::from_millis(50);
+
+/// A progress event carried from the solving thread to Python's.
+enum Event {
+    Case(usize, usize, String),
+    Step(&'static str, usize, usize),
+}
+
+/// Run a library call on a thread of its own with the GIL released, while this (Python's)
+/// thread waits: every [`POLL`] it checks for signals — Ctrl-C sets the run's cancel flag, the
+/// library's loops stop at their next check, and the `KeyboardInterrupt` is raised — and hands
+/// progress events to `progress` (a callable `(kind, done, total, label)`). A panic inside the
+/// library (a bug) becomes `liftoff.NumericalError`, never a `PanicException` that
+/// `except Exception` would not catch.
+fn run<T: Send>(
+    py: Python<'_>,
+    progress: Option<&Bound<'_, PyAny>>,
+    f: impl FnOnce(&Monitor<'_>) -> liftoff::Result<T> + Send,
+) -> PyResult<T> {
+    let cancel = AtomicBool::new(false);
+    let callback = progress.map(|p| p.clone().unbind());
+    let mut interrupt: Option<PyErr> = None;
+    let mut callback_error: Option<PyErr> = None;
+    let result = py.detach(|| {
+        std::thread::scope(|scope| {
+            let (tx, rx) = mpsc::channel::<Event>();
+            let cancel = &cancel;
+            let worker = scope.spawn(move || {
+                let report = |p: Progress<'_>| {
+                    let _ = tx.send(match p {
+                        Progress::Case { done, total, label } => {
+                            Event::Case(done, total, label.to_string())
+                        }
+                        Progress::Step {
+                            method,
+                            step,
+                            changes,
+                        } => Event::Step(method.name(), step, changes),
+                    });
+                };
+                let monitor = Monitor::NONE.with_cancel(cancel).with_progress(&report);
+                std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| f(&monitor)))
+                    .unwrap_or_else(|panic| {
+                        let what = panic
+                            .downcast_ref::<&str>()
+                            .map(|s| s.to_string())
+                            .or_else(|| panic.downcast_ref::<String>().cloned())
+                            .unwrap_or_default();
+                        Err(Error::numerical(
+                            "liftoff (internal error, please report the scene)",
+                            what,
+                        ))
+                    })
+            });
+            loop {
+                match rx.recv_timeout(POLL) {
+                    Ok(event) => {
+                        if let (Some(cb), None) = (&callback, &callback_error) {
+                            let called = Python::attach(|py| match event {
+                                Event::Case(d, t, l) => cb.call1(py, ("case", d, t, l)).map(drop),
+                                Event::Step(m, s, c) => cb.call1(py, (m, s, c, "")).map(drop),
+                            });
+                            if let Err(e) = called {
+                                // A failing callback stops the run and is raised.
+                                callback_error = Some(e);
+                                cancel.store(true, Ordering::Relaxed);
+                            }
+                        }
+                    }
+                    Err(mpsc::RecvTimeoutError::Timeout) => {}
+                    Err(mpsc::RecvTimeoutError::Disconnected) => break,
+                }
+                if interrupt.is_none() {
+                    if let Err(e) = Python::attach(|py| py.check_signals()) {
+                        interrupt = Some(e);
+                        cancel.store(true, Ordering::Relaxed);
+                    }
+                }
+            }
+            worker.join().unwrap_or_else(|_| {
+                Err(Error::numerical(
+                    "liftoff (internal error, please report the scene)",
+                    "the solving thread stopped",
+                ))
+            })
         })
-    })
-    .map_err(to_py)
+    });
+    if let Some(e) = interrupt.or(callback_error) {
+        return Err(e);
+    }
+    result.map_err(to_py)
 }
 
 /// A library error as the matching `liftoff.errors` exception (its class from the error's
 /// kind), carrying the message and, for a scene value, the field it names.
 fn to_py(e: Error) -> PyErr {
     let class = match e.kind() {
-        "invalid" => "SceneError",
-        "too-large" => "TooLarge",
-        "infeasible" => "Infeasible",
-        "numerical" => "NumericalError",
-        "io" => "LiftoffIOError",
-        _ => "LiftoffError",
+        ErrorKind::Invalid => "SceneError",
+        ErrorKind::TooLarge => "TooLarge",
+        ErrorKind::Infeasible => "Infeasible",
+        ErrorKind::Numerical => "NumericalError",
+        ErrorKind::Io => "LiftoffIOError",
+        ErrorKind::Cancelled => "LiftoffError",
     };
     let field = match &e {
         Error::Invalid { field, .. } => Some(field.clone()),
         _ => None,
     };
-    let kind = e.kind().to_string();
+    let kind = e.kind().name();
     Python::attach(|py| {
         let raised = py
             .import("liftoff.errors")
@@ -65,21 +144,25 @@ fn json<T: serde::Serialize>(value: &T) -> PyResult<String> {
     serde_json::to_string(value).map_err(|e| PyRuntimeError::new_err(e.to_string()))
 }
 
-/// The scene file of a (kind, text) pair: "toml" text, "json" text (a dict's), or "example"
-/// (a bundled scene's name).
-fn scene_file(kind: &str, text: &str) -> liftoff::Result<SceneFile> {
+/// The scene of a (kind, text) pair: "toml" text, "json" text (a dict's), or "example" (a
+/// bundled scene's name).
+fn source<'a>(kind: &str, text: &'a str) -> Source<'a> {
     match kind {
-        "example" => SceneFile::example(text),
-        "json" => SceneFile::from_json(text),
-        _ => SceneFile::parse(text),
+        "example" => Source::Example(text),
+        "json" => Source::Json(text),
+        _ => Source::Toml(text),
     }
 }
 
-/// Parse, apply the options (JSON object), validate.
+/// The library's one entry: read the scene, apply the options (a JSON object), validate.
 fn problem(kind: &str, text: &str, options: &str) -> liftoff::Result<Problem> {
-    let mut file = scene_file(kind, text)?;
-    Overrides::from_json(options)?.apply(&mut file);
-    file.validate()
+    liftoff::load(&source(kind, text), &Overrides::from_json(options)?)
+}
+
+/// The options `solve` and the studies take (the library's list, the CLI's flags).
+#[pyfunction]
+fn options() -> Vec<&'static str> {
+    liftoff::scene::OPTIONS.iter().map(|o| o.0).collect()
 }
 
 /// Names and one-line descriptions of the bundled scenes.
@@ -121,7 +204,7 @@ fn scene_json(kind: &str, text: &str) -> PyResult<String> {
 /// Validate a scene with options, without solving: its model's summary facts as JSON.
 #[pyfunction]
 fn check(py: Python<'_>, kind: &str, text: &str, options: &str) -> PyResult<String> {
-    let p = run(py, || problem(kind, text, options))?;
+    let p = run(py, None, |_| problem(kind, text, options))?;
     json(&serde_json::json!({
         "title": p.model.title,
         "elements": p.model.elements,
@@ -160,42 +243,80 @@ fn fields<'py>(py: Python<'py>, r: &liftoff::post::Report) -> PyResult<Bound<'py
     Ok(d)
 }
 
-/// Solve a scene: `(summary_json, fields)` for a scene without combinations, or
-/// `(combinations_json, [fields per combination])` with them (the JSON the CLI's `--json`
-/// prints). A solve that did not converge is returned (its summary says so); the Python layer
-/// raises `NotConverged`.
+/// Per node and per element of a combinations scene's envelope: for each field its largest
+/// and smallest values and the index of the governing combination (into `names`), as f64
+/// bytes, by the column names of `envelope_nodes.csv` / `envelope_elements.csv`.
+fn envelope_fields<'py>(
+    py: Python<'py>,
+    env: &liftoff::combination::Envelope,
+) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    let bytes = |v: &[f64]| v.iter().flat_map(|x| x.to_le_bytes()).collect::<Vec<u8>>();
+    let index = |v: &[usize]| v.iter().map(|&i| i as f64).collect::<Vec<f64>>();
+    for (group, fields) in [("nodes", &env.nodes), ("elements", &env.elements)] {
+        let g = PyDict::new(py);
+        for (name, unit, e) in fields.iter() {
+            let f = PyDict::new(py);
+            f.set_item("unit", *unit)?;
+            f.set_item("max", PyBytes::new(py, &bytes(&e.max)))?;
+            f.set_item("max_by", PyBytes::new(py, &bytes(&index(&e.max_by))))?;
+            f.set_item("min", PyBytes::new(py, &bytes(&e.min)))?;
+            f.set_item("min_by", PyBytes::new(py, &bytes(&index(&e.min_by))))?;
+            g.set_item(*name, f)?;
+        }
+        d.set_item(group, g)?;
+    }
+    d.set_item("names", env.names.clone())?;
+    Ok(d)
+}
+
+/// Solve a scene: `(summary_json, fields, envelope)` — for a scene without combinations its
+/// summary and fields (envelope None); with them the combinations' JSON, a list of fields per
+/// combination (None where there is no solution), and the envelope's per-node and
+/// per-element arrays (None unless every combination converged: the library's rule). The JSON
+/// is the CLI's `--json`. A solve that did not converge is returned (its summary says so); the
+/// Python layer raises `NotConverged`.
 #[pyfunction]
+#[pyo3(signature = (kind, text, options, progress=None))]
 fn solve<'py>(
     py: Python<'py>,
     kind: &str,
     text: &str,
     options: &str,
-) -> PyResult<(String, Bound<'py, PyAny>)> {
-    let p = run(py, || problem(kind, text, options))?;
-    if p.combinations.is_empty() {
-        let a = run(py, || liftoff::analyse(&p))?;
-        let s = a.summary.to_json().map_err(to_py)?;
-        Ok((s, fields(py, &a.report)?.into_any()))
-    } else {
-        let runs = run(py, || liftoff::combination::analyse(&p, &|_| {}))?;
-        let envelope = liftoff::combination::envelope(&runs.runs);
-        let s = liftoff::output::combinations::combinations_json(&runs, envelope.as_ref())
-            .map_err(to_py)?;
-        let list = pyo3::types::PyList::empty(py);
-        for r in &runs.runs {
-            match &r.outcome {
-                Ok(o) => list.append(fields(py, &o.report)?)?,
-                Err(_) => list.append(py.None())?,
+    progress: Option<&Bound<'py, PyAny>>,
+) -> PyResult<(String, Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+    let outcome = run(py, progress, |m| {
+        let p = problem(kind, text, options)?;
+        liftoff::run(&p, m)
+    })?;
+    let doc = outcome.to_json().map_err(to_py)?;
+    match &outcome {
+        Outcome::Single(a) => Ok((
+            doc,
+            fields(py, &a.report)?.into_any(),
+            py.None().into_bound(py),
+        )),
+        Outcome::Combinations(c) => {
+            let list = PyList::empty(py);
+            for r in &c.runs {
+                match &r.outcome {
+                    Ok(o) => list.append(fields(py, &o.report)?)?,
+                    Err(_) => list.append(py.None())?,
+                }
             }
+            let env = match &c.envelope {
+                Some(e) => envelope_fields(py, e)?.into_any(),
+                None => py.None().into_bound(py),
+            };
+            Ok((doc, list.into_any(), env))
         }
-        Ok((s, list.into_any()))
     }
 }
 
 /// `liftoff compare`: both methods on one assembly, as JSON.
 #[pyfunction]
 fn compare(py: Python<'_>, kind: &str, text: &str, options: &str) -> PyResult<String> {
-    let c = run(py, || {
+    let c = run(py, None, |_| {
         problem(kind, text, options).and_then(|p| liftoff::compare::compare(&p))
     })?;
     json(&c)
@@ -205,6 +326,7 @@ fn compare(py: Python<'_>, kind: &str, text: &str, options: &str) -> PyResult<St
 /// `liftoff tradeoff`), its options the JSON of [`EpsSweepOptions`] or [`TradeoffOptions`];
 /// the study's result as JSON.
 #[pyfunction]
+#[pyo3(signature = (name, kind, text, options, study, progress=None))]
 fn study(
     py: Python<'_>,
     name: &str,
@@ -212,21 +334,22 @@ fn study(
     text: &str,
     options: &str,
     study: &str,
+    progress: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<String> {
     let bad = |e: serde_json::Error| to_py(Error::invalid(name, e.to_string()));
     match name {
         "eps_sweep" => {
             let o: EpsSweepOptions = serde_json::from_str(study).map_err(bad)?;
-            json(&run(py, || {
+            json(&run(py, progress, |m| {
                 o.validate()?;
-                o.run(&problem(kind, text, options)?, &mut |_| {})
+                o.run(&problem(kind, text, options)?, m)
             })?)
         }
         "tradeoff" => {
             let o: TradeoffOptions = serde_json::from_str(study).map_err(bad)?;
-            json(&run(py, || {
+            json(&run(py, progress, |m| {
                 o.validate()?;
-                o.run(&problem(kind, text, options)?, &mut |_| {})
+                o.run(&problem(kind, text, options)?, m)
             })?)
         }
         _ => Err(PyRuntimeError::new_err(format!("no study `{name}`"))),
@@ -236,7 +359,7 @@ fn study(
 /// How many runs `liftoff stability` makes on these scenes (each a (kind, text) pair).
 #[pyfunction]
 fn stability_len(py: Python<'_>, scenes: Vec<(String, String)>, options: &str) -> PyResult<usize> {
-    let bases = run(py, || {
+    let bases = run(py, None, |_| {
         scenes
             .iter()
             .map(|(k, t)| problem(k, t, options))
@@ -248,14 +371,15 @@ fn stability_len(py: Python<'_>, scenes: Vec<(String, String)>, options: &str) -
 /// Runs `indices` of the stability plan of these scenes (all of them when None), as JSON rows
 /// in plan order: the unit a Dask worker takes.
 #[pyfunction]
-#[pyo3(signature = (scenes, options, indices=None))]
+#[pyo3(signature = (scenes, options, indices=None, progress=None))]
 fn stability_rows(
     py: Python<'_>,
     scenes: Vec<(String, String)>,
     options: &str,
     indices: Option<Vec<usize>>,
+    progress: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<String> {
-    let rows = run(py, || {
+    let rows = run(py, progress, |m| {
         let bases = scenes
             .iter()
             .map(|(k, t)| problem(k, t, options))
@@ -269,10 +393,21 @@ fn stability_rows(
             ));
         }
         use rayon::prelude::*;
-        Ok(picked
+        let cases = liftoff::monitor::Cases::new(m, picked.len());
+        picked
             .par_iter()
-            .map(|&i| stability_run(&plan[i]))
-            .collect::<Vec<_>>())
+            .map(|&i| {
+                let row = stability_run(&plan[i]);
+                cases.finish(&format!(
+                    "{} {} = {:.2e} ({})",
+                    row.foundation,
+                    row.sweep.name(),
+                    row.value,
+                    row.method
+                ))?;
+                Ok(row)
+            })
+            .collect::<liftoff::Result<Vec<_>>>()
     })?;
     json(&rows)
 }
@@ -285,6 +420,7 @@ fn _liftoff(m: &Bound<'_, PyModule>) -> PyResult<()> {
     // not oversubscribe the cores.
     faer::set_global_parallelism(faer::Par::Seq);
     m.add_function(wrap_pyfunction!(examples, m)?)?;
+    m.add_function(wrap_pyfunction!(options, m)?)?;
     m.add_function(wrap_pyfunction!(example_text, m)?)?;
     m.add_function(wrap_pyfunction!(check, m)?)?;
     m.add_function(wrap_pyfunction!(scene_json, m)?)?;

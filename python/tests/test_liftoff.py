@@ -9,11 +9,12 @@ from __future__ import annotations
 
 import csv
 import json
-import os
 import math
+import os
 import pathlib
 import pickle
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -135,6 +136,75 @@ def test_combinations_give_a_solution_each_and_the_envelope():
     for r in ref["combinations"]:
         assert c[r["name"]].V_max == r["summary"]["V_max"]
     assert c.envelope == ref["envelope"]
+
+
+def read_rows(path: pathlib.Path) -> list:
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def test_envelope_arrays_equal_the_cli_envelope_csvs(tmp_path):
+    c = liftoff.solve("example:raft-combinations")
+    r = cli("solve", "example:raft-combinations", "--out", str(tmp_path))
+    assert r.returncode == 0, r.stderr
+    assert c.missing == [] and c.envelope_nodes is not None
+    for group, env in [("nodes", c.envelope_nodes), ("elements", c.envelope_elements)]:
+        rows = read_rows(tmp_path / f"envelope_{group}.csv")
+        assert set(env) == {"w", "pressure", "uplift"} if group == "nodes" else set(env) == {"mx", "my", "mxy", "qx", "qy"}
+        for name, field in env.items():
+            assert field["max"].size == len(rows), (group, name)
+            for key in ("max", "min"):
+                col = f"{name}_{key} [{field['unit']}]"
+                ref = np.array([float(row[col]) for row in rows])
+                # The CSV prints {:e} (17 significant digits for f64): equal to the bit.
+                assert np.array_equal(field[key].ravel(), ref), (group, name, key)
+                by = [row[f"{name}_{key}_by"] for row in rows]
+                assert list(field[key + "_by"].ravel()) == by, (group, name, key)
+    # The per-node envelope holds every combination's own field: its max is the largest.
+    w = np.max([s.w for s in c], axis=0)
+    assert np.array_equal(c.envelope_nodes["w"]["max"], w)
+
+
+#: The raft with one more combination that has no solution: the whole raft pulled upward,
+#: which a tensionless soil cannot hold.
+def raft_with_a_failing_combination() -> str:
+    text = liftoff.example_text("raft-combinations")
+    cases = sorted({line.split('"')[1] for line in text.splitlines() if line.strip().startswith("case =")})
+    factors = ", ".join(f"{c} = -1.0" for c in cases)
+    return text + f'\n[[combination]]\nname = "pulled"\nfactors = {{ {factors} }}\n'
+
+
+def test_a_failing_combination_leaves_no_envelope_as_in_the_cli(tmp_path):
+    scene = tmp_path / "raft.toml"
+    scene.write_text(raft_with_a_failing_combination())
+    out = tmp_path / "out"
+    r = cli("solve", str(scene), "--out", str(out), "--json")
+    assert r.returncode == 3, r.stderr  # a combination that cannot be in equilibrium
+    doc = json.loads(r.stdout)
+    assert doc["missing"] == ["pulled"] and doc["envelope"] is None
+    assert not out.exists() or not any(out.iterdir()), "no files for an incomplete set"
+    with pytest.raises(liftoff.NotConverged, match="pulled") as e:
+        liftoff.solve(scene)
+    c = e.value.solution
+    assert c.missing == ["pulled"] and "pulled" in c.errors
+    assert c.envelope is None and c.envelope_nodes is None and c.envelope_elements is None
+    # The combinations that did converge are there, equal to the CLI's.
+    ok = {run["name"]: run["summary"] for run in doc["combinations"] if run["summary"]}
+    assert set(c.solutions) == set(ok)
+    for name, summary in ok.items():
+        assert c[name].V_max == summary["V_max"]
+
+
+def test_every_library_option_is_a_keyword():
+    """The Python options are the library's list: each one is accepted as a keyword (a bad
+    value is refused by the library, naming it), and an unknown one is refused here."""
+    from liftoff import _liftoff, _scene
+
+    assert set(_scene.OPTIONS) | {"method"} == set(_liftoff.options())
+    for name in _scene.OPTIONS:
+        with pytest.raises(liftoff.SceneError) as e:
+            liftoff.solve(SMALL, **{name: "not-a-value"})
+        assert "unknown option" not in str(e.value), name
 
 
 def test_solutions_and_records_pickle():
@@ -287,3 +357,58 @@ def test_tradeoff_takes_a_client(client):
     assert strip(a) == strip(b)
     assert_pareto_marks_follow_the_times(a)
     assert_pareto_marks_follow_the_times(b)
+
+
+# -- long runs: Ctrl-C and progress -------------------------------------------------------------
+
+INTERRUPTED_SOLVE = r"""
+import sys, time
+import liftoff
+print("STARTED", flush=True)
+try:
+    liftoff.solve("example:paper-halfspace", mesh=512, progress=False)
+    print("FINISHED", flush=True)
+except KeyboardInterrupt:
+    print(f"INTERRUPTED {time.monotonic():.6f}", flush=True)
+again = liftoff.solve("example:paper-winkler")
+print(f"AGAIN {again.converged} {again.V_max!r}", flush=True)
+"""
+
+
+def test_ctrl_c_stops_a_long_solve_within_a_second():
+    """SIGINT two seconds into a 512² half-space solve (about 40 s to the end) raises
+    KeyboardInterrupt within one second, and the process solves again afterwards."""
+    import signal
+    import time
+
+    p = subprocess.Popen([sys.executable, "-c", INTERRUPTED_SOLVE], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True)
+    try:
+        assert p.stdout.readline().strip() == "STARTED"
+        time.sleep(2.0)
+        sent = time.monotonic()  # CLOCK_MONOTONIC: the same clock in both processes
+        p.send_signal(signal.SIGINT)
+        out, err = p.communicate(timeout=120)
+    finally:
+        if p.poll() is None:
+            p.kill()
+    lines = out.split("\n")
+    assert lines[0].startswith("INTERRUPTED"), (out, err)
+    latency = float(lines[0].split()[1]) - sent
+    assert latency < 1.0, f"KeyboardInterrupt {latency:.2f} s after SIGINT"
+    ref = liftoff.solve("example:paper-winkler")
+    assert lines[1] == f"AGAIN True {ref.V_max!r}", (out, err)
+
+
+def test_progress_reaches_a_callable_for_studies_and_combinations():
+    events = []
+    liftoff.eps_sweep(SMALL, start=1e-3, stop=1e-5, points=3, progress=lambda *e: events.append(e))
+    cases = [e for e in events if e[0] == "case"]
+    # One QP reference and three ε̄, each reported with the count done before it.
+    assert [e[1] for e in cases] == [0, 1, 2, 3] and all(e[2] == 4 for e in cases), events
+    events.clear()
+    liftoff.solve("example:raft-combinations", progress=lambda *e: events.append(e))
+    done = sorted(e[1] for e in events if e[0] == "case")
+    assert done == [1, 2, 3, 4], events
+    with pytest.raises(ZeroDivisionError):
+        liftoff.solve("example:raft-combinations", progress=lambda *e: 1 / 0)

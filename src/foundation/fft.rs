@@ -42,11 +42,11 @@ pub fn fft_size(n: usize) -> usize {
     loop {
         let mut r = m;
         for p in [2, 3, 5] {
-            while r % p == 0 {
+            while r.is_multiple_of(p) {
                 r /= p;
             }
         }
-        if r == 1 && m % 2 == 0 {
+        if r == 1 && m.is_multiple_of(2) {
             return m;
         }
         m += 1;
@@ -556,10 +556,10 @@ mod tests {
     fn fft_sizes_are_smooth_and_large_enough() {
         for n in [1, 2, 7, 17, 97, 383, 769] {
             let m = fft_size(n);
-            assert!(m >= n && m % 2 == 0, "{n} → {m}");
+            assert!(m >= n && m.is_multiple_of(2), "{n} → {m}");
             let mut r = m;
             for p in [2, 3, 5] {
-                while r % p == 0 {
+                while r.is_multiple_of(p) {
                     r /= p;
                 }
             }

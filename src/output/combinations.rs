@@ -252,27 +252,6 @@ fn write_points(
     })
 }
 
-/// `liftoff solve --json` of a scene with combinations: each combination's summary (or its
-/// error) and the envelope's extremes.
-pub fn combinations_json(c: &Combinations, env: Option<&Envelope>) -> Result<String> {
-    let runs: Vec<serde_json::Value> = c
-        .runs
-        .iter()
-        .map(|r| {
-            let summary = r
-                .outcome
-                .as_ref()
-                .ok()
-                .and_then(|o| serde_json::to_value(&o.summary).ok());
-            let error = r.outcome.as_ref().err().map(|e| e.to_string());
-            serde_json::json!({ "name": r.name, "summary": summary, "error": error })
-        })
-        .collect();
-    let doc = serde_json::json!({ "combinations": runs, "envelope": env.map(|e| &e.quantities) });
-    serde_json::to_string_pretty(&doc)
-        .map_err(|e| Error::numerical("envelope", format!("cannot serialise: {e}")))
-}
-
 /// The bending moment of largest magnitude (mx or my), with its sign.
 fn extreme_moment(s: &crate::summary::Summary) -> f64 {
     [
@@ -286,12 +265,7 @@ fn extreme_moment(s: &crate::summary::Summary) -> f64 {
 }
 
 /// The CLI's table: a line per combination, then the governing extremes.
-pub fn combinations_table(
-    title: &str,
-    c: &Combinations,
-    env: Option<&Envelope>,
-    files: Option<(usize, &Path)>,
-) -> String {
+pub fn combinations_table(title: &str, c: &Combinations, files: Option<(usize, &Path)>) -> String {
     let mut s = String::new();
     let physical = c.runs.first().is_some_and(|r| r.model.physical.is_some());
     let _ = writeln!(s, "liftoff — {title}: {} load combinations", c.runs.len());
@@ -357,7 +331,15 @@ pub fn combinations_table(
             }
         }
     }
-    if let Some(env) = env {
+    let missing = c.missing();
+    if !missing.is_empty() {
+        let _ = writeln!(
+            s,
+            "  envelope   : not built: {} without a solution",
+            missing.join(", ")
+        );
+    }
+    if let Some(env) = &c.envelope {
         let _ = writeln!(s, "  envelope (value, where, governing combination):");
         for q in &env.quantities {
             // The table reads in engineering units; the files keep SI.

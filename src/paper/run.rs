@@ -16,6 +16,7 @@ use crate::foundation::FoundationKind;
 use crate::method::{Contact, MethodKind};
 use crate::metrics::{rel_l2 as rel_rms, rel_max};
 use crate::model::ConstraintPoints;
+use crate::monitor::{Cases, Monitor};
 use crate::output::Staged;
 use crate::post::FullField;
 use crate::solve::Status;
@@ -24,7 +25,7 @@ fn solve_case(
     case: &Case,
     refine: usize,
     method: MethodKind,
-    progress: &mut dyn FnMut(&str),
+    cases: &Cases<'_, '_>,
 ) -> Result<Solved> {
     let problem = case.problem(refine, method)?;
     let t0 = Instant::now();
@@ -71,7 +72,7 @@ fn solve_case(
         gauss_contact_radius,
         time_s,
     };
-    progress(&format!(
+    cases.finish(&format!(
         "Fig. {} {} {} Γ = {:.2e}, {} × {} elements: {} after {} iteration(s), contact radius {:.3}",
         case.figure,
         case.foundation.name(),
@@ -82,7 +83,7 @@ fn solve_case(
         s.status,
         s.iterations,
         s.contact_radius
-    ));
+    ))?;
     let run = PaperRun {
         foundation: case.foundation,
         mu: case.mu,
@@ -140,11 +141,7 @@ fn overlap(a: &FullField, b: &FullField) -> f64 {
 /// [`Error::Invalid`] for `refine` outside 1..=[`MAX_REFINE`] or a bad `load2`; [`Error::Io`] if
 /// `out` cannot be created or written; the errors of [`crate::analyse`]. A run that does not
 /// converge is not an error: its `converged` is false and the tables say so.
-pub fn run(
-    options: &PaperOptions,
-    out: &Path,
-    progress: &mut dyn FnMut(&str),
-) -> Result<PaperReport> {
+pub fn run(options: &PaperOptions, out: &Path, monitor: &Monitor<'_>) -> Result<PaperReport> {
     if options.refine == 0 || options.refine > MAX_REFINE {
         return Err(Error::invalid(
             "refine",
@@ -158,7 +155,7 @@ pub fn run(
     crate::output::prepare_dir(out)?;
     let levels = levels(options.refine);
     let finest = *levels.last().unwrap_or(&1);
-    let solved = solve_all(options, &levels, progress)?;
+    let solved = solve_all(options, &levels, monitor)?;
 
     let mut figures: Vec<PaperFigure> = figure_meta(options)
         .into_iter()
@@ -186,11 +183,6 @@ pub fn run(
     staged.write_text("paper.json", &json)?;
     staged.write_text("paper.md", &write_markdown(&report))?;
     staged.commit()?;
-    progress(&format!(
-        "wrote {} files to {}",
-        report.files.len(),
-        out.display()
-    ));
     Ok(report)
 }
 
@@ -198,14 +190,15 @@ pub fn run(
 fn solve_all(
     options: &PaperOptions,
     levels: &[usize],
-    progress: &mut dyn FnMut(&str),
+    monitor: &Monitor<'_>,
 ) -> Result<Vec<Solved>> {
     let all_cases = cases(options.load2);
+    // One progress event per solve, labelled with what it found.
+    let counter = Cases::new(monitor, levels.len() * all_cases.len());
     let mut solved: Vec<Solved> = Vec::new();
     for &level in levels {
-        progress(&format!("meshes × {level}: {} solves", all_cases.len()));
         for case in &all_cases {
-            solved.push(solve_case(case, level, options.method, progress)?);
+            solved.push(solve_case(case, level, options.method, &counter)?);
         }
     }
     Ok(solved)

@@ -19,7 +19,7 @@ pub mod validate;
 
 pub use builder::ModelBuilder;
 pub use loads::{DEFAULT_CASE, MAX_VOID_DEPTH_RATIO};
-pub use overrides::Overrides;
+pub use overrides::{Overrides, OPTIONS};
 pub use spec::*;
 
 use crate::error::{Error, Result};

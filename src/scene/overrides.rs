@@ -10,8 +10,25 @@ use crate::method::{Contact, MethodKind, QpForm, QpSolver, Route};
 use crate::model::{ConstraintPoints, SymmetryMode};
 use crate::scene::spec::{PenaltySpec, SceneFile};
 
-/// Overrides of a scene's settings; `None` keeps the scene's value.
-#[derive(Debug, Clone, Default, PartialEq, Deserialize)]
+/// Every option, by the name a front end gives it (`qp_form`; the command line's `--qp-form`),
+/// with the scene key it overrides: the one list that the command line's flags and the Python
+/// keyword arguments are checked against (tests fail when they drift), and that error
+/// messages list.
+pub const OPTIONS: &[(&str, &str)] = &[
+    ("contact", "solver.contact"),
+    ("method", "solver.method"),
+    ("penalty", "solver.penalty"),
+    ("constraint", "solver.constraint"),
+    ("mesh", "mesh.elements"),
+    ("qp_form", "solver.qp_form"),
+    ("qp_solver", "solver.qp_solver"),
+    ("solver", "solver.route"),
+    ("symmetry", "mesh.symmetry"),
+];
+
+/// Overrides of a scene's settings; `None` keeps the scene's value. One field per entry of
+/// [`OPTIONS`].
+#[derive(Debug, Clone, Default, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct Overrides {
     /// `[solver] contact`.
@@ -40,10 +57,8 @@ impl Overrides {
     /// value is an [`Error::Invalid`] naming it.
     pub fn from_json(text: &str) -> Result<Self> {
         serde_json::from_str(text).map_err(|e| {
-            Error::invalid(
-                "options",
-                format!("{e} (options: contact, method, penalty, constraint, mesh, qp_form, qp_solver, solver, symmetry)"),
-            )
+            let names: Vec<&str> = OPTIONS.iter().map(|o| o.0).collect();
+            Error::invalid("options", format!("{e} (options: {})", names.join(", ")))
         })
     }
 
@@ -108,6 +123,31 @@ mod tests {
         assert_eq!(file.solver.qp_solver, QpSolver::ActiveSet, "qp_solver");
         assert_eq!(file.solver.route, Route::Iterative, "solver");
         assert_eq!(file.mesh.symmetry, SymmetryMode::None, "symmetry");
+    }
+
+    /// Every field of `Overrides` is in `OPTIONS` and the other way round: the JSON of a full
+    /// set of overrides has exactly the listed keys.
+    #[test]
+    fn the_options_list_is_the_struct() {
+        let full = Overrides {
+            contact: Some(Contact::Bonded),
+            method: Some(MethodKind::Qp),
+            penalty: Some(PenaltySpec::Value(1e-6)),
+            constraint: Some(ConstraintPoints::Gauss),
+            mesh: Some([8, 6]),
+            qp_form: Some(QpForm::Lifted),
+            qp_solver: Some(QpSolver::ActiveSet),
+            solver: Some(Route::Iterative),
+            symmetry: Some(SymmetryMode::None),
+        };
+        let mut keys: Vec<String> = match serde_json::to_value(&full) {
+            Ok(serde_json::Value::Object(m)) => m.keys().cloned().collect(),
+            other => panic!("Overrides serialises to an object, got {other:?}"),
+        };
+        keys.sort();
+        let mut listed: Vec<String> = OPTIONS.iter().map(|o| o.0.to_string()).collect();
+        listed.sort();
+        assert_eq!(keys, listed, "Overrides fields against OPTIONS");
     }
 
     #[test]

@@ -275,7 +275,7 @@ pub struct LoadSpec {
 }
 
 /// `[solver] penalty`: `"auto"` or a fixed ε̄.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, serde::Serialize)]
 #[serde(untagged)]
 pub enum PenaltySpec {
     /// A fixed ε̄.

@@ -8,6 +8,7 @@ use crate::error::{Error, Result};
 use crate::method::{Method, PenaltySettings};
 use crate::metrics::{loglog_fit, max_abs_diff, rel_l2};
 use crate::model::{ConstraintPoints, Model};
+use crate::monitor::{Cases, Monitor};
 use crate::operators::Operators;
 use crate::scene::Problem;
 use crate::solve::{self, Solution};
@@ -71,8 +72,9 @@ pub fn eps_sweep(
     epsilons: &[f64],
     constraints: &[ConstraintPoints],
     fit_window: [f64; 2],
-    progress: &mut dyn FnMut(&str),
+    monitor: &Monitor<'_>,
 ) -> Result<Sweep> {
+    let cases = Cases::new(monitor, constraints.len() * (1 + epsilons.len()));
     let mut rows = Vec::new();
     let mut slopes = Vec::new();
     let mut qp_time_s = Vec::new();
@@ -91,7 +93,7 @@ pub fn eps_sweep(
             problem.memory_limit,
         )?;
         solve::check_feasible(&ops)?;
-        progress(&format!("{}: QP reference", kind.name()));
+        cases.start(&format!("{}: QP reference", kind.name()))?;
         let t = Instant::now();
         let q = solve::solve(&ops, &Method::qp())?;
         qp_time_s.push((kind.name(), t.elapsed().as_secs_f64()));
@@ -100,7 +102,7 @@ pub fn eps_sweep(
         }
         let (vq, sq) = fields(&ops, &model, &q);
         for &eps in epsilons {
-            progress(&format!("{}: penalty ε̄ = {eps:.1e}", kind.name()));
+            cases.start(&format!("{}: penalty ε̄ = {eps:.1e}", kind.name()))?;
             let t = Instant::now();
             let r = solve::solve(
                 &ops,
@@ -135,7 +137,7 @@ pub fn eps_sweep(
                     eps,
                     iterations: 0,
                     converged: false,
-                    status: e.kind().into(),
+                    status: e.kind().name().into(),
                     max_abs_sigma_err: f64::NAN,
                     max_abs_v_err: f64::NAN,
                     rel_l2_sigma: f64::NAN,

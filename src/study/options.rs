@@ -5,11 +5,12 @@ use super::log_space;
 use super::tradeoff::{tradeoff, Tradeoff};
 use crate::error::{Error, Result};
 use crate::model::ConstraintPoints;
+use crate::monitor::Monitor;
 use crate::scene::Problem;
 
 /// Which constraint points an ε̄ sweep compares; each kind gets its own assembly and QP
 /// reference.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum, serde::Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum ConstraintVariants {
     /// σ ≥ 0 at the nodes.
@@ -93,21 +94,15 @@ impl EpsSweepOptions {
         [self.to.min(self.from), self.from.max(self.to)]
     }
 
-    /// How many progress lines [`EpsSweepOptions::run`] sends: one QP reference and one line
-    /// per ε̄, per constraint kind.
-    pub fn progress_steps(&self) -> usize {
-        self.constraints.points().len() * (self.points + 1)
-    }
-
     /// Validate, then run [`eps_sweep`] on `problem`.
-    pub fn run(&self, problem: &Problem, progress: &mut dyn FnMut(&str)) -> Result<Sweep> {
+    pub fn run(&self, problem: &Problem, monitor: &Monitor<'_>) -> Result<Sweep> {
         self.validate()?;
         eps_sweep(
             problem,
             &self.epsilons(),
             self.constraints.points(),
             self.fit_window(),
-            progress,
+            monitor,
         )
     }
 }
@@ -155,17 +150,10 @@ impl TradeoffOptions {
         Ok(())
     }
 
-    /// How many progress lines [`TradeoffOptions::run`] sends when the reference fits: one for
-    /// the reference, then per mesh one for the QP and one per ε̄ (one more if the reference
-    /// falls back to the finest mesh).
-    pub fn progress_steps(&self) -> usize {
-        1 + self.meshes.len() * (1 + self.penalties.len())
-    }
-
     /// Validate, then run [`tradeoff`] on `problem`.
-    pub fn run(&self, problem: &Problem, progress: &mut dyn FnMut(&str)) -> Result<Tradeoff> {
+    pub fn run(&self, problem: &Problem, monitor: &Monitor<'_>) -> Result<Tradeoff> {
         self.validate()?;
-        tradeoff(problem, &self.meshes, &self.penalties, progress)
+        tradeoff(problem, &self.meshes, &self.penalties, monitor)
     }
 }
 
@@ -197,11 +185,6 @@ mod options_tests {
             );
         }
         assert_eq!(o.fit_window(), [1e-12, 1e-1], "EpsSweepOptions::fit_window");
-        assert_eq!(
-            o.progress_steps(),
-            13,
-            "EpsSweepOptions::progress_steps, nodal"
-        );
     }
 
     /// Each out-of-range value is refused with the field that holds it.
@@ -248,7 +231,6 @@ mod options_tests {
             ..base
         };
         assert!(edge.validate().is_ok(), "200 points are allowed");
-        assert_eq!(edge.progress_steps(), 2 * 201, "two kinds × (QP + 200 ε̄)");
     }
 
     #[test]
@@ -294,6 +276,5 @@ mod options_tests {
             ok.validate().is_ok(),
             "mesh range ends and no ε̄ are allowed"
         );
-        assert_eq!(ok.progress_steps(), 3, "reference + one QP per mesh");
     }
 }

@@ -6,9 +6,11 @@ use std::time::Instant;
 use serde::Serialize;
 
 use super::log_space;
+use crate::error::Result;
 use crate::foundation::FoundationKind;
 use crate::method::{Method, MethodKind, PenaltySettings};
 use crate::model::Load;
+use crate::monitor::{Cases, Monitor};
 use crate::post;
 use crate::scene::Problem;
 use crate::solve;
@@ -217,7 +219,7 @@ pub fn stability_run(case: &StabilityCase<'_>) -> StabilityRow {
             foundation,
             method,
             value,
-            outcome: e.kind().into(),
+            outcome: e.kind().name().into(),
             iterations: 0,
             equilibrium: f64::NAN,
             min_pressure: f64::NAN,
@@ -229,21 +231,23 @@ pub fn stability_run(case: &StabilityCase<'_>) -> StabilityRow {
     }
 }
 
-/// Run every case of a stability plan in order; `progress` receives one line before each run.
+/// Run every case of a stability plan in order; `monitor` hears of each run before it starts
+/// and can stop the sweep between runs.
 pub fn stability_sweep(
     plan: &[StabilityCase<'_>],
-    progress: &mut dyn FnMut(&str),
-) -> Vec<StabilityRow> {
+    monitor: &Monitor<'_>,
+) -> Result<Vec<StabilityRow>> {
+    let cases = Cases::new(monitor, plan.len());
     plan.iter()
         .map(|case| {
-            progress(&format!(
+            cases.start(&format!(
                 "{} {} = {:.2e} ({})",
                 case.base.model.groups.foundation.name(),
                 case.param.name(),
                 case.value,
                 case.method.name()
-            ));
-            stability_run(case)
+            ))?;
+            Ok(stability_run(case))
         })
         .collect()
 }

@@ -8,6 +8,7 @@ use crate::error::{Error, Result};
 use crate::method::{Method, PenaltySettings, Route};
 use crate::metrics::{pareto_front, rel_l2};
 use crate::model::Model;
+use crate::monitor::{Cases, Monitor};
 use crate::operators::Operators;
 use crate::post;
 use crate::scene::Problem;
@@ -63,7 +64,7 @@ fn sample_v(model: &Model, ops: &Operators, sol: &Solution) -> Vec<f64> {
 fn with_mesh(model: &Model, n: usize) -> Model {
     let mut m = model.clone();
     let ny = ((n as f64 * m.groups.mu).round() as usize).max(1);
-    let ny = if ny % 2 == 1 && n % 2 == 0 {
+    let ny = if !ny.is_multiple_of(2) && n.is_multiple_of(2) {
         ny + 1
     } else {
         ny
@@ -98,7 +99,7 @@ fn tradeoff_point(
             time_s,
             error: f64::NAN,
             converged: false,
-            status: e.kind().into(),
+            status: e.kind().name().into(),
             pareto: false,
         },
     }
@@ -113,8 +114,9 @@ pub fn tradeoff(
     problem: &Problem,
     meshes: &[usize],
     penalties: &[f64],
-    progress: &mut dyn FnMut(&str),
+    monitor: &Monitor<'_>,
 ) -> Result<Tradeoff> {
+    let cases = Cases::new(monitor, 1 + meshes.len() * (1 + penalties.len()));
     let finest = meshes
         .iter()
         .copied()
@@ -134,10 +136,10 @@ pub fn tradeoff(
         let sol = solve::solve(&ops, &qp)?;
         Ok(sample_v(&model, &ops, &sol))
     };
-    progress(&format!(
+    cases.start(&format!(
         "reference: QP at {} elements per side",
         2 * finest
-    ));
+    ))?;
     let (reference, v_ref) = match reference_at(2 * finest) {
         Ok(v) => (
             format!(
@@ -147,10 +149,10 @@ pub fn tradeoff(
             v,
         ),
         Err(Error::TooLarge { .. }) => {
-            progress(&format!(
+            cases.start(&format!(
                 "reference at {} does not fit; using the QP at {finest}",
                 2 * finest
-            ));
+            ))?;
             (format!("QP on {finest} elements per side (the finest mesh; twice it does not fit in memory)"), reference_at(finest)?)
         }
         Err(e) => return Err(e),
@@ -178,10 +180,10 @@ pub fn tradeoff(
                 .map(|sol| (rel_l2(&sample_v(&model, ops, sol), &v_ref), sol));
             tradeoff_point(method.name(), n, eps, time_s, outcome)
         };
-        progress(&format!("QP at {n}"));
+        cases.start(&format!("QP at {n}"))?;
         points.push(run(&qp, f64::NAN));
         for &eps in penalties {
-            progress(&format!("penalty at {n}, ε̄ = {eps:.0e}"));
+            cases.start(&format!("penalty at {n}, ε̄ = {eps:.0e}"))?;
             let method = Method::Penalty(PenaltySettings {
                 max_iterations,
                 ..PenaltySettings::fixed(eps)

@@ -114,7 +114,7 @@ pub fn assert_first_order_in_eps(p: &Problem) {
         &eps,
         &[ConstraintPoints::Nodal],
         [1e-9, 1e-2],
-        &mut |_| {},
+        &liftoff::Monitor::NONE,
     )
     .expect("sweep");
     for (kind, slope, range) in &sweep.slopes {

@@ -19,6 +19,7 @@ import json
 from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Union
 
 from . import _liftoff as _core
+from . import _progress
 from ._records import Records
 from ._scene import Scene, options_json, scene_pair
 from ._solution import Combinations, Solution, from_core
@@ -70,22 +71,27 @@ def example_text(name: str) -> str:
     return _core.example_text(name)
 
 
-def solve(scene: Scene, method: Optional[str] = None, **options: Any) -> Union[Solution, Combinations]:
+def solve(
+    scene: Scene, method: Optional[str] = None, *, progress: Any = None, **options: Any
+) -> Union[Solution, Combinations]:
     """Solve a scene with ``method`` "penalty", "qp" or "bonded" (default: the scene's own).
 
     Returns a :class:`Solution` (NumPy arrays over the whole plate, the summary as attributes),
     or for a scene with ``[[combination]]``s a :class:`Combinations` (one Solution per
-    combination, and the envelope). Raises :class:`NotConverged` (with ``.solution``) when the
-    method stops without a solution, and the other ``liftoff.errors`` for bad input. The GIL is
-    released during assembly and solves.
+    combination, and the envelope with its per-node and per-element arrays). Raises
+    :class:`NotConverged` (with ``.solution``) when the method stops without a solution — for
+    combinations when any one has none, as the CLI does: then there is no envelope, and
+    ``.solution.missing`` names those combinations — and the other ``liftoff.errors`` for bad
+    input. The GIL is released during assembly and solves; Ctrl-C stops the solve within a
+    fraction of a second and raises ``KeyboardInterrupt``. ``progress``: see :func:`stability`.
     """
     kind, text = scene_pair(scene)
-    result = from_core(*_core.solve(kind, text, options_json(method, options)))
+    result = from_core(*_progress.run(_core.solve, progress, kind, text, options_json(method, options)))
     if isinstance(result, Combinations):
         if not result.converged:
             failed = {**result.errors, **{n: s.status for n, s in result.solutions.items() if not s.converged}}
             raise NotConverged(
-                "not every combination has a solution: "
+                f"not every combination has a solution ({', '.join(result.missing)} missing; no envelope): "
                 + "; ".join(f"{n}: {m}" for n, m in failed.items()),
                 solution=result,
             )
@@ -111,6 +117,7 @@ def eps_sweep(
     stop: float = 1e-12,
     points: int = 12,
     constraints: str = "nodal",
+    progress: Any = None,
     **options: Any,
 ) -> Records:
     """The penalty solution against the QP as ε̄ falls from ``start`` to ``stop``
@@ -118,7 +125,9 @@ def eps_sweep(
     slopes and the reference."""
     kind, text = scene_pair(scene)
     study = json.dumps({"from": start, "to": stop, "points": points, "constraints": constraints})
-    doc = json.loads(_core.study("eps_sweep", kind, text, options_json(None, options), study))
+    doc = json.loads(
+        _progress.run(_core.study, progress, "eps_sweep", kind, text, options_json(None, options), study)
+    )
     rows = doc.pop("rows", [])
     return Records(rows, doc)
 
@@ -129,6 +138,7 @@ def tradeoff(
     meshes: Sequence[int] = (8, 16, 32, 64),
     penalties: Sequence[float] = (1e-2, 1e-4, 1e-6, 1e-8),
     client: Any = None,
+    progress: Any = None,
     **options: Any,
 ) -> Records:
     """Speed against accuracy (``liftoff tradeoff``): one record per (method, mesh, ε̄) with its
@@ -140,7 +150,7 @@ def tradeoff(
     if client is not None:
         raw = client.gather(client.submit(_core.study, "tradeoff", kind, text, opts, study, pure=False))
     else:
-        raw = _core.study("tradeoff", kind, text, opts, study)
+        raw = _progress.run(_core.study, progress, "tradeoff", kind, text, opts, study)
     doc = json.loads(raw)
     rows = doc.pop("points", [])
     return Records(rows, doc)
@@ -151,17 +161,25 @@ def stability(
     *,
     client: Any = None,
     chunk: int = 8,
+    progress: Any = None,
     **options: Any,
 ) -> Records:
     """Where each method fails (``liftoff stability``): one record per run of the sweep over
     Γ, Δ, μ, ε̄ and load position, for each scene. With a Dask ``client`` the runs are spread
-    over the cluster in tasks of ``chunk`` runs; rows come back in the study's order."""
+    over the cluster in tasks of ``chunk`` runs; rows come back in the study's order.
+
+    ``progress`` (here, in :func:`solve` and the other studies run locally): None draws the
+    command line's progress bar on stderr when stderr is a terminal, True always, False never;
+    a callable receives every event as ``(kind, done, total, label)`` — kind "case" when a case
+    of the run starts or ends, or an iteration's name ("penalty step", "active-set face
+    solve") with its number and the points that changed. Ctrl-C stops a local run and raises
+    ``KeyboardInterrupt``."""
     if isinstance(scenes, (str, Mapping)) or not isinstance(scenes, Sequence):
         scenes = [scenes]
     pairs = [scene_pair(s) for s in scenes]
     opts = options_json(None, options)
     if client is None:
-        return Records(json.loads(_core.stability_rows(pairs, opts, None)))
+        return Records(json.loads(_progress.run(_core.stability_rows, progress, pairs, opts, None)))
     n = _core.stability_len(pairs, opts)
     tasks = [
         {"scenes": pairs, "options": opts, "indices": list(range(i, min(i + chunk, n)))}

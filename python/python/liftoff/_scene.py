@@ -6,21 +6,14 @@ import json
 import os
 from typing import Any, Dict, Mapping, Optional, Sequence, Tuple, Union
 
+from . import _liftoff as _core
 from .errors import LiftoffIOError, SceneError
 
 Scene = Union[str, "os.PathLike[str]", Mapping[str, Any]]
 
-#: Options accepted by ``solve`` and the studies, as the CLI's flags (``qp_form`` ↔ ``--qp-form``).
-OPTIONS = (
-    "contact",
-    "penalty",
-    "constraint",
-    "mesh",
-    "qp_form",
-    "qp_solver",
-    "solver",
-    "symmetry",
-)
+#: Options accepted by ``solve`` and the studies, as the CLI's flags (``qp_form`` ↔
+#: ``--qp-form``): the library's one list (``method`` is also the ``method`` argument).
+OPTIONS = tuple(o for o in _core.options() if o != "method")
 
 
 def scene_pair(scene: Scene) -> Tuple[str, str]:

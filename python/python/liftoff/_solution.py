@@ -74,10 +74,23 @@ class Solution:
 
 class Combinations:
     """Every load combination of a scene: ``solutions`` (name → :class:`Solution`), ``errors``
-    (name → message, for combinations without a solution), ``envelope`` (extremes over all
-    combinations, the CLI's ``envelope.json``), ``summary`` (the whole ``--json`` document)."""
+    (name → message, for combinations without a solution), ``missing`` (the names of the
+    combinations without a converged solution), ``summary`` (the whole ``--json`` document).
 
-    def __init__(self, doc: Dict[str, Any], fields: List[Any]):
+    The envelope follows the library's one rule: it exists only when every combination
+    converged (an envelope missing a combination is not one); otherwise ``envelope``,
+    ``envelope_nodes`` and ``envelope_elements`` are None and ``missing`` says why.
+
+    - ``envelope``: the extremes over the plate, the CLI's ``envelope.json`` (a list of
+      quantities with their max and min, where, and the governing combination);
+    - ``envelope_nodes`` / ``envelope_elements``: per node (shape ``(ny + 1, nx + 1)``) and per
+      element (``(ny, nx)``), for each field (nodes: ``w``, ``pressure``, ``uplift``; elements:
+      ``mx``, ``my``, ``mxy``, ``qx``, ``qy``) a dict with ``max``, ``min`` (arrays, in
+      ``unit``) and ``max_by``, ``min_by`` (arrays of the governing combination's name) — the
+      CLI's ``envelope_nodes.csv`` and ``envelope_elements.csv``.
+    """
+
+    def __init__(self, doc: Dict[str, Any], fields: List[Any], envelope: Any = None):
         self.summary = doc
         self.solutions: Dict[str, Solution] = {}
         self.errors: Dict[str, str] = {}
@@ -86,7 +99,29 @@ class Combinations:
                 self.solutions[run["name"]] = Solution(run["summary"], f)
             else:
                 self.errors[run["name"]] = run.get("error") or "no solution"
+        self.missing: List[str] = list(doc.get("missing", []))
         self.envelope = doc.get("envelope")
+        self.envelope_nodes: Optional[Dict[str, Dict[str, Any]]] = None
+        self.envelope_elements: Optional[Dict[str, Dict[str, Any]]] = None
+        if envelope is not None:
+            first = next(iter(self.solutions.values()))
+            names = np.array(envelope["names"], dtype=object)
+            shapes = {"nodes": first.w.shape, "elements": first.mx.shape}
+
+            def arrays(group: str) -> Dict[str, Dict[str, Any]]:
+                out = {}
+                for name, f in envelope[group].items():
+                    shape = shapes[group]
+                    field = {"unit": f["unit"]}
+                    for key in ("max", "min"):
+                        field[key] = _array(f[key], shape)
+                        index = _array(f[key + "_by"], shape).astype(int)
+                        field[key + "_by"] = names[index]
+                    out[name] = field
+                return out
+
+            self.envelope_nodes = arrays("nodes")
+            self.envelope_elements = arrays("elements")
 
     @property
     def converged(self) -> bool:
@@ -106,9 +141,9 @@ class Combinations:
         return f"<liftoff.Combinations {list(self.solutions)} errors={list(self.errors)}>"
 
 
-def from_core(summary_json: str, fields: Any):
+def from_core(summary_json: str, fields: Any, envelope: Any = None):
     """A Solution or Combinations from the compiled core's answer."""
     doc = json.loads(summary_json)
     if "combinations" in doc:
-        return Combinations(doc, fields)
+        return Combinations(doc, fields, envelope)
     return Solution(doc, fields)

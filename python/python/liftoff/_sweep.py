@@ -81,8 +81,7 @@ def run_case(case: Dict[str, Any]) -> Dict[str, Any]:
     """One sweep row: the solve's scalar summary, or its error (never raised)."""
     row: Dict[str, Any] = {"index": case["index"], **case["params"]}
     try:
-        summary_json, fields = _core.solve(case["kind"], case["text"], case["options"])
-        sol = from_core(summary_json, fields)
+        sol = from_core(*_core.solve(case["kind"], case["text"], case["options"]))
         summary = sol.summary if hasattr(sol, "summary") else {}
         if "combinations" in summary:
             row.update({"ok": sol.converged, "error": None, "error_kind": None,

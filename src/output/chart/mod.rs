@@ -109,13 +109,29 @@ fn write_svg(path: &Path, picture: &impl Picture) -> Result<()> {
     })
 }
 
-/// Draw `picture` as a PNG file at `path` (which must end in `.png`: the encoder is chosen by
-/// the extension).
+/// Draw `picture` as a PNG file at `path`: plotters draws into an RGB buffer, the `png` crate
+/// encodes it (no image-decoding stack for one file format).
 fn write_png(path: &Path, picture: &impl Picture) -> Result<()> {
     ensure_font(path)?;
-    let root = BitMapBackend::new(path, picture.size()).into_drawing_area();
-    picture.draw(&root).map_err(|e| plot_error(path, e))?;
-    root.present().map_err(|e| plot_error(path, e))
+    let (w, h) = picture.size();
+    let mut rgb = vec![0u8; 3 * w as usize * h as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
+        picture.draw(&root).map_err(|e| plot_error(path, e))?;
+        root.present().map_err(|e| plot_error(path, e))?;
+    }
+    let file = std::fs::File::create(path).map_err(|source| Error::Io {
+        path: path.display().to_string(),
+        source,
+    })?;
+    let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), w, h);
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    let mut writer = encoder.write_header().map_err(|e| plot_error(path, e))?;
+    writer
+        .write_image_data(&rgb)
+        .map_err(|e| plot_error(path, e))?;
+    writer.finish().map_err(|e| plot_error(path, e))
 }
 
 /// Caption font size that fits `title` on one line of a `width`-pixel chart (DejaVu Sans
