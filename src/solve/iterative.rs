@@ -37,6 +37,7 @@
 
 use std::time::Instant;
 
+use super::diagnostics::CgReport;
 use super::linalg::dot;
 use super::linalg::{PlateInverse, SmallSpd, SparseFactor};
 use super::springs::SpringPlate;
@@ -44,17 +45,6 @@ use crate::error::{Error, Result};
 use crate::foundation::Compliance;
 pub use crate::method::CgSettings;
 use crate::operators::Operators;
-
-/// How one linear solve went.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
-pub struct CgReport {
-    /// Conjugate-gradient iterations.
-    pub iterations: usize,
-    /// Final relative preconditioned residual.
-    pub residual: f64,
-    /// Relative residual ‖Aσ − Cα − h‖ / ‖h‖ of the returned solution, recomputed.
-    pub true_residual: f64,
-}
 
 /// The solution of one linear step.
 #[derive(Debug, Clone)]

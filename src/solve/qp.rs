@@ -22,8 +22,10 @@ use clarabel::solver::{
 };
 
 use super::bonded::SchurSystem;
+use super::checks::discrete_gap;
+use super::diagnostics::QpDiagnostics;
 use super::linalg::finite;
-use super::{discrete_gap, QpDiagnostics, Solution, SolveInfo, Status, Timings};
+use super::solution::{Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
 use crate::method::{Method, QpForm, QpSettings, QpSolver};
 use crate::operators::Operators;

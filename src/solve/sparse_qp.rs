@@ -63,9 +63,10 @@ use std::time::Instant;
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSolver, IPSolver, SolverStatus, SupportedConeT};
 
+use super::checks::discrete_gap;
 use super::linalg::finite;
 use super::qp::{clarabel_settings, diagnostics};
-use super::{discrete_gap, Solution, SolveInfo, Status, Timings};
+use super::solution::{Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
 use crate::method::{Method, QpForm, QpSettings};
