@@ -1,4 +1,4 @@
-//! The matrix-free active-set QP (src/solve/active_set.rs) against clarabel on the same
+//! The matrix-free active-set QP (src/solve/qp/active_set/) against clarabel on the same
 //! operators, and its KKT conditions where clarabel cannot run.
 //!
 //! Reference: clarabel's interior-point solution of the same QP (dense Schur form on the

@@ -27,7 +27,7 @@
 //! only with a tight solve.
 //!
 //! **Face solves** ([`IterativeSchur::solve_face`]) serve the matrix-free QP
-//! ([`super::active_set`]): the same system without penalty, with a set of pressures held at
+//! ([`super::qp::active_set`]): the same system without penalty, with a set of pressures held at
 //! zero (the lifted points). The iteration then runs on the free points only: the product, the
 //! residual and the rigid-mode columns C are restricted to them, and the preconditioner drops
 //! its springs there (1/D = 0, which makes the Woodbury solve exactly (M_FF)⁻¹). The free

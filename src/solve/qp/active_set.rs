@@ -1,7 +1,7 @@
 //! The unbonded QP without any dense matrix: a primal–dual active-set method with a monotone
-//! safeguard, its inner solves by projected PCG through the operators ([`super::iterative`]).
+//! safeguard, its inner solves by projected PCG through the operators ([`crate::solve::iterative`]).
 //!
-//! The problem is the QP of [`super::qp`] with nodal constraints,
+//! The problem is the QP of [`super::clarabel_dense`] with nodal constraints,
 //!
 //! min f(σ) = ½ σᵀSσ − hᵀσ   subject to   Cᵀσ = Rᵀf,   σ ≥ 0,
 //!
@@ -44,17 +44,17 @@
 
 use std::time::Instant;
 
-use super::checks::discrete_gap;
-use super::diagnostics::{ActiveSetDiagnostics, CgReport, KktResiduals};
-use super::iterative::{Face, IterativeSchur};
-use super::linalg::SmallSpd;
-use super::linalg::{dot, finite};
-use super::solution::{Iteration, Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
 use crate::method::{ActiveSetSettings, CgSettings, Method, QpSettings, QpSolver};
 use crate::model::ConstraintPoints;
 use crate::operators::Operators;
+use crate::solve::checks::discrete_gap;
+use crate::solve::diagnostics::{ActiveSetDiagnostics, CgReport, KktResiduals};
+use crate::solve::iterative::{Face, IterativeSchur};
+use crate::solve::linalg::SmallSpd;
+use crate::solve::linalg::{dot, finite};
+use crate::solve::solution::{Iteration, Solution, SolveInfo, Status, Timings};
 
 /// A feasible iterate with the products the next step needs.
 struct Point {
@@ -848,7 +848,7 @@ mod tests {
         let problem = crate::Problem::from_toml(&text).expect("scene");
         let ops = Operators::assemble(&problem.model);
         let settings = QpSettings::default();
-        let reference = super::super::qp::solve(&ops, &settings).expect("clarabel");
+        let reference = super::super::clarabel_dense::solve(&ops, &settings).expect("clarabel");
         let mut sys =
             IterativeSchur::with_any_compliance(&ops, settings.active_set.cg).expect("setup");
         let mut run = Run {
