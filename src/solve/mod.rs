@@ -14,7 +14,6 @@ pub mod penalty;
 mod penalty_step;
 pub mod qp;
 mod solution;
-pub mod springs;
 
 pub use checks::{check_equilibrium, check_feasible, discrete_gap, EQUILIBRIUM_TOLERANCE};
 pub use diagnostics::{ActiveSetDiagnostics, CgReport, KktResiduals, QpDiagnostics};

@@ -21,7 +21,7 @@ use crate::error::Result;
 use crate::mesh::{Dof, DofMap, Mesh};
 use crate::operators::Operators;
 
-use super::linalg::{reduce, sparse_solve, SparseCholesky, SparseFactor};
+use crate::solve::linalg::{reduce, sparse_solve, SparseCholesky, SparseFactor};
 
 /// A plate on springs, ready to be factored for any spring diagonal D.
 pub struct SpringPlate {
