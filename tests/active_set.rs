@@ -368,7 +368,7 @@ fn a_coarse_grid_start_gives_the_same_answer_in_fewer_face_solves() {
     );
     let p = problem(&text, 128, "auto");
     let ops = Operators::assemble_with(&p.model, true);
-    assert!(ops.n_sigma() >= liftoff::analysis::NESTED_MIN_NODES);
+    assert!(ops.n_sigma() >= liftoff::solve::NESTED_MIN_NODES);
     let method = qp(QpSolver::ActiveSet);
     let cold = solve(&ops, &method).expect("cold start");
     let nested = liftoff::analysis::run(&p.model, &ops, &method, 0.0)
