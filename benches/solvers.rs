@@ -4,7 +4,7 @@
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use liftoff::method::{KktSolver, Method, QpSolver};
-use liftoff::solve::{self, qp};
+use liftoff::solve::{self, qp::clarabel_dense};
 use liftoff::{Operators, Problem};
 
 fn paper(foundation: &str, n: usize) -> Problem {
@@ -85,7 +85,7 @@ fn half_space(c: &mut Criterion) {
             g.bench_with_input(
                 BenchmarkId::new(format!("qp-{}", kkt.name()), n),
                 &ops,
-                |b, ops| b.iter(|| qp::solve(ops, &s).expect("solve")),
+                |b, ops| b.iter(|| clarabel_dense::solve(ops, &s).expect("solve")),
             );
         }
     }

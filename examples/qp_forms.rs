@@ -25,8 +25,8 @@ use std::time::Instant;
 use liftoff::method::QpSettings;
 use liftoff::method::{KktSolver, Method};
 use liftoff::solve::penalty;
-use liftoff::solve::qp;
-use liftoff::solve::sparse_qp::{solve_sparse, SparseForm};
+use liftoff::solve::qp::clarabel_dense;
+use liftoff::solve::qp::clarabel_sparse::{solve_sparse, SparseForm};
 use liftoff::{Operators, Problem, Solution};
 
 const SCENE: &str = r#"
@@ -231,7 +231,7 @@ fn one(args: &[String]) -> Result<(), String> {
             Method::Penalty(p) => penalty::solve(&ops, p),
             _ => return Err("the scene's method must be the penalty".into()),
         },
-        "dense" => qp::solve(&ops, &settings),
+        "dense" => clarabel_dense::solve(&ops, &settings),
         "lifted" => solve_sparse(&ops, &settings, SparseForm::Lifted),
         "primal" => solve_sparse(&ops, &settings, SparseForm::Primal),
         other => return Err(format!("unknown method `{other}`")),

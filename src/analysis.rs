@@ -5,7 +5,6 @@ use std::time::Instant;
 
 use crate::budget;
 use crate::error::Result;
-use crate::foundation::Compliance;
 use crate::method::{Method, Route};
 use crate::model::Model;
 use crate::post::{self, Report};
@@ -40,7 +39,7 @@ pub struct Outcome {
 /// operators took, reported beside the method's own.
 pub fn run(model: &Model, ops: &Operators, method: &Method, assemble_s: f64) -> Result<Outcome> {
     let t = Instant::now();
-    let solution = solve_nested(model, ops, method)?;
+    let solution = solve::solve_nested(model, ops, method)?;
     let solve_s = t.elapsed().as_secs_f64();
     let report = post::report(model, ops, &solution);
     let times = Times {
@@ -54,41 +53,6 @@ pub fn run(model: &Model, ops: &Operators, method: &Method, assemble_s: f64) -> 
         report,
         summary,
     })
-}
-
-/// Pressure nodes from which the matrix-free active-set QP starts from a coarser grid's
-/// answer: below, a cold start takes few face solves and a coarse assembly would not pay.
-pub const NESTED_MIN_NODES: usize = 4096;
-
-/// Solve; where the matrix-free active-set QP runs on a large grid, first solve the same model
-/// on a grid twice as coarse (the same way, recursively) and start from its pressures. From a
-/// cold start the contact edge moves by a ring of nodes per face solve, so the face solves grow
-/// with the grid; from the coarse answer only the rings near the edge remain to be settled.
-/// The answer is the same (the QP's solution is unique); a coarse solve that fails or does
-/// not converge is dropped for a cold start.
-fn solve_nested(model: &Model, ops: &Operators, method: &Method) -> Result<Solution> {
-    if !solve::takes_start(ops, method) || ops.n_sigma() < NESTED_MIN_NODES {
-        return solve::solve(ops, method);
-    }
-    let mut coarse = model.clone();
-    // Even counts, so that the coarse grid keeps the fine one's symmetry reduction.
-    coarse.elements = model.elements.map(|n| 2 * n.div_ceil(4).max(1));
-    let toeplitz = matches!(ops.t.as_ref(), Compliance::Toeplitz(_));
-    let coarse_ops = Operators::assemble_with(&coarse, toeplitz);
-    let start = match solve_nested(&coarse, &coarse_ops, method) {
-        Ok(c) if c.status.converged() => {
-            Some(ops.mesh.interpolate_from(&coarse_ops.mesh, &c.sigma))
-        }
-        _ => None,
-    };
-    let mut sol = solve::solve_from(ops, method, start.as_deref())?;
-    if start.is_some() {
-        sol.info.notes.push(format!(
-            "active-set QP started from the pressures of the same plate on {} × {} elements (solved the same way; its time is in the solve's)",
-            coarse.elements[0], coarse.elements[1]
-        ));
-    }
-    Ok(sol)
 }
 
 /// Check the memory budget of `method` on `route` and assemble the operators that route needs

@@ -266,14 +266,14 @@ pub enum QpSolver {
     /// clarabel's interior-point method on the form of `qp_form`.
     Clarabel,
     /// The matrix-free primal–dual active-set method with a monotone safeguard
-    /// ([`crate::solve::active_set`]): S applied through the operators, never formed; nodal
+    /// ([`crate::solve::qp::active_set`]): S applied through the operators, never formed; nodal
     /// constraints only.
     ActiveSet,
 }
 
 crate::names!(QpSolver, Auto => "auto", Clarabel => "clarabel", ActiveSet => "active-set");
 
-/// Settings of the matrix-free active-set QP solver ([`crate::solve::active_set`]).
+/// Settings of the matrix-free active-set QP solver ([`crate::solve::qp::active_set`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ActiveSetSettings {
     /// The KKT conditions must hold to this fraction of their scales: the gap on contact

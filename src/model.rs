@@ -43,10 +43,12 @@ pub enum SymmetryMode {
 crate::names!(ConstraintPoints, Nodal => "nodal", Gauss => "gauss");
 crate::names!(SymmetryMode, Auto => "auto", None => "none");
 
-/// The paper's dimensionless groups of a problem.
+/// The paper's dimensionless groups of a problem, defined once: the model holds them and
+/// summary.json's `dimensionless` writes them (in this serde form, beside what the solve adds).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Groups {
-    /// Foundation model.
+    /// Foundation model (summary.json names it at its top level, `foundation`).
+    #[serde(skip)]
     pub foundation: FoundationKind,
     /// Γ_w or Γ_h (Pasternak: Γ_w of its springs, D/(k μ L⁴)).
     pub gamma: f64,

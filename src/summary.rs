@@ -5,37 +5,22 @@ use serde::Serialize;
 
 use crate::error::{Error, Result};
 use crate::method::Method;
-use crate::model::{LoadReference, Model, Physical};
+use crate::model::{Groups, LoadReference, Model, Physical};
 use crate::post::{Complementarity, Extent, Report, Resultant};
 use crate::solve::{Iteration, PenaltyStage, Solution};
 use crate::Operators;
 
-/// Dimensionless groups and penalty.
+/// summary.json's `dimensionless`: the model's [`Groups`] (their foundation is the summary's
+/// own `foundation`), the Pasternak decay length, ε̄ and what P is. The groups read as its own
+/// fields (`Deref`), as they are written (`flatten`).
 #[derive(Debug, Clone, Serialize)]
-pub struct DimensionlessGroups {
-    /// Γ_w or Γ_h.
-    pub gamma: f64,
-    /// Δ.
-    pub delta: f64,
-    /// μ.
-    pub mu: f64,
-    /// ν_p.
-    pub nu: f64,
-    /// Pasternak only: the shear parameter Γ_g = G_p L²/D (absent for the other soils).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub shear: Option<f64>,
+pub struct Dimensionless {
+    /// Γ_w or Γ_h, Δ, μ, ν_p and the soil's own groups, as in the model.
+    #[serde(flatten)]
+    pub groups: Groups,
     /// Pasternak only: the decay length λ/L = √(Γ_g μ Γ_w) (absent for the other soils).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub decay_length: Option<f64>,
-    /// Elastic layer only: the depth ratio h/L (absent for the other soils).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub depth: Option<f64>,
-    /// Elastic layer only: the layer's Poisson's ratio ν_s (absent for the other soils).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub soil_nu: Option<f64>,
-    /// Elastic layer only: its rigid base, "rough" or "smooth" (absent for the other soils).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub base: Option<crate::foundation::layer::Base>,
     /// ε̄ of the penalty method (null for the QP and bonded contact, which have none).
     pub penalty: Option<f64>,
     /// What P in V = D w / (P L²) and σ = μ L² r / P is: "net-load" (4P = the net load, the
@@ -44,6 +29,14 @@ pub struct DimensionlessGroups {
     pub reference: LoadReference,
     /// P in the scene's force unit (N for SI scenes; the loads' unit for dimensionless ones).
     pub reference_force: f64,
+}
+
+impl std::ops::Deref for Dimensionless {
+    type Target = Groups;
+
+    fn deref(&self) -> &Groups {
+        &self.groups
+    }
 }
 
 /// Wall-clock times, seconds.
@@ -82,7 +75,7 @@ pub struct Summary {
     /// Equations (free dofs) of the solved model.
     pub dofs: usize,
     /// Dimensionless groups.
-    pub dimensionless: DimensionlessGroups,
+    pub dimensionless: Dimensionless,
     /// Physical scales (absent for dimensionless scenes).
     pub physical: Option<Physical>,
     /// Whether the method converged.
@@ -158,16 +151,9 @@ impl Summary {
             model_elements: [ops.mesh.nx, ops.mesh.ny],
             nodes: ops.mesh.n_nodes(),
             dofs: ops.n_eq(),
-            dimensionless: DimensionlessGroups {
-                gamma: model.groups.gamma,
-                delta: model.groups.delta,
-                mu: model.groups.mu,
-                nu: model.groups.nu,
-                shear: model.groups.shear,
+            dimensionless: Dimensionless {
+                groups: model.groups,
                 decay_length: model.groups.shear.map(|_| model.groups.decay_length()),
-                depth: model.groups.depth,
-                soil_nu: model.groups.soil_nu,
-                base: model.groups.base,
                 penalty: sol.method.penalty_epsilon(),
                 reference: model.reference,
                 reference_force: model.load_scale,

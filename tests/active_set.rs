@@ -1,4 +1,4 @@
-//! The matrix-free active-set QP (src/solve/active_set.rs) against clarabel on the same
+//! The matrix-free active-set QP (src/solve/qp/active_set/) against clarabel on the same
 //! operators, and its KKT conditions where clarabel cannot run.
 //!
 //! Reference: clarabel's interior-point solution of the same QP (dense Schur form on the
@@ -370,7 +370,7 @@ fn a_coarse_grid_start_gives_the_same_answer_in_fewer_face_solves() {
     );
     let p = problem(&text, 128, "auto");
     let ops = Operators::assemble_with(&p.model, true);
-    assert!(ops.n_sigma() >= liftoff::analysis::NESTED_MIN_NODES);
+    assert!(ops.n_sigma() >= liftoff::solve::NESTED_MIN_NODES);
     let method = qp(QpSolver::ActiveSet);
     let cold = solve(&ops, &method).expect("cold start");
     let nested = liftoff::analysis::run(&p.model, &ops, &method, 0.0)

@@ -128,7 +128,7 @@ fn qp_solver_status_is_reported() {
         max_iter: 2,
         ..Default::default()
     };
-    let sol = liftoff::solve::qp::solve(&ops, &s).expect("solve ran");
+    let sol = liftoff::solve::qp::clarabel_dense::solve(&ops, &s).expect("solve ran");
     assert!(
         !sol.status.converged(),
         "two interior-point iterations cannot converge"

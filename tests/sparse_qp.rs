@@ -15,8 +15,8 @@ use common::*;
 use liftoff::foundation::Compliance;
 use liftoff::method::QpSettings;
 use liftoff::solve::linalg::PlateInverse;
-use liftoff::solve::qp;
-use liftoff::solve::sparse_qp::{solve_sparse, SparseForm};
+use liftoff::solve::qp::clarabel_dense;
+use liftoff::solve::qp::clarabel_sparse::{solve_sparse, SparseForm};
 use liftoff::solve::{check_equilibrium, Status};
 use liftoff::{Error, Operators, Problem, Solution};
 
@@ -34,7 +34,7 @@ const RELATIVE: f64 = 1e-4;
 
 /// The tolerances the agreement was measured at (clarabel 1e-12 absolute, 1e-11 relative; the
 /// library's defaults are now 1e-14 / 1e-13, which the lifted form cannot always certify:
-/// it stops at AlmostSolved, see src/solve/sparse_qp.rs).
+/// it stops at AlmostSolved, see src/solve/qp/clarabel_sparse.rs).
 fn measured() -> QpSettings {
     QpSettings {
         tol_gap_abs: 1e-12,
@@ -96,7 +96,7 @@ fn energy_distance(ops: &Operators, a: &Solution, b: &Solution) -> (f64, f64) {
 /// one, and return them (dense first).
 fn check_against_dense(name: &str, text: &str, settings: &QpSettings, tol: f64) -> Vec<Solution> {
     let ops = ops_of(text);
-    let dense = qp::solve(&ops, settings).expect("dense QP");
+    let dense = clarabel_dense::solve(&ops, settings).expect("dense QP");
     assert!(
         dense.status.converged(),
         "{name}: dense QP {}",

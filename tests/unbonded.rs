@@ -4,7 +4,8 @@ mod common;
 use common::*;
 use liftoff::method::MethodKind;
 use liftoff::model::ConstraintPoints;
-use liftoff::solve::{penalty, qp};
+use liftoff::solve::penalty;
+use liftoff::solve::qp::clarabel_dense;
 use liftoff::{Error, Operators, Problem};
 
 fn ops_of(text: &str) -> (Problem, Operators) {
@@ -15,7 +16,7 @@ fn ops_of(text: &str) -> (Problem, Operators) {
 
 fn solve_both(ops: &Operators, eps: f64) -> (liftoff::Solution, liftoff::Solution) {
     let pen = penalty::solve(ops, &liftoff::PenaltySettings::fixed(eps)).expect("penalty");
-    let q = qp::solve(ops, &liftoff::QpSettings::default()).expect("qp");
+    let q = clarabel_dense::solve(ops, &liftoff::QpSettings::default()).expect("qp");
     assert!(pen.status.converged(), "penalty: {}", pen.status.describe());
     assert!(q.status.converged(), "qp: {}", q.status.describe());
     (pen, q)

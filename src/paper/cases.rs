@@ -173,7 +173,7 @@ impl Case {
         format!(
             "Paper Fig. {}: {plate}, {}, {load}, {} contact, Γ = {:e}",
             self.figure,
-            foundation_label(self.foundation),
+            foundation_names(self.foundation).label,
             self.contact.name(),
             self.gamma
         )
@@ -221,13 +221,25 @@ pub(super) fn paper_penalty() -> Method {
     Method::Penalty(PenaltySettings::fixed(PENALTY))
 }
 
-pub(super) fn foundation_label(f: FoundationKind) -> &'static str {
-    match f {
-        FoundationKind::HalfSpace => "elastic half-space",
-        FoundationKind::Winkler => "Winkler subgrade",
-        FoundationKind::Pasternak => "Pasternak soil",
-        FoundationKind::ElasticLayer => "elastic layer",
-    }
+/// A foundation's names in the paper's outputs.
+pub(super) struct FoundationNames {
+    /// In captions and titles ("elastic half-space").
+    pub(super) label: &'static str,
+    /// In paper.md's tables ("half-space").
+    pub(super) short: &'static str,
+    /// In file names ("halfspace").
+    pub(super) tag: &'static str,
+}
+
+/// The names of `f` in the paper's outputs, one arm per soil.
+pub(super) fn foundation_names(f: FoundationKind) -> FoundationNames {
+    let (label, short, tag) = match f {
+        FoundationKind::HalfSpace => ("elastic half-space", "half-space", "halfspace"),
+        FoundationKind::Winkler => ("Winkler subgrade", "Winkler", "winkler"),
+        FoundationKind::Pasternak => ("Pasternak soil", "Pasternak", "pasternak"),
+        FoundationKind::ElasticLayer => ("elastic layer", "elastic layer", "layer"),
+    };
+    FoundationNames { label, short, tag }
 }
 
 /// The unbonded cases of Figs. 3–5 (Fig. 6 reuses Fig. 5) and the bonded ones of Fig. 7.

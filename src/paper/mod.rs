@@ -72,12 +72,13 @@ pub const WINKLER_INFINITE_PLATE_RADIUS: f64 = 2.849;
 /// Largest refinement factor [`run`](fn@run) accepts (the half-space quarter model is then 64 × 64).
 pub const MAX_REFINE: usize = 8;
 
-/// The paper's quarter-mesh elements per side: 8 on the half-space, 10 on Winkler.
+/// The paper's quarter-mesh elements per side: 8 on the half-space, 10 on Winkler. (The paper
+/// has no other soil; a non-local one takes the half-space's mesh, a local one Winkler's.)
 pub fn paper_quarter_elements(foundation: FoundationKind) -> usize {
-    match foundation {
-        // The paper has no Pasternak case; its non-local meshes are the half-space's.
-        FoundationKind::HalfSpace | FoundationKind::Pasternak | FoundationKind::ElasticLayer => 8,
-        FoundationKind::Winkler => 10,
+    if foundation.is_local() {
+        10
+    } else {
+        8
     }
 }
 

@@ -8,12 +8,14 @@
 //!
 //! * [`spec`]: the serde types of the sections, with their defaults;
 //! * [`validate`]: one function per section;
+//! * [`soils`]: one function per soil, in SI units and in the paper's groups;
 //! * [`builder`]: [`Model::builder`], the same validation from Rust without writing TOML.
 
 pub mod builder;
 mod loads;
 mod numbers;
 pub mod overrides;
+pub mod soils;
 pub mod spec;
 pub mod validate;
 

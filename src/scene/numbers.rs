@@ -1,4 +1,5 @@
-//! Checks of single numbers shared by the scene's readers ([`super::validate`], [`super::loads`]).
+//! Checks of single numbers shared by the scene's readers ([`super::validate`], [`super::soils`],
+//! [`super::loads`]).
 
 use crate::error::{Error, Result};
 
@@ -14,6 +15,17 @@ pub(super) fn finite_positive(field: &str, v: f64, unit: &str) -> Result<f64> {
         return Err(Error::invalid(
             field,
             format!("must be positive ({unit}), got {v}"),
+        ));
+    }
+    Ok(v)
+}
+
+/// `v` if it is a Poisson's ratio, in (−1, 0.5), else an error naming `field`.
+pub(super) fn poisson(field: &str, v: f64) -> Result<f64> {
+    if !v.is_finite() || v <= -1.0 || v >= 0.5 {
+        return Err(Error::invalid(
+            field,
+            format!("Poisson's ratio must lie in (−1, 0.5), got {v}"),
         ));
     }
     Ok(v)

@@ -6,12 +6,14 @@ use super::loads::{
     DEFAULT_CASE,
 };
 pub(super) use super::numbers::finite_positive;
-use super::spec::{LoadKind, MeshSpec, PenaltySpec, SolverSpec};
+use super::numbers::poisson;
+use super::soils::{self, PlateGroups};
+use super::spec::{
+    DimensionlessSpec, FoundationSpec, LoadKind, MeshSpec, PenaltySpec, PlateSpec, SolverSpec,
+};
 use super::{Combination, Problem, SceneFile};
 use crate::budget::default_memory_limit;
 use crate::error::{Error, Result};
-use crate::foundation::layer::Base;
-use crate::foundation::FoundationKind;
 use crate::method::{Contact, Method, PenaltySettings, QpSettings};
 use crate::model::{Groups, Load, LoadReference, Model, Physical, Zone};
 
@@ -34,286 +36,86 @@ fn aspect_ratio(field: &str, mu: f64) -> Result<f64> {
     Ok(mu)
 }
 
-/// Upper limit of the Pasternak decay length λ/L = √(Γ_g μ Γ_w). Beyond it the shear layer
-/// spreads a load over more than a thousand plate lengths: the kernel is then a large constant
-/// plus a small logarithmic variation over the plate, and T loses the digits that tell its
-/// entries apart — the soil acts like a membrane of tension G_p, better modelled as such.
-pub const MAX_PASTERNAK_LENGTH: f64 = 1e3;
-
-/// Check the decay length the shear parameter `shear` = Γ_g gives with Γ_w = `gamma`, and
-/// return Γ_g.
-fn pasternak_length(field: &str, shear: f64, gamma: f64, mu: f64) -> Result<f64> {
-    let lambda = (shear * mu * gamma).sqrt();
-    if !(lambda.is_finite() && lambda > 0.0) || lambda > MAX_PASTERNAK_LENGTH {
-        return Err(Error::invalid(
-            field,
-            format!("gives the decay length λ = √(G_p/k) = {lambda:e} half-lengths L of the plate, outside (0, {MAX_PASTERNAK_LENGTH:e}]: check the units (G_p in N/m, k in N/m³) or lower the shear modulus"),
-        ));
-    }
-    Ok(shear)
-}
-
-/// Range of the elastic layer's depth ratio h/L. Deeper layers are the half-space to within
-/// e^{−2·1e4}; thinner ones than 1e−4 L put the whole kernel (40 depths) below the radial
-/// quadrature's innermost panel of an element pair, and are a Winkler bed k = E_oed/h anyway.
-pub const LAYER_DEPTH_RANGE: [f64; 2] = [1e-4, 1e4];
-
-fn depth_ratio(field: &str, h: f64) -> Result<f64> {
-    let [lo, hi] = LAYER_DEPTH_RANGE;
-    if !(h.is_finite() && (lo..=hi).contains(&h)) {
-        return Err(Error::invalid(
-            field,
-            format!("gives the layer depth h = {h:e} half-lengths L of the plate, outside [{lo:e}, {hi:e}]: check the units (m); a deeper layer is a half-space (model = \"half-space\"), a thinner one a Winkler bed of modulus E_oed/h (model = \"winkler\")"),
-        ));
-    }
-    Ok(h)
-}
-
-/// A layer's base by name ("rough" when not given).
-fn layer_base(field: &str, base: Option<&str>) -> Result<Base> {
-    match base {
-        None => Ok(Base::Rough),
-        Some(name) => Base::parse(name).ok_or_else(|| {
-            Error::invalid(
-                field,
-                format!("\"{name}\" is not a base: give \"rough\" (the layer bonded to the rigid base, the default) or \"smooth\" (frictionless)"),
-            )
-        }),
-    }
-}
-
-/// The SI layer's depth as h/L, and its base.
-fn layer_fields(f: &super::spec::FoundationSpec, l: f64) -> Result<(f64, Base)> {
-    let base = layer_base("foundation.base", f.base.as_deref())?;
-    let h = f.depth.ok_or_else(|| {
-        Error::invalid(
-            "foundation.depth",
-            "missing: the elastic layer's depth h to the rigid base, in m",
-        )
-    })?;
-    let h = finite_positive("foundation.depth", h, "m")?;
-    Ok((depth_ratio("foundation.depth", h / l)?, base))
-}
-
-fn poisson(field: &str, v: f64) -> Result<f64> {
-    if !v.is_finite() || v <= -1.0 || v >= 0.5 {
-        return Err(Error::invalid(
-            field,
-            format!("Poisson's ratio must lie in (−1, 0.5), got {v}"),
-        ));
-    }
-    Ok(v)
-}
-
 /// `[plate]` and `[foundation]` (SI units) or `[dimensionless]`: the groups, the physical
 /// scales (L, D) of an SI scene, and the factors that turn scene coordinates into the unit
 /// system (x / L, y / L).
 #[allow(clippy::type_complexity)]
 fn groups(file: &SceneFile) -> Result<(Groups, Option<(f64, f64)>, [f64; 2])> {
     match (&file.plate, &file.foundation, &file.dimensionless) {
-            (Some(_), _, Some(_)) | (_, Some(_), Some(_)) => {
-                Err(Error::invalid(
-                    "dimensionless",
-                    "give either [plate] and [foundation] (SI units) or [dimensionless], not both",
-                ))
-            }
-            (None, None, None) => {
-                Err(Error::invalid(
-                    "plate",
-                    "missing: give [plate] and [foundation] in SI units, or [dimensionless] with the paper's groups",
-                ))
-            }
-            (Some(_), None, None) => {
-                Err(Error::invalid(
-                    "foundation",
-                    "missing: add [foundation] with model = \"winkler\" (modulus), \"half-space\" (youngs_modulus, poissons_ratio), \"pasternak\" (modulus, shear_modulus) or \"elastic-layer\" (youngs_modulus, poissons_ratio, depth)",
-                ))
-            }
-            (None, Some(_), None) => {
-                Err(Error::invalid(
-                    "plate",
-                    "missing: add [plate] with length, width, thickness, youngs_modulus, poissons_ratio",
-                ))
-            }
-            (Some(p), Some(f), None) => {
-                let length = finite_positive("plate.length", p.length, "m")?;
-                let width = finite_positive("plate.width", p.width, "m")?;
-                let h = finite_positive("plate.thickness", p.thickness, "m")?;
-                let e = finite_positive("plate.youngs_modulus", p.youngs_modulus, "Pa")?;
-                let nu = poisson("plate.poissons_ratio", p.poissons_ratio)?;
-                let chi = match p.shear_correction {
-                    Some(c) => finite_positive("plate.shear_correction", c, "dimensionless, usually 5/6")?,
-                    None => 5.0 / 6.0,
-                };
-                if h >= width.min(length) {
-                    return Err(Error::invalid(
-                        "plate.thickness",
-                        format!("{h} m is not smaller than the plate's sides ({length} × {width} m): check units (metres)"),
-                    ));
-                }
-                let l = 0.5 * length;
-                let mu = aspect_ratio("plate.width", width / length)?;
-                let d = e * h.powi(3) / (12.0 * (1.0 - nu * nu));
-                let delta = h * h / (6.0 * chi * (1.0 - nu) * mu * l * l);
-                if f.model != FoundationKind::Pasternak && f.shear_modulus.is_some() {
-                    return Err(Error::invalid(
-                        "foundation.shear_modulus",
-                        format!("belongs to model = \"pasternak\"; a {} foundation has no shear layer (use model = \"pasternak\" with modulus and shear_modulus, or leave it out)", f.model.name()),
-                    ));
-                }
-                if f.model != FoundationKind::ElasticLayer {
-                    for (key, given) in [("foundation.depth", f.depth.is_some()), ("foundation.base", f.base.is_some())] {
-                        if given {
-                            return Err(Error::invalid(
-                                key,
-                                format!("belongs to model = \"elastic-layer\"; a {} foundation has no rigid base below it (use model = \"elastic-layer\" with youngs_modulus, poissons_ratio and depth, or leave it out)", f.model.name()),
-                            ));
-                        }
-                    }
-                }
-                let mut shear = None;
-                let mut layer = None;
-                let gamma = match f.model {
-                    FoundationKind::Pasternak => {
-                        if f.youngs_modulus.is_some() || f.poissons_ratio.is_some() {
-                            return Err(Error::invalid(
-                                "foundation.youngs_modulus",
-                                "belongs to model = \"half-space\"; a Pasternak foundation takes `modulus` (N/m³) and `shear_modulus` (N/m)",
-                            ));
-                        }
-                        let k = finite_positive(
-                            "foundation.modulus",
-                            f.modulus.ok_or_else(|| {
-                                Error::invalid("foundation.modulus", "missing: the Pasternak springs' modulus k in N/m³")
-                            })?,
-                            "N/m³",
-                        )?;
-                        let g_p = finite_positive(
-                            "foundation.shear_modulus",
-                            f.shear_modulus.ok_or_else(|| {
-                                Error::invalid("foundation.shear_modulus", "missing: the Pasternak shear layer's modulus G_p in N/m (for G_p = 0 use model = \"winkler\")")
-                            })?,
-                            "N/m",
-                        )?;
-                        shear = Some(pasternak_length("foundation.shear_modulus", g_p * l * l / d, d / (k * mu * l.powi(4)), mu)?);
-                        d / (k * mu * l.powi(4))
-                    }
-                    FoundationKind::Winkler => {
-                        if f.youngs_modulus.is_some() || f.poissons_ratio.is_some() {
-                            return Err(Error::invalid(
-                                "foundation.youngs_modulus",
-                                "belongs to model = \"half-space\"; a Winkler foundation takes only `modulus` (N/m³)",
-                            ));
-                        }
-                        let k = finite_positive(
-                            "foundation.modulus",
-                            f.modulus.ok_or_else(|| {
-                                Error::invalid("foundation.modulus", "missing: Winkler subgrade modulus K in N/m³")
-                            })?,
-                            "N/m³",
-                        )?;
-                        d / (k * mu * l.powi(4))
-                    }
-                    FoundationKind::HalfSpace | FoundationKind::ElasticLayer => {
-                        if f.modulus.is_some() {
-                            return Err(Error::invalid(
-                                "foundation.modulus",
-                                "belongs to model = \"winkler\"; a half-space takes youngs_modulus (Pa) and poissons_ratio",
-                            ));
-                        }
-                        let es = finite_positive(
-                            "foundation.youngs_modulus",
-                            f.youngs_modulus.ok_or_else(|| {
-                                Error::invalid("foundation.youngs_modulus", "missing: soil Young's modulus E_s in Pa")
-                            })?,
-                            "Pa",
-                        )?;
-                        let nus = poisson(
-                            "foundation.poissons_ratio",
-                            f.poissons_ratio.ok_or_else(|| {
-                                Error::invalid("foundation.poissons_ratio", "missing: soil Poisson's ratio ν_s")
-                            })?,
-                        )?;
-                        if f.model == FoundationKind::ElasticLayer {
-                            layer = Some((layer_fields(f, l)?, nus));
-                        }
-                        d * (1.0 - nus * nus) / (std::f64::consts::PI * es * mu * l.powi(3))
-                    }
-                };
-                // Each input is finite and positive, but their combination may still
-                // underflow or overflow (a 1e308 m plate, a 1e-200 m thickness).
-                for (name, v) in [("rigidity D", d), ("Δ", delta), ("Γ", gamma)] {
-                    if !(v.is_finite() && v > 0.0) {
-                        return Err(Error::invalid(
-                            "plate",
-                            format!(
-                                "the plate and foundation values give {name} = {v:e}, outside double precision: check their units (m, Pa, N/m³)"
-                            ),
-                        ));
-                    }
-                }
-                Ok((
-                    Groups { foundation: f.model, gamma, delta, mu, nu, shear, depth: layer.map(|x: ((f64, Base), f64)| x.0 .0), soil_nu: layer.map(|x| x.1), base: layer.map(|x| x.0 .1) },
-                    Some((l, d)),
-                    [1.0 / l, 1.0 / l],
-                ))
-            }
-            (None, None, Some(g)) => {
-                let gamma = finite_positive("dimensionless.gamma", g.gamma, "Γ")?;
-                let delta = finite_positive("dimensionless.delta", g.delta, "Δ")?;
-                let mu = aspect_ratio(
-                    "dimensionless.mu",
-                    finite_positive("dimensionless.mu", g.mu, "width/length")?,
-                )?;
-                let nu = poisson("dimensionless.nu", g.nu)?;
-                let shear = match (g.foundation, g.shear) {
-                    (FoundationKind::Pasternak, Some(s)) => {
-                        let s = finite_positive("dimensionless.shear", s, "Γ_g = G_p L²/D")?;
-                        Some(pasternak_length("dimensionless.shear", s, gamma, mu)?)
-                    }
-                    (FoundationKind::Pasternak, None) => {
-                        return Err(Error::invalid(
-                            "dimensionless.shear",
-                            "missing: the Pasternak shear parameter Γ_g = G_p L²/D (for Γ_g = 0 use foundation = \"winkler\")",
-                        ))
-                    }
-                    (other, Some(_)) => {
-                        return Err(Error::invalid(
-                            "dimensionless.shear",
-                            format!("belongs to foundation = \"pasternak\"; a {} foundation has no shear layer (leave it out)", other.name()),
-                        ))
-                    }
-                    (_, None) => None,
-                };
-                let (depth, soil_nu, base) = match (g.foundation, g.depth, g.soil_nu) {
-                    (FoundationKind::ElasticLayer, depth, soil_nu) => {
-                        let depth = depth.ok_or_else(|| {
-                            Error::invalid("dimensionless.depth", "missing: the elastic layer's depth ratio h/L (depth to the rigid base over the plate's half-length)")
-                        })?;
-                        let soil_nu = soil_nu.ok_or_else(|| {
-                            Error::invalid("dimensionless.soil_nu", "missing: the elastic layer's Poisson's ratio ν_s (its kernel depends on ν_s beyond the factor 1 − ν_s² in Γ_h)")
-                        })?;
-                        (
-                            Some(depth_ratio("dimensionless.depth", depth)?),
-                            Some(poisson("dimensionless.soil_nu", soil_nu)?),
-                            Some(layer_base("dimensionless.base", g.base.as_deref())?),
-                        )
-                    }
-                    (other, depth, soil_nu) => {
-                        for (key, given) in [("dimensionless.depth", depth.is_some()), ("dimensionless.soil_nu", soil_nu.is_some()), ("dimensionless.base", g.base.is_some())] {
-                            if given {
-                                return Err(Error::invalid(
-                                    key,
-                                    format!("belongs to foundation = \"elastic-layer\"; a {} foundation has no rigid base below it (leave it out)", other.name()),
-                                ));
-                            }
-                        }
-                        (None, None, None)
-                    }
-                };
-                Ok((Groups { foundation: g.foundation, gamma, delta, mu, nu, shear, depth, soil_nu, base }, None, [1.0, mu]))
-            }
+        (Some(_), _, Some(_)) | (_, Some(_), Some(_)) => Err(Error::invalid(
+            "dimensionless",
+            "give either [plate] and [foundation] (SI units) or [dimensionless], not both",
+        )),
+        (None, None, None) => Err(Error::invalid(
+            "plate",
+            "missing: give [plate] and [foundation] in SI units, or [dimensionless] with the paper's groups",
+        )),
+        (Some(_), None, None) => Err(Error::invalid(
+            "foundation",
+            "missing: add [foundation] with model = \"winkler\" (modulus), \"half-space\" (youngs_modulus, poissons_ratio), \"pasternak\" (modulus, shear_modulus) or \"elastic-layer\" (youngs_modulus, poissons_ratio, depth)",
+        )),
+        (None, Some(_), None) => Err(Error::invalid(
+            "plate",
+            "missing: add [plate] with length, width, thickness, youngs_modulus, poissons_ratio",
+        )),
+        (Some(p), Some(f), None) => {
+            let (groups, l, d) = si_groups(p, f)?;
+            Ok((groups, Some((l, d)), [1.0 / l, 1.0 / l]))
         }
+        (None, None, Some(g)) => {
+            let groups = dimensionless_groups(g)?;
+            Ok((groups, None, [1.0, groups.mu]))
+        }
+    }
+}
+
+/// `[plate]` on `[foundation]` in SI units: the groups, L (m) and D (N·m).
+fn si_groups(p: &PlateSpec, f: &FoundationSpec) -> Result<(Groups, f64, f64)> {
+    let length = finite_positive("plate.length", p.length, "m")?;
+    let width = finite_positive("plate.width", p.width, "m")?;
+    let h = finite_positive("plate.thickness", p.thickness, "m")?;
+    let e = finite_positive("plate.youngs_modulus", p.youngs_modulus, "Pa")?;
+    let nu = poisson("plate.poissons_ratio", p.poissons_ratio)?;
+    let chi = match p.shear_correction {
+        Some(c) => finite_positive("plate.shear_correction", c, "dimensionless, usually 5/6")?,
+        None => 5.0 / 6.0,
+    };
+    if h >= width.min(length) {
+        return Err(Error::invalid(
+            "plate.thickness",
+            format!("{h} m is not smaller than the plate's sides ({length} × {width} m): check units (metres)"),
+        ));
+    }
+    let l = 0.5 * length;
+    let mu = aspect_ratio("plate.width", width / length)?;
+    let d = e * h.powi(3) / (12.0 * (1.0 - nu * nu));
+    let delta = h * h / (6.0 * chi * (1.0 - nu) * mu * l * l);
+    let groups = soils::si(f, PlateGroups { delta, mu, nu }, l, d)?;
+    // Each input is finite and positive, but their combination may still underflow or overflow
+    // (a 1e308 m plate, a 1e-200 m thickness).
+    for (name, v) in [("rigidity D", d), ("Δ", delta), ("Γ", groups.gamma)] {
+        if !(v.is_finite() && v > 0.0) {
+            return Err(Error::invalid(
+                "plate",
+                format!(
+                    "the plate and foundation values give {name} = {v:e}, outside double precision: check their units (m, Pa, N/m³)"
+                ),
+            ));
+        }
+    }
+    Ok((groups, l, d))
+}
+
+/// `[dimensionless]`: the paper's groups.
+fn dimensionless_groups(g: &DimensionlessSpec) -> Result<Groups> {
+    let gamma = finite_positive("dimensionless.gamma", g.gamma, "Γ")?;
+    let delta = finite_positive("dimensionless.delta", g.delta, "Δ")?;
+    let mu = aspect_ratio(
+        "dimensionless.mu",
+        finite_positive("dimensionless.mu", g.mu, "width/length")?,
+    )?;
+    let nu = poisson("dimensionless.nu", g.nu)?;
+    soils::dimensionless(g, PlateGroups { delta, mu, nu }, gamma)
 }
 
 /// `[mesh] elements`: two positive element counts.

@@ -16,11 +16,12 @@ use std::time::Instant;
 
 use faer::Mat;
 
+use super::checks::discrete_gap;
 use super::linalg::{
     dense_cholesky, displacements, dot, finite, schur_complement, sparse_solve, PlateInverse,
     SparseCholesky, SpdSolve,
 };
-use super::{discrete_gap, Solution, SolveInfo, Status, Timings};
+use super::solution::{Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
 use crate::method::Method;

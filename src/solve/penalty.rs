@@ -18,10 +18,11 @@
 
 use std::time::Instant;
 
+use super::checks::discrete_gap;
 use super::linalg::finite;
 pub use super::penalty_step::WOODBURY_MAX_RANK;
 use super::penalty_step::{constraint_rows, Backend};
-use super::{discrete_gap, Iteration, PenaltyStage, Solution, SolveInfo, Status, Timings};
+use super::solution::{Iteration, PenaltyStage, Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
 use crate::method::{Method, PenaltySettings};
 use crate::operators::Operators;

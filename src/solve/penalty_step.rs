@@ -14,7 +14,8 @@ use faer::sparse::linalg::solvers::{Lu, SymbolicLu};
 use faer::Mat;
 
 use super::bonded::{diagonal_positions, lumped_coupling, saddle_solve, SchurSystem};
-use super::iterative::{CgReport, CgSettings, IterativeSchur};
+use super::diagnostics::CgReport;
+use super::iterative::{CgSettings, IterativeSchur};
 use super::linalg::{faer_view, sparse_solve, SparseCholesky, SparseFactor};
 use super::low_rank::LowRankSchur;
 use crate::error::{Error, Result};

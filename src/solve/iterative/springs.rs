@@ -17,11 +17,10 @@
 //! The symbolic analysis is done once; each penalised set (a new D) costs one numeric
 //! factorisation.
 
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::mesh::{Dof, DofMap, Mesh};
 use crate::operators::Operators;
-
-use super::linalg::{reduce, sparse_solve, SparseCholesky, SparseFactor};
+use crate::solve::linalg::{reduce, sparse_solve, SparseCholesky, SparseFactor};
 
 /// A plate on springs, ready to be factored for any spring diagonal D.
 pub struct SpringPlate {
@@ -134,7 +133,7 @@ impl SpringPlate {
             for &(a, _) in s {
                 for &(b, _) in s {
                     p.push(position(&k, a, b).ok_or_else(|| {
-                        crate::Error::numerical(
+                        Error::numerical(
                             "iterative preconditioner",
                             "a spring coupling falls outside the plate's pattern",
                         )

@@ -1,60 +1,16 @@
-//! The half-space penalty step without dense matrices: preconditioned conjugate gradients on the
-//! Schur system with the rigid-body equilibrium as constraints.
-//!
-//! Each step of the penalty iteration (and the bonded solve, its first step) solves
-//!
-//! A σ − C α = h,   Cᵀ σ = Rᵀ f,   A = T + BᵀK⁻B + Σ_k d_k g_k g_kᵀ,
-//!
-//! (h = BᵀK⁻f − g₀ with the voids' initial gap g₀, C = BᵀR, d_k = c w_k/ε̄ on the penalised points, [`super::bonded`]). A is never
-//! formed: a product costs one FFT product with T ([`crate::foundation::fft`]), one solve with the
-//! plate factor (K factored once with its rigid modes fixed, [`PlateInverse`]) and the sparse
-//! penalty. The equality is kept by projected CG (Gould, Hribar & Nocedal 2001): the iterates
-//! stay on Cᵀσ = Rᵀf, the preconditioned residual is projected onto Cᵀp = 0 in the
-//! preconditioner's inner product, and α is the least-squares multiplier of the final residual.
-//! On that subspace BᵀK⁻B does not depend on which generalised inverse K⁻ is (Bp is orthogonal to
-//! the rigid modes), so the iteration sees the true plate compliance.
-//!
-//! **Preconditioner: the plate on springs** ([`super::springs`]): M = D + QᵀK_p⁻Q with D the
-//! springs λ·diag(T) (a Winkler bed matched to the half-space's own point stiffness) plus the
-//! penalty's diagonal, and K_p the plate — by default on a grid twice as coarse. M holds the
-//! plate exactly at the long wavelengths where it dominates A (its free edges and its low
-//! modes) and the penalty exactly where it is diagonal (nodal constraints), so only the
-//! half-space's non-local part is left to the iteration; M⁻¹ is one sparse solve.
-//!
-//! Each step starts from the previous step's σ (warm start), so the later penalty steps, which
-//! change a few points, take few iterations; steps whose set is still moving are solved to a
-//! loose tolerance ([`CgSettings::loose_tolerance`]), and the penalty iteration confirms a set
-//! only with a tight solve.
-//!
-//! **Face solves** ([`IterativeSchur::solve_face`]) serve the matrix-free QP
-//! ([`super::active_set`]): the same system without penalty, with a set of pressures held at
-//! zero (the lifted points). The iteration then runs on the free points only: the product, the
-//! residual and the rigid-mode columns C are restricted to them, and the preconditioner drops
-//! its springs there (1/D = 0, which makes the Woodbury solve exactly (M_FF)⁻¹). The free
-//! points' columns of C can be dependent (a plate resting on one node); the small rigid-mode
-//! systems are solved by pseudo-inverse ([`SmallSpd`]), which keeps the iterates on the
-//! equilibrium the free points can carry.
+//! The Schur system with a matrix-free T: its set-up, its products, the projected PCG, and the
+//! two solves built on it — a penalty step and a face solve.
 
 use std::time::Instant;
 
-use super::linalg::dot;
-use super::linalg::{PlateInverse, SmallSpd, SparseFactor};
+use super::preconditioner::Preconditioner;
 use super::springs::SpringPlate;
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
-pub use crate::method::CgSettings;
+use crate::method::CgSettings;
 use crate::operators::Operators;
-
-/// How one linear solve went.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
-pub struct CgReport {
-    /// Conjugate-gradient iterations.
-    pub iterations: usize,
-    /// Final relative preconditioned residual.
-    pub residual: f64,
-    /// Relative residual ‖Aσ − Cα − h‖ / ‖h‖ of the returned solution, recomputed.
-    pub true_residual: f64,
-}
+use crate::solve::diagnostics::CgReport;
+use crate::solve::linalg::{dot, PlateInverse};
 
 /// The solution of one linear step.
 #[derive(Debug, Clone)]
@@ -84,110 +40,6 @@ pub struct Face {
     /// How the conjugate gradients went.
     pub cg: CgReport,
 }
-
-/// The preconditioner of one penalised set (and held set).
-struct Preconditioner {
-    /// 1/D per pressure node (0 on held points).
-    inv_d: Vec<f64>,
-    /// Factor of K_r + B_L D⁻¹ B_Lᵀ.
-    factor: SparseFactor,
-    /// The rigid-mode columns C restricted to the free points.
-    c: Vec<Vec<f64>>,
-    /// M⁻¹ C, one column per rigid mode.
-    minv_c: Vec<Vec<f64>>,
-    /// Pseudo-inverse of Cᵀ M⁻¹ C.
-    small: SmallSpd,
-    /// Pseudo-inverse of Cᵀ C.
-    ctc: SmallSpd,
-    /// The held points it was made for (empty: none; else one flag per pressure node).
-    held: Vec<bool>,
-    /// The penalty weights it was made for (empty: none).
-    weights: Vec<f64>,
-    /// √(hᵀ P M⁻¹ h) on its free points, the CG's reference (computed on first use).
-    scale: Option<f64>,
-}
-
-impl Preconditioner {
-    /// The preconditioner for penalty weights on `rows` and the points `held` at zero (empty:
-    /// none), with springs `spring_scale`·diag(T) on the plate `springs`.
-    fn new(
-        springs: &SpringPlate,
-        t_diag: &[f64],
-        c_full: &[Vec<f64>],
-        spring_scale: f64,
-        (rows, weights): (&Rows, &[f64]),
-        held: &[bool],
-    ) -> Result<Self> {
-        let mut d: Vec<f64> = t_diag.iter().map(|t| spring_scale * t).collect();
-        for (k, &w) in weights.iter().enumerate() {
-            if w != 0.0 {
-                for &(i, v) in &rows[k] {
-                    d[i] += w * v * v;
-                }
-            }
-        }
-        let is_held = |i: usize| held.get(i).copied().unwrap_or(false);
-        let inv_d: Vec<f64> = d
-            .iter()
-            .enumerate()
-            .map(|(i, v)| if is_held(i) { 0.0 } else { 1.0 / v })
-            .collect();
-        let factor = springs.factor(&inv_d)?;
-        let c: Vec<Vec<f64>> = c_full
-            .iter()
-            .map(|col| {
-                col.iter()
-                    .enumerate()
-                    .map(|(i, &v)| if is_held(i) { 0.0 } else { v })
-                    .collect()
-            })
-            .collect();
-        let minv_c: Vec<Vec<f64>> = c
-            .iter()
-            .map(|col| springs.solve(&inv_d, &factor, col))
-            .collect();
-        let m = c.len();
-        let small = SmallSpd::new(m, |a, b| dot(&c[a], &minv_c[b]));
-        let ctc = SmallSpd::new(m, |a, b| dot(&c[a], &c[b]));
-        Ok(Self {
-            inv_d,
-            factor,
-            c,
-            minv_c,
-            small,
-            ctc,
-            held: held_key(held),
-            weights: key(weights),
-            scale: None,
-        })
-    }
-
-    /// Whether it was made for these weights and held points.
-    fn fits(&self, weights: &[f64], held: &[bool]) -> bool {
-        self.weights == key(weights) && self.held == held_key(held)
-    }
-}
-
-/// Held points as a cache key: none and all-free are the same.
-fn held_key(held: &[bool]) -> Vec<bool> {
-    if held.iter().any(|&h| h) {
-        held.to_vec()
-    } else {
-        Vec::new()
-    }
-}
-
-/// Penalty weights as a cache key: no weights and all-zero weights are the same.
-fn key(weights: &[f64]) -> Vec<f64> {
-    if weights.iter().all(|&w| w == 0.0) {
-        Vec::new()
-    } else {
-        weights.to_vec()
-    }
-}
-
-/// The constraint rows g_k of the penalty, as sparse (node, weight) lists.
-type Rows = [Vec<(usize, f64)>];
 
 /// S p + Σ_k d_k g_k g_kᵀ p, given S p.
 fn penalised(sp: &[f64], rows: &[Vec<(usize, f64)>], weights: &[f64], p: &[f64]) -> Vec<f64> {
@@ -365,47 +217,6 @@ impl IterativeSchur {
         )
     }
 
-    /// The projected preconditioned residual: M⁻¹r − M⁻¹C (CᵀM⁻¹C)⁻¹ CᵀM⁻¹r, which satisfies
-    /// Cᵀz = 0. The projection is applied twice: the second pass removes the round-off of the
-    /// first (Gould, Hribar & Nocedal's iterative refinement), which otherwise lets Cᵀσ drift.
-    fn project(&self, pre: &Preconditioner, r: &[f64]) -> Vec<f64> {
-        let mut z = self.springs.solve(&pre.inv_d, &pre.factor, r);
-        for _ in 0..2 {
-            let ctz: Vec<f64> = pre.c.iter().map(|c| dot(c, &z)).collect();
-            let s = pre.small.solve(&ctz);
-            for (a, &sa) in s.iter().enumerate() {
-                for (zi, ci) in z.iter_mut().zip(&pre.minv_c[a]) {
-                    *zi -= sa * ci;
-                }
-            }
-        }
-        z
-    }
-
-    /// r − C (CᵀC)⁻¹ Cᵀ r: the residual without its component along C, which the multiplier α
-    /// absorbs. The projected preconditioner ignores that component in exact arithmetic, but it
-    /// is large (Cα) and would cancel the digits of rᵀz.
-    fn deflate(pre: &Preconditioner, r: &mut [f64]) {
-        for _ in 0..2 {
-            let ctr: Vec<f64> = pre.c.iter().map(|c| dot(c, r)).collect();
-            let s = pre.ctc.solve(&ctr);
-            for (a, &sa) in s.iter().enumerate() {
-                for (ri, ci) in r.iter_mut().zip(&pre.c[a]) {
-                    *ri -= sa * ci;
-                }
-            }
-        }
-    }
-
-    /// Zero the held points of `v`.
-    fn mask(pre: &Preconditioner, v: &mut [f64]) {
-        for (x, &h) in v.iter_mut().zip(&pre.held) {
-            if h {
-                *x = 0.0;
-            }
-        }
-    }
-
     /// Projected PCG from `sigma` (made feasible first) to the relative tolerance `tol`.
     /// Where the preconditioner is the matrix itself (`exact`: Winkler springs on the model's
     /// own plate) the start is the direct solution σ = M⁻¹(h + Cα), and CG only confirms it.
@@ -422,12 +233,12 @@ impl IterativeSchur {
     ) -> Result<Solved> {
         let n = ops.n_sigma();
         let mut h = self.h.clone();
-        Self::mask(pre, &mut h);
+        pre.mask(&mut h);
         if self.exact {
             // σ = M⁻¹h on the free points, then along M⁻¹C onto the equilibrium below.
             sigma = self.springs.solve(&pre.inv_d, &pre.factor, &h);
         }
-        Self::mask(pre, &mut sigma);
+        pre.mask(&mut sigma);
         // Start: σ moved onto Cᵀσ = Rᵀf along M⁻¹C.
         {
             let defect: Vec<f64> = (0..pre.c.len())
@@ -444,7 +255,7 @@ impl IterativeSchur {
         let scale = match pre.scale {
             Some(v) => v,
             None => {
-                let z = self.project(pre, &h);
+                let z = pre.project(&self.springs, &h);
                 let v = dot(&h, &z).max(f64::MIN_POSITIVE).sqrt();
                 pre.scale = Some(v);
                 v
@@ -456,9 +267,9 @@ impl IterativeSchur {
             .zip(&self.h)
             .map(|(a, b)| a - b)
             .collect();
-        Self::mask(pre, &mut r);
-        Self::deflate(pre, &mut r);
-        let mut z = self.project(pre, &r);
+        pre.mask(&mut r);
+        pre.deflate(&mut r);
+        let mut z = pre.project(&self.springs, &r);
         let mut rz = dot(&r, &z);
         let mut p: Vec<f64> = z.iter().map(|v| -v).collect();
         let mut iterations = 0;
@@ -474,7 +285,7 @@ impl IterativeSchur {
                 ));
             }
             let mut ap = self.apply(ops, rows, weights, &p);
-            Self::mask(pre, &mut ap);
+            pre.mask(&mut ap);
             let pap = dot(&p, &ap);
             if pap == 0.0 && dot(&p, &p) <= f64::MIN_POSITIVE.sqrt() {
                 // Nothing left to move: the free points' equilibrium fixes σ (a plate resting
@@ -492,8 +303,8 @@ impl IterativeSchur {
                 sigma[i] += step * p[i];
                 r[i] += step * ap[i];
             }
-            Self::deflate(pre, &mut r);
-            z = self.project(pre, &r);
+            pre.deflate(&mut r);
+            z = pre.project(&self.springs, &r);
             let rz_new = dot(&r, &z);
             let beta = rz_new / rz;
             rz = rz_new;
@@ -513,7 +324,7 @@ impl IterativeSchur {
             .zip(&self.h)
             .map(|(a, b)| a - b)
             .collect();
-        Self::mask(pre, &mut res);
+        pre.mask(&mut res);
         let ctr: Vec<f64> = pre.c.iter().map(|c| dot(c, &res)).collect();
         let alpha = pre.ctc.solve(&ctr);
         for (a, &al) in alpha.iter().enumerate() {
@@ -608,7 +419,7 @@ impl IterativeSchur {
 
     /// u = K⁻(f − Bσ) + Rα.
     pub fn displacements(&self, ops: &Operators, sigma: &[f64], alpha: &[f64]) -> Vec<f64> {
-        super::linalg::displacements(ops, &self.kinv, sigma, alpha)
+        crate::solve::linalg::displacements(ops, &self.kinv, sigma, alpha)
     }
 
     /// Whether the preconditioner is the matrix itself (so a tight solve costs about one CG

@@ -21,15 +21,17 @@ use clarabel::solver::{
     DefaultSettings, DefaultSettingsBuilder, DefaultSolver, IPSolver, SolverStatus, SupportedConeT,
 };
 
-use super::bonded::SchurSystem;
-use super::linalg::finite;
-use super::{discrete_gap, QpDiagnostics, Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
 use crate::method::{Method, QpForm, QpSettings, QpSolver};
 use crate::operators::Operators;
+use crate::solve::bonded::SchurSystem;
+use crate::solve::checks::discrete_gap;
+use crate::solve::diagnostics::QpDiagnostics;
+use crate::solve::linalg::finite;
+use crate::solve::solution::{Solution, SolveInfo, Status, Timings};
 
 /// clarabel's settings for `settings`: quiet, with its tolerances, iteration cap and KKT solver.
-/// Shared with the sparse forms ([`super::sparse_qp`]).
+/// Shared with the sparse forms ([`super::clarabel_sparse`]).
 pub(crate) fn clarabel_settings(settings: &QpSettings) -> Result<DefaultSettings<f64>> {
     DefaultSettingsBuilder::default()
         .verbose(false)

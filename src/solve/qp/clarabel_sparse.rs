@@ -1,4 +1,4 @@
-//! The unbonded QP of [`super::qp`] without the dense Schur complement, for a diagonal
+//! The unbonded QP of [`super::clarabel_dense`] without the dense Schur complement, for a diagonal
 //! (Winkler) compliance T, in two exact reformulations solved by clarabel. Both keep every
 //! matrix sparse, so memory grows like the plate's own factorisation instead of n_σ².
 //!
@@ -63,14 +63,15 @@ use std::time::Instant;
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSolver, IPSolver, SolverStatus, SupportedConeT};
 
-use super::linalg::finite;
-use super::qp::{clarabel_settings, diagnostics};
-use super::{discrete_gap, Solution, SolveInfo, Status, Timings};
+use super::clarabel_dense::{clarabel_settings, diagnostics};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
 use crate::method::{Method, QpForm, QpSettings};
 use crate::model::ConstraintPoints;
 use crate::operators::Operators;
+use crate::solve::checks::discrete_gap;
+use crate::solve::linalg::finite;
+use crate::solve::solution::{Solution, SolveInfo, Status, Timings};
 
 /// Which sparse reformulation of the unbonded QP to build.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

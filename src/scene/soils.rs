@@ -1,0 +1,346 @@
+//! The foundations of a scene, one function per soil: its groups from `[foundation]` in SI
+//! units (`*_si`) and from `[dimensionless]`, each refusing the keys that belong to another
+//! soil. A new soil is its two functions here and an arm in [`si`] and [`dimensionless`].
+
+use super::numbers::{finite_positive, poisson};
+use super::spec::{DimensionlessSpec, FoundationSpec};
+use crate::error::{Error, Result};
+use crate::foundation::layer::Base;
+use crate::foundation::FoundationKind;
+use crate::model::Groups;
+
+/// The plate's groups Δ, μ and ν_p, which a soil completes.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct PlateGroups {
+    /// Δ.
+    pub(super) delta: f64,
+    /// μ.
+    pub(super) mu: f64,
+    /// ν_p.
+    pub(super) nu: f64,
+}
+
+impl PlateGroups {
+    /// The groups of this plate on `foundation` with Γ = `gamma`, none of the other soils'
+    /// groups given.
+    fn on(self, foundation: FoundationKind, gamma: f64) -> Groups {
+        Groups {
+            foundation,
+            gamma,
+            delta: self.delta,
+            mu: self.mu,
+            nu: self.nu,
+            shear: None,
+            depth: None,
+            soil_nu: None,
+            base: None,
+        }
+    }
+}
+
+/// The groups of the soil of `[foundation]` (SI units) under a plate of half-length `l` (m)
+/// and rigidity `d` (N·m).
+pub(super) fn si(f: &FoundationSpec, plate: PlateGroups, l: f64, d: f64) -> Result<Groups> {
+    match f.model {
+        FoundationKind::Winkler => winkler_si(f, plate, l, d),
+        FoundationKind::HalfSpace => half_space_si(f, plate, l, d),
+        FoundationKind::Pasternak => pasternak_si(f, plate, l, d),
+        FoundationKind::ElasticLayer => elastic_layer_si(f, plate, l, d),
+    }
+}
+
+/// The groups of the soil of `[dimensionless]`, its Γ = `gamma` already checked.
+pub(super) fn dimensionless(
+    g: &DimensionlessSpec,
+    plate: PlateGroups,
+    gamma: f64,
+) -> Result<Groups> {
+    match g.foundation {
+        FoundationKind::Winkler => winkler_dimensionless(g, plate, gamma),
+        FoundationKind::HalfSpace => half_space_dimensionless(g, plate, gamma),
+        FoundationKind::Pasternak => pasternak_dimensionless(g, plate, gamma),
+        FoundationKind::ElasticLayer => elastic_layer_dimensionless(g, plate, gamma),
+    }
+}
+
+/// Winkler springs of modulus k (N/m³): Γ_w = D / (k μ L⁴).
+fn winkler_si(f: &FoundationSpec, p: PlateGroups, l: f64, d: f64) -> Result<Groups> {
+    no_shear_layer_si(f)?;
+    no_rigid_base_si(f)?;
+    if f.youngs_modulus.is_some() || f.poissons_ratio.is_some() {
+        return Err(Error::invalid(
+            "foundation.youngs_modulus",
+            "belongs to model = \"half-space\"; a Winkler foundation takes only `modulus` (N/m³)",
+        ));
+    }
+    let k = finite_positive(
+        "foundation.modulus",
+        f.modulus.ok_or_else(|| {
+            Error::invalid(
+                "foundation.modulus",
+                "missing: Winkler subgrade modulus K in N/m³",
+            )
+        })?,
+        "N/m³",
+    )?;
+    Ok(p.on(FoundationKind::Winkler, d / (k * p.mu * l.powi(4))))
+}
+
+/// The elastic half-space of E_s (Pa) and ν_s: Γ_h = D (1 − ν_s²) / (π E_s μ L³).
+fn half_space_si(f: &FoundationSpec, p: PlateGroups, l: f64, d: f64) -> Result<Groups> {
+    no_shear_layer_si(f)?;
+    no_rigid_base_si(f)?;
+    let (gamma, _) = elastic_soil_si(f, p, l, d)?;
+    Ok(p.on(FoundationKind::HalfSpace, gamma))
+}
+
+/// Pasternak springs k (N/m³) coupled by a shear layer G_p (N/m): Γ_w of the springs and
+/// Γ_g = G_p L² / D.
+fn pasternak_si(f: &FoundationSpec, p: PlateGroups, l: f64, d: f64) -> Result<Groups> {
+    no_rigid_base_si(f)?;
+    if f.youngs_modulus.is_some() || f.poissons_ratio.is_some() {
+        return Err(Error::invalid(
+            "foundation.youngs_modulus",
+            "belongs to model = \"half-space\"; a Pasternak foundation takes `modulus` (N/m³) and `shear_modulus` (N/m)",
+        ));
+    }
+    let k = finite_positive(
+        "foundation.modulus",
+        f.modulus.ok_or_else(|| {
+            Error::invalid(
+                "foundation.modulus",
+                "missing: the Pasternak springs' modulus k in N/m³",
+            )
+        })?,
+        "N/m³",
+    )?;
+    let g_p = finite_positive(
+        "foundation.shear_modulus",
+        f.shear_modulus.ok_or_else(|| {
+            Error::invalid("foundation.shear_modulus", "missing: the Pasternak shear layer's modulus G_p in N/m (for G_p = 0 use model = \"winkler\")")
+        })?,
+        "N/m",
+    )?;
+    let shear = pasternak_length(
+        "foundation.shear_modulus",
+        g_p * l * l / d,
+        d / (k * p.mu * l.powi(4)),
+        p.mu,
+    )?;
+    Ok(Groups {
+        shear: Some(shear),
+        ..p.on(FoundationKind::Pasternak, d / (k * p.mu * l.powi(4)))
+    })
+}
+
+/// An elastic layer of E_s (Pa) and ν_s, `depth` h (m) down to a rigid `base`: the
+/// half-space's Γ_h, h/L, ν_s and the base.
+fn elastic_layer_si(f: &FoundationSpec, p: PlateGroups, l: f64, d: f64) -> Result<Groups> {
+    no_shear_layer_si(f)?;
+    let (gamma, soil_nu) = elastic_soil_si(f, p, l, d)?;
+    let base = layer_base("foundation.base", f.base.as_deref())?;
+    let h = f.depth.ok_or_else(|| {
+        Error::invalid(
+            "foundation.depth",
+            "missing: the elastic layer's depth h to the rigid base, in m",
+        )
+    })?;
+    let h = finite_positive("foundation.depth", h, "m")?;
+    let depth = depth_ratio("foundation.depth", h / l)?;
+    Ok(Groups {
+        depth: Some(depth),
+        soil_nu: Some(soil_nu),
+        base: Some(base),
+        ..p.on(FoundationKind::ElasticLayer, gamma)
+    })
+}
+
+/// E_s and ν_s of a half-space or a layer: its Γ_h = D (1 − ν_s²) / (π E_s μ L³) and ν_s.
+fn elastic_soil_si(f: &FoundationSpec, p: PlateGroups, l: f64, d: f64) -> Result<(f64, f64)> {
+    if f.modulus.is_some() {
+        return Err(Error::invalid(
+            "foundation.modulus",
+            "belongs to model = \"winkler\"; a half-space takes youngs_modulus (Pa) and poissons_ratio",
+        ));
+    }
+    let es = finite_positive(
+        "foundation.youngs_modulus",
+        f.youngs_modulus.ok_or_else(|| {
+            Error::invalid(
+                "foundation.youngs_modulus",
+                "missing: soil Young's modulus E_s in Pa",
+            )
+        })?,
+        "Pa",
+    )?;
+    let nus = poisson(
+        "foundation.poissons_ratio",
+        f.poissons_ratio.ok_or_else(|| {
+            Error::invalid(
+                "foundation.poissons_ratio",
+                "missing: soil Poisson's ratio ν_s",
+            )
+        })?,
+    )?;
+    let gamma = d * (1.0 - nus * nus) / (std::f64::consts::PI * es * p.mu * l.powi(3));
+    Ok((gamma, nus))
+}
+
+/// Refuse `shear_modulus` on a soil without a shear layer.
+fn no_shear_layer_si(f: &FoundationSpec) -> Result<()> {
+    if f.shear_modulus.is_some() {
+        return Err(Error::invalid(
+            "foundation.shear_modulus",
+            format!("belongs to model = \"pasternak\"; a {} foundation has no shear layer (use model = \"pasternak\" with modulus and shear_modulus, or leave it out)", f.model.name()),
+        ));
+    }
+    Ok(())
+}
+
+/// Refuse `depth` and `base` on a soil without a rigid base.
+fn no_rigid_base_si(f: &FoundationSpec) -> Result<()> {
+    for (key, given) in [
+        ("foundation.depth", f.depth.is_some()),
+        ("foundation.base", f.base.is_some()),
+    ] {
+        if given {
+            return Err(Error::invalid(
+                key,
+                format!("belongs to model = \"elastic-layer\"; a {} foundation has no rigid base below it (use model = \"elastic-layer\" with youngs_modulus, poissons_ratio and depth, or leave it out)", f.model.name()),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Winkler: Γ_w alone.
+fn winkler_dimensionless(g: &DimensionlessSpec, p: PlateGroups, gamma: f64) -> Result<Groups> {
+    no_shear_layer(g)?;
+    no_rigid_base(g)?;
+    Ok(p.on(FoundationKind::Winkler, gamma))
+}
+
+/// The half-space: Γ_h alone.
+fn half_space_dimensionless(g: &DimensionlessSpec, p: PlateGroups, gamma: f64) -> Result<Groups> {
+    no_shear_layer(g)?;
+    no_rigid_base(g)?;
+    Ok(p.on(FoundationKind::HalfSpace, gamma))
+}
+
+/// Pasternak: Γ_w of its springs and the shear parameter Γ_g = G_p L²/D.
+fn pasternak_dimensionless(g: &DimensionlessSpec, p: PlateGroups, gamma: f64) -> Result<Groups> {
+    let shear = g.shear.ok_or_else(|| {
+        Error::invalid(
+            "dimensionless.shear",
+            "missing: the Pasternak shear parameter Γ_g = G_p L²/D (for Γ_g = 0 use foundation = \"winkler\")",
+        )
+    })?;
+    let shear = finite_positive("dimensionless.shear", shear, "Γ_g = G_p L²/D")?;
+    let shear = pasternak_length("dimensionless.shear", shear, gamma, p.mu)?;
+    no_rigid_base(g)?;
+    Ok(Groups {
+        shear: Some(shear),
+        ..p.on(FoundationKind::Pasternak, gamma)
+    })
+}
+
+/// The elastic layer: Γ_h of its E_s and ν_s, the depth ratio h/L, ν_s and the base.
+fn elastic_layer_dimensionless(
+    g: &DimensionlessSpec,
+    p: PlateGroups,
+    gamma: f64,
+) -> Result<Groups> {
+    no_shear_layer(g)?;
+    let depth = g.depth.ok_or_else(|| {
+        Error::invalid("dimensionless.depth", "missing: the elastic layer's depth ratio h/L (depth to the rigid base over the plate's half-length)")
+    })?;
+    let soil_nu = g.soil_nu.ok_or_else(|| {
+        Error::invalid("dimensionless.soil_nu", "missing: the elastic layer's Poisson's ratio ν_s (its kernel depends on ν_s beyond the factor 1 − ν_s² in Γ_h)")
+    })?;
+    let depth = depth_ratio("dimensionless.depth", depth)?;
+    let soil_nu = poisson("dimensionless.soil_nu", soil_nu)?;
+    let base = layer_base("dimensionless.base", g.base.as_deref())?;
+    Ok(Groups {
+        depth: Some(depth),
+        soil_nu: Some(soil_nu),
+        base: Some(base),
+        ..p.on(FoundationKind::ElasticLayer, gamma)
+    })
+}
+
+/// Refuse `shear` on a soil without a shear layer.
+fn no_shear_layer(g: &DimensionlessSpec) -> Result<()> {
+    if g.shear.is_some() {
+        return Err(Error::invalid(
+            "dimensionless.shear",
+            format!("belongs to foundation = \"pasternak\"; a {} foundation has no shear layer (leave it out)", g.foundation.name()),
+        ));
+    }
+    Ok(())
+}
+
+/// Refuse `depth`, `soil_nu` and `base` on a soil without a rigid base.
+fn no_rigid_base(g: &DimensionlessSpec) -> Result<()> {
+    for (key, given) in [
+        ("dimensionless.depth", g.depth.is_some()),
+        ("dimensionless.soil_nu", g.soil_nu.is_some()),
+        ("dimensionless.base", g.base.is_some()),
+    ] {
+        if given {
+            return Err(Error::invalid(
+                key,
+                format!("belongs to foundation = \"elastic-layer\"; a {} foundation has no rigid base below it (leave it out)", g.foundation.name()),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Upper limit of the Pasternak decay length λ/L = √(Γ_g μ Γ_w). Beyond it the shear layer
+/// spreads a load over more than a thousand plate lengths: the kernel is then a large constant
+/// plus a small logarithmic variation over the plate, and T loses the digits that tell its
+/// entries apart — the soil acts like a membrane of tension G_p, better modelled as such.
+pub const MAX_PASTERNAK_LENGTH: f64 = 1e3;
+
+/// Check the decay length the shear parameter `shear` = Γ_g gives with Γ_w = `gamma`, and
+/// return Γ_g.
+fn pasternak_length(field: &str, shear: f64, gamma: f64, mu: f64) -> Result<f64> {
+    let lambda = (shear * mu * gamma).sqrt();
+    if !(lambda.is_finite() && lambda > 0.0) || lambda > MAX_PASTERNAK_LENGTH {
+        return Err(Error::invalid(
+            field,
+            format!("gives the decay length λ = √(G_p/k) = {lambda:e} half-lengths L of the plate, outside (0, {MAX_PASTERNAK_LENGTH:e}]: check the units (G_p in N/m, k in N/m³) or lower the shear modulus"),
+        ));
+    }
+    Ok(shear)
+}
+
+/// Range of the elastic layer's depth ratio h/L. Deeper layers are the half-space to within
+/// e^{−2·1e4}; thinner ones than 1e−4 L put the whole kernel (40 depths) below the radial
+/// quadrature's innermost panel of an element pair, and are a Winkler bed k = E_oed/h anyway.
+pub const LAYER_DEPTH_RANGE: [f64; 2] = [1e-4, 1e4];
+
+/// Check the layer depth ratio h/L against [`LAYER_DEPTH_RANGE`], and return it.
+fn depth_ratio(field: &str, h: f64) -> Result<f64> {
+    let [lo, hi] = LAYER_DEPTH_RANGE;
+    if !(h.is_finite() && (lo..=hi).contains(&h)) {
+        return Err(Error::invalid(
+            field,
+            format!("gives the layer depth h = {h:e} half-lengths L of the plate, outside [{lo:e}, {hi:e}]: check the units (m); a deeper layer is a half-space (model = \"half-space\"), a thinner one a Winkler bed of modulus E_oed/h (model = \"winkler\")"),
+        ));
+    }
+    Ok(h)
+}
+
+/// A layer's base by name ("rough" when not given).
+fn layer_base(field: &str, base: Option<&str>) -> Result<Base> {
+    match base {
+        None => Ok(Base::Rough),
+        Some(name) => Base::parse(name).ok_or_else(|| {
+            Error::invalid(
+                field,
+                format!("\"{name}\" is not a base: give \"rough\" (the layer bonded to the rigid base, the default) or \"smooth\" (frictionless)"),
+            )
+        }),
+    }
+}

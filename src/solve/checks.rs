@@ -1,0 +1,103 @@
+//! The checks every method's input and output pass: a load a tensionless foundation can hold,
+//! a reaction that balances it, and the discrete gap the methods share.
+
+use super::linalg;
+use super::solution::Solution;
+use crate::error::{Error, Result};
+use crate::model::ConstraintPoints;
+use crate::operators::Operators;
+
+/// Largest relative equilibrium error accepted: |∫σ − ∫q| / |∫q|. Well-posed problems reach
+/// 1e-12; thin plates on soft soil lose a few digits to K's row-sum round-off (≈ 1e-9 for
+/// H = ℓ/100); beyond 1e-6 the linear algebra has broken down.
+pub const EQUILIBRIUM_TOLERANCE: f64 = 1e-6;
+
+/// Refuse a solution whose reaction does not balance the load.
+pub fn check_equilibrium(ops: &Operators, sol: &Solution) -> Result<()> {
+    let areas = crate::foundation::nodal_areas(&ops.mesh);
+    let reaction: f64 = sol.sigma.iter().zip(&areas).map(|(s, a)| s * a).sum();
+    let load = ops.total_load();
+    // Relative to the model's share of 4P: the net load, or the stated reference when the
+    // loads add up to zero (a bonded plate under curling alone), where |load| is round-off.
+    let rel = (reaction - load).abs() / load.abs().max(4.0 / ops.mesh.copies() as f64);
+    if rel.is_nan() || rel > EQUILIBRIUM_TOLERANCE {
+        return Err(Error::numerical(
+            format!("{} solve", sol.method.name()),
+            format!(
+                "the reaction misses the load by {rel:.1e} (relative): the system is too badly conditioned for this plate-to-foundation stiffness ratio; try the QP method, a coarser mesh, or check the units of the moduli"
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// A tensionless foundation can only balance a net downward load whose line of action passes
+/// through the plate: check the rigid-body components of the load before solving.
+pub fn check_feasible(ops: &Operators) -> Result<()> {
+    let rf: Vec<f64> = ops.rigid.iter().map(|r| linalg::dot(r, &ops.f)).collect();
+    let total = rf[0];
+    let scale: f64 = ops.f.iter().map(|v| v.abs()).sum();
+    if total <= 1e-12 * scale {
+        return Err(Error::Infeasible(format!(
+            "the net load is upward or zero ({:.3e} in units of P on the model): a foundation that cannot pull cannot hold the plate down; bonded contact can",
+            total
+        )));
+    }
+    // Resultant position, where the model keeps that rotation (x: mode 1 unless reduced about
+    // x = 0; y: the next mode unless reduced about y = 0). A non-negative nodal pressure σ_j
+    // acts at the centroid of its shape function (coupling B), so with nodal constraints the
+    // reachable resultants are the bounding box of those centroids — for the consistent
+    // (half-space) coupling a third of an element inside the plate edge.
+    let c: Vec<Vec<f64>> = ops.rigid.iter().map(|r| ops.bt_times(r)).collect();
+    let nodal = ops.constraints.kind == ConstraintPoints::Nodal;
+    let m = &ops.mesh;
+    let bounds = |k: usize, lo: f64, hi: f64| {
+        if nodal {
+            let (mut a, mut b) = (f64::INFINITY, f64::NEG_INFINITY);
+            for j in 0..c[0].len() {
+                if c[0][j] > 0.0 {
+                    let x = c[k][j] / c[0][j];
+                    a = a.min(x);
+                    b = b.max(x);
+                }
+            }
+            (a, b)
+        } else {
+            (lo, hi)
+        }
+    };
+    let tol = 1e-9;
+    let mut k = 1;
+    if !m.sym_x {
+        let (lo, hi) = bounds(k, m.x0, m.x0 + m.nx as f64 * m.hx);
+        let xbar = rf[k] / total;
+        k += 1;
+        if xbar < lo - tol || xbar > hi + tol {
+            return Err(Error::Infeasible(format!(
+                "the load resultant acts at x = {xbar:.4} L, outside [{lo:.4}, {hi:.4}] L where non-negative nodal pressures can balance it (the plate would tip over; a resultant on the very edge needs pressure concentrated on the edge, which bilinear pressures reach only to within a third of an element)"
+            )));
+        }
+    }
+    if !m.sym_y {
+        let (lo, hi) = bounds(k, m.y0, m.y0 + m.ny as f64 * m.hy);
+        let ybar = rf[k] / total;
+        if ybar < lo - tol || ybar > hi + tol {
+            return Err(Error::Infeasible(format!(
+                "the load resultant acts at y = {ybar:.4} L, outside [{lo:.4}, {hi:.4}] L where non-negative nodal pressures can balance it (the plate would tip over; a resultant on the very edge needs pressure concentrated on the edge, which bilinear pressures reach only to within a third of an element)"
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// Nodal gap and residual bookkeeping shared by the methods: g = T σ − Bᵀ u + g₀ (g₀ the
+/// voids' initial gap).
+pub fn discrete_gap(ops: &Operators, u: &[f64], sigma: &[f64]) -> Vec<f64> {
+    let ts = ops.t.apply(sigma);
+    let btu = ops.bt_times(u);
+    ts.iter()
+        .zip(&btu)
+        .zip(&ops.gap0)
+        .map(|((a, b), g0)| a - b + g0)
+        .collect()
+}

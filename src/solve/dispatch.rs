@@ -1,0 +1,58 @@
+//! One method on assembled operators: bonded contact directly, unbonded contact (after a
+//! feasibility check) by the penalty iteration or the QP, every reaction checked against the load.
+
+use super::checks::{check_equilibrium, check_feasible};
+use super::solution::Solution;
+use super::{bonded, penalty, qp};
+use crate::error::{Error, Result};
+use crate::foundation::Compliance;
+use crate::method::{Method, QpSolver};
+use crate::model::ConstraintPoints;
+use crate::operators::Operators;
+
+/// Solve the assembled operators with a method: bonded contact directly, unbonded contact (after
+/// a feasibility check) by the penalty iteration or the QP. Every solution's reaction is
+/// checked against the load.
+pub fn solve(ops: &Operators, method: &Method) -> Result<Solution> {
+    solve_from(ops, method, None)
+}
+
+/// Whether `method` on `ops` runs the matrix-free active-set QP, the one method that takes a
+/// start ([`solve_from`]).
+pub fn takes_start(ops: &Operators, method: &Method) -> bool {
+    match method {
+        Method::Qp(s) => {
+            let toeplitz = matches!(ops.t.as_ref(), Compliance::Toeplitz(_));
+            s.resolve(ops.foundation, ops.constraints.kind, toeplitz) == QpSolver::ActiveSet
+                && ops.constraints.kind == ConstraintPoints::Nodal
+        }
+        _ => false,
+    }
+}
+
+/// [`solve`], with the nodal pressures `start` as the matrix-free active-set QP's first
+/// iterate where it runs ([`takes_start`]); the other methods ignore it. The answer does not
+/// depend on the start (the QP's solution is unique), only the number of face solves does.
+pub fn solve_from(ops: &Operators, method: &Method, start: Option<&[f64]>) -> Result<Solution> {
+    method.validate()?;
+    let sol = match method {
+        Method::Bonded => {
+            if ops.gap0.iter().any(|&g| g != 0.0) {
+                return Err(Error::Unsupported(
+                    "voids need unbonded contact: bonded contact would glue the plate to the lowered soil surface".into(),
+                ));
+            }
+            bonded::solve(ops)?
+        }
+        Method::Penalty(settings) => {
+            check_feasible(ops)?;
+            penalty::solve(ops, settings)?
+        }
+        Method::Qp(settings) => {
+            check_feasible(ops)?;
+            qp::solve_qp(ops, settings, start)?
+        }
+    };
+    check_equilibrium(ops, &sol)?;
+    Ok(sol)
+}
