@@ -20,6 +20,19 @@
 //! Conventions: w positive downward, loads positive downward, pressure positive in compression,
 //! gap ≥ 0 where the plate is above the soil surface; the plate occupies
 //! [−L, L] × [−μL, μL].
+//!
+//! ## Use
+//!
+//! Every front end (the command line, the Python package) goes through two calls: [`load`] a
+//! scene from a [`Source`] with the front end's [`scene::Overrides`], and [`run`] it, with a
+//! [`Monitor`] that can watch and stop it. `examples/library.rs`:
+//!
+//! ```rust
+#![doc = include_str!("../examples/library.rs")]
+//! ```
+//!
+//! Features: the solver core needs none; `output` adds the result files and charts, `cli` (on
+//! by default) the command line.
 #![warn(missing_docs)]
 // Element and quadrature loops index several small arrays with one local node index; the
 // iterator form clippy suggests obscures that.

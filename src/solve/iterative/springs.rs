@@ -50,7 +50,7 @@ impl SpringPlate {
     /// element counts are even, fine otherwise.
     pub fn new(ops: &Operators, coarse: bool) -> Result<Self> {
         let m = &ops.mesh;
-        if coarse && m.nx % 2 == 0 && m.ny % 2 == 0 && m.nx >= 2 && m.ny >= 2 {
+        if coarse && m.nx.is_multiple_of(2) && m.ny.is_multiple_of(2) && m.nx >= 2 && m.ny >= 2 {
             Self::coarse(ops)
         } else {
             Self::fine(ops)
@@ -99,7 +99,7 @@ impl SpringPlate {
             .map(|j| {
                 let (p, q) = (j % nx1, j / nx1);
                 let along = |i: usize| -> Vec<(usize, f64)> {
-                    if i % 2 == 0 {
+                    if i.is_multiple_of(2) {
                         vec![(i / 2, 1.0)]
                     } else {
                         vec![(i / 2, 0.5), (i / 2 + 1, 0.5)]
