@@ -7,6 +7,7 @@ use crate::budget;
 use crate::error::Result;
 use crate::method::{Method, Route};
 use crate::model::Model;
+use crate::monitor::Monitor;
 use crate::post::{self, Report};
 use crate::scene::Problem;
 use crate::solve::{self, Solution};
@@ -26,7 +27,7 @@ pub struct Analysis {
 }
 
 /// A solved method on shared operators: solution, report and summary.
-pub struct Outcome {
+pub struct MethodRun {
     /// The method's solution.
     pub solution: Solution,
     /// Post-processed fields.
@@ -37,9 +38,20 @@ pub struct Outcome {
 
 /// Solve assembled operators with one method and post-process; `assemble_s` is the time the
 /// operators took, reported beside the method's own.
-pub fn run(model: &Model, ops: &Operators, method: &Method, assemble_s: f64) -> Result<Outcome> {
+pub fn run(model: &Model, ops: &Operators, method: &Method, assemble_s: f64) -> Result<MethodRun> {
+    run_with(model, ops, method, assemble_s, &Monitor::NONE)
+}
+
+/// [`run`], watched by `monitor` (the method's steps, the cancel flag).
+pub fn run_with(
+    model: &Model,
+    ops: &Operators,
+    method: &Method,
+    assemble_s: f64,
+    monitor: &Monitor<'_>,
+) -> Result<MethodRun> {
     let t = Instant::now();
-    let solution = solve::solve_nested(model, ops, method)?;
+    let solution = solve::solve_nested(model, ops, method, monitor)?;
     let solve_s = t.elapsed().as_secs_f64();
     let report = post::report(model, ops, &solution);
     let times = Times {
@@ -48,7 +60,7 @@ pub fn run(model: &Model, ops: &Operators, method: &Method, assemble_s: f64) -> 
         total: assemble_s + t.elapsed().as_secs_f64(),
     };
     let summary = Summary::new(model, ops, &solution, &report, times);
-    Ok(Outcome {
+    Ok(MethodRun {
         solution,
         report,
         summary,
@@ -88,6 +100,11 @@ pub fn prepare_shared(
 
 /// Check the memory budget, assemble, solve with the problem's method and post-process.
 pub fn analyse(problem: &Problem) -> Result<Analysis> {
+    analyse_with(problem, &Monitor::NONE)
+}
+
+/// [`analyse`], watched by `monitor`.
+pub fn analyse_with(problem: &Problem, monitor: &Monitor<'_>) -> Result<Analysis> {
     let t0 = Instant::now();
     let ops = prepare(
         &problem.model,
@@ -96,11 +113,12 @@ pub fn analyse(problem: &Problem) -> Result<Analysis> {
         problem.memory_limit,
     )?;
     let assemble_s = t0.elapsed().as_secs_f64();
-    let Outcome {
+    monitor.check("the assembly")?;
+    let MethodRun {
         solution,
         report,
         summary,
-    } = run(&problem.model, &ops, &problem.method, assemble_s)?;
+    } = run_with(&problem.model, &ops, &problem.method, assemble_s, monitor)?;
     Ok(Analysis {
         ops,
         solution,

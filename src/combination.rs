@@ -8,7 +8,7 @@ use std::time::Instant;
 use rayon::prelude::*;
 use serde::Serialize;
 
-use crate::analysis::{self, Outcome};
+use crate::analysis::{self, MethodRun};
 use crate::budget;
 use crate::error::{Error, Result};
 use crate::model::Model;
@@ -25,7 +25,7 @@ pub struct CombinationRun {
     /// Its model (own P).
     pub model: Model,
     /// Solution, report and summary, or why there is none.
-    pub outcome: Result<Outcome>,
+    pub outcome: Result<MethodRun>,
     /// Seconds for this combination: load vector, solve and post-processing.
     pub seconds: f64,
 }
@@ -155,7 +155,7 @@ pub fn analyse(problem: &Problem, monitor: &Monitor<'_>) -> Result<Combinations>
             let ops = base.loaded(&c.model);
             let outcome = inner
                 .check("load combinations")
-                .and_then(|()| analysis::run(&c.model, &ops, &problem.method, 0.0));
+                .and_then(|()| analysis::run_with(&c.model, &ops, &problem.method, 0.0, &inner));
             // A cancelled run is caught below, once every worker has stopped.
             let _ = cases.finish(&c.name);
             CombinationRun {
@@ -243,7 +243,7 @@ pub struct Envelope {
 /// units for SI scenes; in a dimensionless scene they are rescaled to the scene's own force
 /// unit (V and σ times each combination's P), since every combination has its own P.
 pub fn envelope(runs: &[CombinationRun]) -> Option<Envelope> {
-    let ok: Vec<(&CombinationRun, &Outcome)> = runs
+    let ok: Vec<(&CombinationRun, &MethodRun)> = runs
         .iter()
         .filter_map(|r| match &r.outcome {
             Ok(o) if o.solution.status.converged() => Some((r, o)),
@@ -265,7 +265,7 @@ pub fn envelope(runs: &[CombinationRun]) -> Option<Envelope> {
     let names: Vec<String> = ok.iter().map(|(r, _)| r.name.clone()).collect();
     // A dimensionless scene's fields are in units of each combination's own P.
     let scale = |r: &CombinationRun| if physical { 1.0 } else { r.model.load_scale };
-    type Getter = fn(&Outcome) -> &[f64];
+    type Getter = fn(&MethodRun) -> &[f64];
     let node_fields: [(&'static str, &'static str, &'static str, Getter); 3] = [
         ("w", "m", "F·L²/D", |o| &o.report.field.w),
         ("pressure", "Pa", "F/L²", |o| &o.report.field.pressure),

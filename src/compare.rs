@@ -7,6 +7,7 @@ use serde::Serialize;
 use crate::analysis;
 use crate::error::Result;
 use crate::method::Method;
+use crate::monitor::{Cases, Monitor};
 use crate::scene::Problem;
 use crate::summary::Summary;
 
@@ -41,6 +42,13 @@ pub struct Comparison {
 /// Run both unbonded methods (the penalty with the problem's settings when it names the
 /// penalty, defaults otherwise; the QP with defaults) on one assembly of the model.
 pub fn compare(problem: &Problem) -> Result<Comparison> {
+    compare_with(problem, &Monitor::NONE)
+}
+
+/// [`compare`], watched by `monitor`: a [`crate::monitor::Progress::Case`] per method, the
+/// cancel flag inside each.
+pub fn compare_with(problem: &Problem, monitor: &Monitor<'_>) -> Result<Comparison> {
+    let cases = Cases::new(monitor, 2);
     let penalty = match &problem.method {
         Method::Penalty(s) => Method::Penalty(*s),
         _ => Method::penalty(),
@@ -58,8 +66,10 @@ pub fn compare(problem: &Problem) -> Result<Comparison> {
         problem.memory_limit,
     )?;
     let assemble_s = t0.elapsed().as_secs_f64();
-    let pen = analysis::run(&problem.model, &ops, &penalty, assemble_s)?;
-    let qp = analysis::run(&problem.model, &ops, &qp, assemble_s)?;
+    cases.start("penalty")?;
+    let pen = analysis::run_with(&problem.model, &ops, &penalty, assemble_s, &cases.inner())?;
+    cases.start("QP")?;
+    let qp = analysis::run_with(&problem.model, &ops, &qp, assemble_s, &cases.inner())?;
     let (pen_r, qp_r) = (&pen.report, &qp.report);
     let diff = |a: &[f64], b: &[f64]| {
         a.iter()

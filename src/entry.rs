@@ -99,8 +99,9 @@ impl Outcome {
 /// Solve a validated problem: as one load set, or every combination on one assembly.
 pub fn run(problem: &Problem, monitor: &Monitor<'_>) -> Result<Outcome> {
     if problem.combinations.is_empty() {
-        monitor.check("the solve")?;
-        Ok(Outcome::Single(Box::new(analysis::analyse(problem)?)))
+        Ok(Outcome::Single(Box::new(analysis::analyse_with(
+            problem, monitor,
+        )?)))
     } else {
         Ok(Outcome::Combinations(combination::analyse(
             problem, monitor,

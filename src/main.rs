@@ -476,7 +476,7 @@ fn compare(args: CompareArgs) -> Result<(), Failure> {
     let problem = load_problem(&args.scene, &args.overrides.library())?;
     note_first_combination(&problem);
     output::prepare_dir(&args.out)?;
-    let c = liftoff::compare::compare(&problem)?;
+    let c = with_progress(false, |m| liftoff::compare::compare_with(&problem, m))?;
     let json = serde_json::to_string_pretty(&c)
         .map_err(|e| Failure::new(exit::IO, format!("cannot serialise compare.json: {e}")))?;
     let mut st = output::Staged::new(&args.out)?;

@@ -316,8 +316,8 @@ fn solve<'py>(
 /// `liftoff compare`: both methods on one assembly, as JSON.
 #[pyfunction]
 fn compare(py: Python<'_>, kind: &str, text: &str, options: &str) -> PyResult<String> {
-    let c = run(py, None, |_| {
-        problem(kind, text, options).and_then(|p| liftoff::compare::compare(&p))
+    let c = run(py, None, |m| {
+        problem(kind, text, options).and_then(|p| liftoff::compare::compare_with(&p, m))
     })?;
     json(&c)
 }

@@ -25,6 +25,7 @@ use super::solution::{Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
 use crate::method::Method;
+use crate::monitor::Monitor;
 use crate::operators::Operators;
 
 /// Position of each diagonal entry in the data array of a CSC matrix.
@@ -65,10 +66,16 @@ pub fn lumped_coupling(ops: &Operators) -> Result<Vec<(usize, f64)>> {
 
 /// Bonded solve.
 pub fn solve(ops: &Operators) -> Result<Solution> {
+    solve_with(ops, &Monitor::NONE)
+}
+
+/// Bonded solve; `monitor`'s flag stops the iterative route's conjugate gradients (the direct
+/// routes are one factorisation).
+pub fn solve_with(ops: &Operators, monitor: &Monitor<'_>) -> Result<Solution> {
     match ops.t.as_ref() {
         Compliance::Diagonal(t) => solve_springs(ops, t),
         Compliance::Dense(_) => solve_schur(ops),
-        Compliance::Toeplitz(_) => solve_iterative(ops),
+        Compliance::Toeplitz(_) => solve_iterative(ops, monitor),
     }
 }
 
@@ -252,7 +259,7 @@ fn solve_schur(ops: &Operators) -> Result<Solution> {
 
 /// The bonded half-space by conjugate gradients on the Schur system with a matrix-free T: the
 /// penalty iteration's first step ([`super::iterative`]).
-fn solve_iterative(ops: &Operators) -> Result<Solution> {
+fn solve_iterative(ops: &Operators, monitor: &Monitor<'_>) -> Result<Solution> {
     let t0 = Instant::now();
     let mut sys = super::iterative::IterativeSchur::new(ops, Default::default())?;
     let rows: Vec<Vec<(usize, f64)>> = Vec::new();
@@ -262,7 +269,7 @@ fn solve_iterative(ops: &Operators) -> Result<Solution> {
         sigma,
         alpha,
         cg,
-    } = sys.solve(ops, &rows, &weights, false)?;
+    } = sys.solve(ops, &rows, &weights, false, monitor)?;
     finite(&u, "bonded half-space solve (iterative)")?;
     let info = SolveInfo {
         timings: Timings {

@@ -8,6 +8,7 @@ use crate::error::{Error, Result};
 use crate::foundation::Compliance;
 use crate::method::{Method, QpSolver};
 use crate::model::ConstraintPoints;
+use crate::monitor::Monitor;
 use crate::operators::Operators;
 
 /// Solve the assembled operators with a method: bonded contact directly, unbonded contact (after
@@ -34,6 +35,18 @@ pub fn takes_start(ops: &Operators, method: &Method) -> bool {
 /// iterate where it runs ([`takes_start`]); the other methods ignore it. The answer does not
 /// depend on the start (the QP's solution is unique), only the number of face solves does.
 pub fn solve_from(ops: &Operators, method: &Method, start: Option<&[f64]>) -> Result<Solution> {
+    solve_with(ops, method, start, &Monitor::NONE)
+}
+
+/// [`solve_from`], watched by `monitor`: the iterative methods report their steps and stop
+/// with [`Error::Cancelled`] when its flag is set (bonded contact and clarabel's
+/// interior-point iterations are single runs that finish first).
+pub fn solve_with(
+    ops: &Operators,
+    method: &Method,
+    start: Option<&[f64]>,
+    monitor: &Monitor<'_>,
+) -> Result<Solution> {
     method.validate()?;
     let sol = match method {
         Method::Bonded => {
@@ -42,15 +55,15 @@ pub fn solve_from(ops: &Operators, method: &Method, start: Option<&[f64]>) -> Re
                     "voids need unbonded contact: bonded contact would glue the plate to the lowered soil surface".into(),
                 ));
             }
-            bonded::solve(ops)?
+            bonded::solve_with(ops, monitor)?
         }
         Method::Penalty(settings) => {
             check_feasible(ops)?;
-            penalty::solve(ops, settings)?
+            penalty::solve_with(ops, settings, monitor)?
         }
         Method::Qp(settings) => {
             check_feasible(ops)?;
-            qp::solve_qp(ops, settings, start)?
+            qp::solve_qp(ops, settings, start, monitor)?
         }
     };
     check_equilibrium(ops, &sol)?;

@@ -25,6 +25,7 @@ use super::penalty_step::{constraint_rows, Backend};
 use super::solution::{Iteration, PenaltyStage, Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
 use crate::method::{Method, PenaltySettings};
+use crate::monitor::{Monitor, Progress, StepKind};
 use crate::operators::Operators;
 
 /// Largest tension left at lifted points that a converged penalty solution may carry, relative
@@ -66,6 +67,7 @@ fn stage(
     cap: usize,
     history: &mut Vec<Iteration>,
     t_solves: &mut f64,
+    monitor: &Monitor<'_>,
 ) -> Result<StageEnd> {
     let n_c = start.len();
     let mut penalised = start;
@@ -76,8 +78,10 @@ fn stage(
     // tight one once it repeats (or cycles): only a tight solve can confirm the set.
     let mut loose = matches!(backend, Backend::Iterative(_));
     for _ in 0..cap {
+        monitor.check("the penalty iteration")?;
         let ts = Instant::now();
-        let (u, sigma, alpha, cg) = backend.solve(ops, rows, &penalised, epsilon, loose)?;
+        let (u, sigma, alpha, cg) =
+            backend.solve(ops, rows, &penalised, epsilon, loose, monitor)?;
         *t_solves += ts.elapsed().as_secs_f64();
         finite(&u, "penalty iteration")?;
         finite(&sigma, "penalty iteration")?;
@@ -102,6 +106,11 @@ fn stage(
             left,
             min_pressure: gs.iter().cloned().fold(f64::INFINITY, f64::min),
             cg,
+        });
+        monitor.report(Progress::Step {
+            method: StepKind::Penalty,
+            step: history.len(),
+            changes: entered + left,
         });
         last = Some((u, sigma, alpha));
         if count == n_c {
@@ -192,6 +201,16 @@ fn tension_check(ops: &Operators, sigma: &[f64], epsilon: f64) -> Status {
 /// from the last penalised set, on the same backend: the symbolic factorisation (and the last
 /// numeric factor, for Woodbury updates) is reused across stages.
 pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
+    solve_with(ops, settings, &Monitor::NONE)
+}
+
+/// [`solve`], watched by `monitor`: a progress event after every step, the cancel flag checked
+/// before every step and inside the iterative route's conjugate gradients.
+pub fn solve_with(
+    ops: &Operators,
+    settings: &PenaltySettings,
+    monitor: &Monitor<'_>,
+) -> Result<Solution> {
     let t0 = Instant::now();
     let mut backend = Backend::new(ops, settings.cg)?;
     let t_setup = t0.elapsed().as_secs_f64();
@@ -213,6 +232,7 @@ pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
             settings.max_iterations,
             &mut history,
             &mut t_solves,
+            monitor,
         )?;
         stages.push(PenaltyStage {
             epsilon,

@@ -21,6 +21,7 @@ use super::low_rank::LowRankSchur;
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
 use crate::model::ConstraintPoints;
+use crate::monitor::Monitor;
 use crate::operators::Operators;
 
 /// The analysed Winkler spring system and its bonded factor (no penalty springs): where every
@@ -157,10 +158,11 @@ impl Backend {
         penalised: &[bool],
         epsilon: f64,
         loose: bool,
+        monitor: &Monitor<'_>,
     ) -> Result<StepOut> {
         if let Backend::Iterative(sys) = self {
             let weights = penalty_weights(ops, penalised, epsilon);
-            let step = sys.solve(ops, rows, &weights, loose)?;
+            let step = sys.solve(ops, rows, &weights, loose, monitor)?;
             return Ok((step.u, step.sigma, step.alpha, Some(step.cg)));
         }
         if let Backend::Schur(sys, low_rank) = self {

@@ -95,7 +95,7 @@ pub fn eps_sweep(
         solve::check_feasible(&ops)?;
         cases.start(&format!("{}: QP reference", kind.name()))?;
         let t = Instant::now();
-        let q = solve::solve(&ops, &Method::qp())?;
+        let q = solve::solve_with(&ops, &Method::qp(), None, &cases.inner())?;
         qp_time_s.push((kind.name(), t.elapsed().as_secs_f64()));
         if !q.status.converged() {
             return Err(Error::numerical("QP reference", q.status.describe()));
@@ -104,13 +104,18 @@ pub fn eps_sweep(
         for &eps in epsilons {
             cases.start(&format!("{}: penalty ε̄ = {eps:.1e}", kind.name()))?;
             let t = Instant::now();
-            let r = solve::solve(
+            let r = solve::solve_with(
                 &ops,
                 &Method::Penalty(PenaltySettings {
                     max_iterations,
                     ..PenaltySettings::fixed(eps)
                 }),
+                None,
+                &cases.inner(),
             );
+            if let Err(e @ Error::Cancelled(_)) = r {
+                return Err(e);
+            }
             let time_s = t.elapsed().as_secs_f64();
             let row = match r {
                 Ok(sol) => {

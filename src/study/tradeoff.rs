@@ -133,7 +133,7 @@ pub fn tradeoff(
     let reference_at = |n: usize| -> Result<Vec<f64>> {
         let model = with_mesh(&problem.model, n);
         let ops = prepare(&model)?;
-        let sol = solve::solve(&ops, &qp)?;
+        let sol = solve::solve_with(&ops, &qp, None, &cases.inner())?;
         Ok(sample_v(&model, &ops, &sol))
     };
     cases.start(&format!(
@@ -173,7 +173,7 @@ pub fn tradeoff(
                 Ok(ops) => ops,
                 Err(e) => return tradeoff_point(method.name(), n, eps, f64::NAN, Err(e)),
             };
-            let sol = solve::solve(ops, method);
+            let sol = solve::solve_with(ops, method, None, &cases.inner());
             let time_s = assemble_s + t.elapsed().as_secs_f64();
             let outcome = sol
                 .as_ref()
@@ -191,6 +191,8 @@ pub fn tradeoff(
             points.push(run(&method, eps));
         }
     }
+    // A point cut short by the cancel flag is not a point of the study.
+    cases.inner().check("the tradeoff")?;
     let valid: Vec<usize> = (0..points.len())
         .filter(|&i| points[i].converged && points[i].error.is_finite() && points[i].error > 0.0)
         .collect();

@@ -8,6 +8,7 @@ use super::springs::SpringPlate;
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
 use crate::method::CgSettings;
+use crate::monitor::Monitor;
 use crate::operators::Operators;
 use crate::solve::diagnostics::CgReport;
 use crate::solve::linalg::{dot, PlateInverse};
@@ -230,6 +231,7 @@ impl IterativeSchur {
         mut sigma: Vec<f64>,
         tol: f64,
         stage: &str,
+        monitor: &Monitor<'_>,
     ) -> Result<Solved> {
         let n = ops.n_sigma();
         let mut h = self.h.clone();
@@ -275,6 +277,7 @@ impl IterativeSchur {
         let mut iterations = 0;
         let mut residual = rz.max(0.0).sqrt() / scale;
         while residual > tol {
+            monitor.check(stage)?;
             if iterations >= self.settings.max_iterations {
                 return Err(Error::numerical(
                     stage,
@@ -354,6 +357,7 @@ impl IterativeSchur {
         rows: &[Vec<(usize, f64)>],
         weights: &[f64],
         loose: bool,
+        monitor: &Monitor<'_>,
     ) -> Result<Step> {
         let mut pre = self.preconditioner(rows, weights, &[])?;
         let start = self
@@ -373,6 +377,7 @@ impl IterativeSchur {
             start,
             tol,
             "iterative penalty step (conjugate gradients)",
+            monitor,
         );
         self.cached = Some(pre);
         let solved = out?;
@@ -395,6 +400,7 @@ impl IterativeSchur {
         held: &[bool],
         start: &[f64],
         tol: f64,
+        monitor: &Monitor<'_>,
     ) -> Result<Face> {
         let mut pre = self.preconditioner(&[], &[], held)?;
         let out = self.cg(
@@ -405,6 +411,7 @@ impl IterativeSchur {
             start.to_vec(),
             tol,
             "matrix-free QP (conjugate gradients on the free points)",
+            monitor,
         );
         self.cached = Some(pre);
         let solved = out?;

@@ -11,6 +11,7 @@ use crate::error::Result;
 use crate::foundation::Compliance;
 use crate::method::{QpForm, QpSettings, QpSolver};
 use crate::model::ConstraintPoints;
+use crate::monitor::Monitor;
 use crate::operators::Operators;
 use crate::solve::solution::Solution;
 use clarabel_sparse::SparseForm;
@@ -18,15 +19,18 @@ use clarabel_sparse::SparseForm;
 /// The QP by the solver its settings resolve to on these operators. Under `qp_solver = auto`
 /// a clarabel solve that stops without a solution is solved again by the active-set method
 /// where it can be (nodal constraints), and the notes say so.
+/// `monitor` watches the active-set solver's face solves; clarabel's interior-point iterations
+/// run to their end.
 pub(crate) fn solve_qp(
     ops: &Operators,
     settings: &QpSettings,
     start: Option<&[f64]>,
+    monitor: &Monitor<'_>,
 ) -> Result<Solution> {
     let toeplitz = matches!(ops.t.as_ref(), Compliance::Toeplitz(_));
     let solver = settings.resolve(ops.foundation, ops.constraints.kind, toeplitz);
     if solver == QpSolver::ActiveSet {
-        return active_set::solve(ops, settings, start);
+        return active_set::solve_with(ops, settings, start, monitor);
     }
     let sol = match settings.form.resolve(&ops.t) {
         QpForm::Lifted => clarabel_sparse::solve_sparse(ops, settings, SparseForm::Lifted)?,
@@ -49,7 +53,8 @@ pub(crate) fn solve_qp(
     if !retry {
         return Ok(sol);
     }
-    let mut again = active_set::solve(ops, settings, start)?;
+    monitor.check("the QP")?;
+    let mut again = active_set::solve_with(ops, settings, start, monitor)?;
     again.info.notes.push(format!(
         "clarabel stopped ({}); solved again by the matrix-free active-set method",
         sol.status.describe()

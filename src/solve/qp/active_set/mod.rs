@@ -56,6 +56,7 @@ use crate::error::{Error, Result};
 use crate::foundation::Compliance;
 use crate::method::{CgSettings, Method, QpSettings, QpSolver};
 use crate::model::ConstraintPoints;
+use crate::monitor::Monitor;
 use crate::operators::Operators;
 use crate::solve::checks::discrete_gap;
 use crate::solve::diagnostics::ActiveSetDiagnostics;
@@ -68,6 +69,17 @@ use run::Run;
 /// (pressures at the nodes, e.g. a coarser grid's solution carried over: the first set is the
 /// points it leaves at zero), else from the feasible point nearest σ = 0.
 pub fn solve(ops: &Operators, settings: &QpSettings, start: Option<&[f64]>) -> Result<Solution> {
+    solve_with(ops, settings, start, &Monitor::NONE)
+}
+
+/// [`solve`], watched by `monitor`: a progress event after every face solve, the cancel flag
+/// checked before each and inside its conjugate gradients.
+pub fn solve_with(
+    ops: &Operators,
+    settings: &QpSettings,
+    start: Option<&[f64]>,
+    monitor: &Monitor<'_>,
+) -> Result<Solution> {
     let t0 = Instant::now();
     if ops.constraints.kind != ConstraintPoints::Nodal {
         return Err(Error::invalid(
@@ -88,7 +100,7 @@ pub fn solve(ops: &Operators, settings: &QpSettings, start: Option<&[f64]>) -> R
     };
     let mut sys = IterativeSchur::with_any_compliance(ops, cg)?;
     let t_setup = t0.elapsed().as_secs_f64();
-    let mut run = Run::new(s);
+    let mut run = Run::new(s, *monitor);
     let end = match run.primal_dual(&mut sys, ops, start)? {
         Ok(end) => end,
         Err(last) => run.feasible(&mut sys, ops, &last)?,

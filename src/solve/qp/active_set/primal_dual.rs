@@ -9,7 +9,7 @@ use crate::operators::Operators;
 use crate::solve::iterative::IterativeSchur;
 use crate::solve::solution::Status;
 
-impl Run {
+impl Run<'_> {
     /// The primal–dual active-set (semismooth Newton) iteration on sets: hold the lifted set
     /// at zero, solve the face, lift the free points whose pressure came out negative and
     /// release the held points whose gap came out negative; stop when nothing moves after a

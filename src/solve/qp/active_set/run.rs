@@ -4,6 +4,7 @@
 use super::point::Point;
 use crate::error::{Error, Result};
 use crate::method::ActiveSetSettings;
+use crate::monitor::{Monitor, Progress, StepKind};
 use crate::operators::Operators;
 use crate::solve::diagnostics::{CgReport, KktResiduals};
 use crate::solve::iterative::{Face, IterativeSchur};
@@ -14,8 +15,11 @@ use crate::solve::solution::{Iteration, Status};
 pub(super) type End = (Point, Vec<f64>, KktResiduals, Status);
 
 /// The iteration's bookkeeping.
-pub(super) struct Run {
+pub(super) struct Run<'m> {
     pub(super) settings: ActiveSetSettings,
+    /// Watches the face solves: progress after each, the cancel flag before each and inside
+    /// its conjugate gradients.
+    monitor: Monitor<'m>,
     pub(super) history: Vec<Iteration>,
     /// Face solves so far.
     pub(super) iterations: usize,
@@ -31,11 +35,12 @@ pub(super) fn infeasible() -> Error {
     )
 }
 
-impl Run {
+impl<'m> Run<'m> {
     /// Nothing done yet.
-    pub(super) fn new(settings: ActiveSetSettings) -> Self {
+    pub(super) fn new(settings: ActiveSetSettings, monitor: Monitor<'m>) -> Self {
         Self {
             settings,
+            monitor,
             history: Vec::new(),
             iterations: 0,
             projected_steps: 0,
@@ -53,7 +58,8 @@ impl Run {
         start: &[f64],
         tol: f64,
     ) -> Result<Face> {
-        let face = sys.solve_face(ops, held, start, tol)?;
+        self.monitor.check("the matrix-free QP")?;
+        let face = sys.solve_face(ops, held, start, tol, &self.monitor)?;
         finite(&face.sigma, "matrix-free QP")?;
         self.cg_total += face.cg.iterations;
         self.iterations += 1;
@@ -79,5 +85,12 @@ impl Run {
             min_pressure: min_sigma,
             cg: Some(cg),
         });
+        if let Some(step) = self.history.last() {
+            self.monitor.report(Progress::Step {
+                method: StepKind::ActiveSet,
+                step: step.step,
+                changes: step.entered + step.left,
+            });
+        }
     }
 }

@@ -9,7 +9,7 @@ use crate::operators::Operators;
 use crate::solve::iterative::IterativeSchur;
 use crate::solve::solution::Status;
 
-impl Run {
+impl Run<'_> {
     /// The safeguard: the primal active-set method (Nocedal & Wright, Numerical Optimization,
     /// Alg. 16.3) on feasible points (σ ≥ 0, in equilibrium) with a working set W of points
     /// held at zero. From a point that is not its face's minimiser, the face of W is solved
@@ -170,7 +170,7 @@ mod tests {
         let reference = crate::solve::qp::clarabel_dense::solve(&ops, &settings).expect("clarabel");
         let mut sys =
             IterativeSchur::with_any_compliance(&ops, settings.active_set.cg).expect("setup");
-        let mut run = Run::new(settings.active_set);
+        let mut run = Run::new(settings.active_set, crate::Monitor::NONE);
         let (point, _, k, status) = run
             .feasible(&mut sys, &ops, &vec![0.0; ops.n_sigma()])
             .expect("safeguard");
