@@ -29,6 +29,20 @@ pub enum MethodKind {
 }
 
 crate::names!(Contact, Bonded => "bonded", Unbonded => "unbonded");
+
+/// Which method produced a solution, as reports name it: bonded contact is one direct solve.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum SolvedBy {
+    /// Bonded contact: one linear solve.
+    Direct,
+    /// The penalty iteration.
+    Penalty,
+    /// The QP.
+    Qp,
+}
+
+crate::names!(SolvedBy, Direct => "direct", Penalty => "penalty", Qp => "qp");
 crate::names!(MethodKind, Penalty => "penalty", Qp => "qp");
 
 /// Settings of the penalty iteration.
@@ -458,6 +472,15 @@ impl Method {
             Method::Bonded => "bonded",
             Method::Penalty(_) => "penalty",
             Method::Qp(_) => "qp",
+        }
+    }
+
+    /// How reports name the method ("direct" for bonded contact).
+    pub fn solved_by(&self) -> SolvedBy {
+        match self {
+            Method::Bonded => SolvedBy::Direct,
+            Method::Penalty(_) => SolvedBy::Penalty,
+            Method::Qp(_) => SolvedBy::Qp,
         }
     }
 

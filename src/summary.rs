@@ -4,7 +4,9 @@
 use serde::Serialize;
 
 use crate::error::{Error, Result};
-use crate::method::Method;
+use crate::foundation::FoundationKind;
+use crate::method::{Contact, Method, QpSolver, SolvedBy};
+use crate::model::ConstraintPoints;
 use crate::model::{Groups, LoadReference, Model, Physical};
 use crate::post::{Complementarity, Extent, Report, Resultant};
 use crate::solve::{Iteration, PenaltyStage, Solution};
@@ -57,15 +59,15 @@ pub struct Summary {
     /// Scene title.
     pub title: String,
     /// "penalty", "qp" or "direct" (bonded).
-    pub method: String,
+    pub method: SolvedBy,
     /// "bonded" or "unbonded".
-    pub contact: String,
+    pub contact: Contact,
     /// "full", "half-x", "half-y" or "quarter".
     pub symmetry: String,
-    /// "winkler" or "half-space".
-    pub foundation: String,
+    /// "winkler", "half-space", "pasternak" or "elastic-layer".
+    pub foundation: FoundationKind,
     /// Constraint points ("nodal" or "gauss").
-    pub constraint: String,
+    pub constraint: ConstraintPoints,
     /// Elements [nx, ny] over the whole plate.
     pub elements: [usize; 2],
     /// Elements [nx, ny] of the solved model.
@@ -89,7 +91,7 @@ pub struct Summary {
     /// Phase timings of the method.
     pub method_time_s: std::collections::BTreeMap<String, f64>,
     /// The solver that ran the QP ("clarabel" or "active-set"; absent for other methods).
-    pub qp_solver: Option<&'static str>,
+    pub qp_solver: Option<QpSolver>,
     /// Solver diagnostics (QP by clarabel: its primal and dual residuals, objective, duality
     /// gap; by the active-set solver: outer and CG iterations, products, KKT residuals).
     pub solver_info: std::collections::BTreeMap<String, f64>,
@@ -139,14 +141,11 @@ impl Summary {
             |v: Vec<(&'static str, f64)>| v.into_iter().map(|(k, x)| (k.to_string(), x)).collect();
         Summary {
             title: model.title.clone(),
-            method: match sol.method {
-                Method::Bonded => "direct".into(),
-                ref m => m.name().into(),
-            },
-            contact: sol.method.contact().name().into(),
+            method: sol.method.solved_by(),
+            contact: sol.method.contact(),
             symmetry: ops.mesh.symmetry_name().into(),
-            foundation: model.groups.foundation.name().into(),
-            constraint: ops.constraints.kind.name().into(),
+            foundation: model.groups.foundation,
+            constraint: ops.constraints.kind,
             elements: model.elements,
             model_elements: [ops.mesh.nx, ops.mesh.ny],
             nodes: ops.mesh.n_nodes(),
@@ -165,7 +164,7 @@ impl Summary {
             time_s: times,
             method_time_s: named(sol.info.timings.named()),
             qp_solver: match &sol.method {
-                Method::Qp(s) => Some(s.solver.name()),
+                Method::Qp(s) => Some(s.solver),
                 _ => None,
             },
             solver_info: {

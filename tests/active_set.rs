@@ -205,7 +205,7 @@ fn equals_clarabel_on_every_combination() {
         };
         assert_eq!(
             ob.summary.qp_solver,
-            Some("active-set"),
+            Some(liftoff::method::QpSolver::ActiveSet),
             "{}: solver",
             b.name
         );

@@ -56,7 +56,7 @@ fn run(text: &str) -> Outcome {
     }
     let ops = liftoff::Operators::assemble(&problem.model);
     match liftoff::solve(&ops, &problem.method) {
-        Ok(sol) => Outcome::Solved(sol.status.kind()),
+        Ok(sol) => Outcome::Solved(sol.status.kind().name()),
         Err(e) => Outcome::SolveError(e),
     }
 }

@@ -219,7 +219,7 @@ fn run_writes_the_figures_and_tables() {
             .find(|r| {
                 r.foundation.name() == foundation
                     && r.gamma_index == 1
-                    && r.contact.name() == a.summary.contact
+                    && r.contact == a.summary.contact
             })
             .expect("run");
         let close = |x: f64, y: f64| (x - y).abs() <= 1e-9 * x.abs().max(y.abs()).max(1e-12);

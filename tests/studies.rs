@@ -60,9 +60,12 @@ fn check_tradeoff(name: &str, t: &study::Tradeoff, meshes: &[usize], penalties: 
         let per_mesh = 1 + penalties.len();
         assert_eq!(p.mesh, meshes[k / per_mesh], "{name}: point {k} mesh");
         match k % per_mesh {
-            0 => assert!(p.method == "qp" && p.eps.is_nan(), "{name}: point {k}"),
+            0 => assert!(
+                p.method.name() == "qp" && p.eps.is_nan(),
+                "{name}: point {k}"
+            ),
             j => assert!(
-                p.method == "penalty" && p.eps == penalties[j - 1],
+                p.method.name() == "penalty" && p.eps == penalties[j - 1],
                 "{name}: point {k}"
             ),
         }
@@ -75,7 +78,7 @@ fn check_tradeoff(name: &str, t: &study::Tradeoff, meshes: &[usize], penalties: 
         );
         assert_eq!(
             p.converged,
-            p.status == "converged",
+            p.status.name() == "converged",
             "{name}: {} at {}",
             p.method,
             p.mesh
@@ -144,7 +147,11 @@ fn tradeoff_points_front_and_convergence() {
                 "{name}: progress event {k}"
             );
         }
-        let qp: Vec<&TradeoffPoint> = t.points.iter().filter(|p| p.method == "qp").collect();
+        let qp: Vec<&TradeoffPoint> = t
+            .points
+            .iter()
+            .filter(|p| p.method.name() == "qp")
+            .collect();
         for p in &qp {
             assert!(p.converged, "{name}: QP at {}: {}", p.mesh, p.status);
         }
@@ -162,7 +169,8 @@ fn tradeoff_points_front_and_convergence() {
         // more than 0.1 % of the load (the tension tolerance), at every mesh.
         for p in t.points.iter().filter(|p| p.eps == 1e-2) {
             assert_eq!(
-                p.status, "penalty-too-weak",
+                p.status.name(),
+                "penalty-too-weak",
                 "{name}: ε̄ = 1e-2 at {}",
                 p.mesh
             );
@@ -198,7 +206,7 @@ fn tradeoff_reference_falls_back_to_the_finest_mesh() {
     );
     check_tradeoff("fallback", &t, &meshes, &[1e-8]);
     let finest_qp = &t.points[2];
-    assert_eq!((finest_qp.method, finest_qp.mesh), ("qp", 8));
+    assert_eq!((finest_qp.method.name(), finest_qp.mesh), ("qp", 8));
     // The same model solved twice by the same deterministic method: round-off at most.
     assert!(finest_qp.error <= 1e-12, "{:e}", finest_qp.error);
 
@@ -217,7 +225,9 @@ fn rows_of<'a>(
     method: &str,
 ) -> Vec<&'a StabilityRow> {
     rows.iter()
-        .filter(|r| r.foundation == foundation && r.sweep == sweep && r.method == method)
+        .filter(|r| {
+            r.foundation.name() == foundation && r.sweep == sweep && r.method.name() == method
+        })
         .collect()
 }
 
@@ -264,20 +274,20 @@ fn stability_sweep_rows_and_outcomes() {
             (r.sweep, r.method, r.value, r.foundation),
             (
                 case.param,
-                case.method.name(),
+                case.method,
                 case.value,
-                case.base.model.groups.foundation.name()
+                case.base.model.groups.foundation
             ),
             "row in plan order"
         );
         assert!(
-            common::OUTCOMES.contains(&r.outcome.as_str()),
+            common::OUTCOMES.contains(&r.outcome.name()),
             "{what}: outcome {}",
             r.outcome
         );
         assert!(r.time_s.is_finite() && r.time_s >= 0.0, "{what}");
         assert!(!r.detail.is_empty(), "{what}: detail");
-        if r.outcome == "converged" {
+        if r.outcome.name() == "converged" {
             assert!(
                 r.equilibrium <= EQUILIBRIUM_TOLERANCE,
                 "{what}: equilibrium {:e}",
@@ -292,11 +302,11 @@ fn stability_sweep_rows_and_outcomes() {
             // feasible pressure, the active-set QP's starting point: it is checked, no face
             // solve needed (0 iterations), and it carries next to no contact area.
             assert!(
-                r.iterations >= 1 || (r.method == "qp" && r.contact_fraction < 0.01),
+                r.iterations >= 1 || (r.method.name() == "qp" && r.contact_fraction < 0.01),
                 "{what}: {} iterations",
                 r.iterations
             );
-            if r.method == "qp" {
+            if r.method.name() == "qp" {
                 assert!(
                     r.min_pressure >= -1e-9,
                     "{what}: QP min σ {:e}",
@@ -304,13 +314,13 @@ fn stability_sweep_rows_and_outcomes() {
                 );
             }
         }
-        if ["infeasible", "too-large", "numerical"].contains(&r.outcome.as_str()) {
+        if ["infeasible", "too-large", "numerical"].contains(&r.outcome.name()) {
             assert!(
                 r.equilibrium.is_nan() && r.contact_fraction.is_nan() && r.iterations == 0,
                 "{what}: an error row carries no numbers"
             );
         }
-        if r.outcome == "too-large" {
+        if r.outcome.name() == "too-large" {
             assert_eq!(r.sweep, StabilityParam::Mesh, "{what}: only meshes grow");
         }
     }
@@ -334,18 +344,23 @@ fn stability_sweep_rows_and_outcomes() {
                 let need =
                     budget::estimate_bytes(&model.plan_mesh().0, f, model.constraint, &method);
                 assert_eq!(
-                    r.outcome == "too-large",
+                    r.outcome.name() == "too-large",
                     need > limit,
                     "{fd} {m} mesh {n}: {}",
                     r.outcome
                 );
                 assert!(
-                    !refused || r.outcome == "too-large",
+                    !refused || r.outcome.name() == "too-large",
                     "{fd} {m}: a finer mesh than a refused one ran"
                 );
-                refused |= r.outcome == "too-large";
+                refused |= r.outcome.name() == "too-large";
                 if n <= 32 {
-                    assert_eq!(r.outcome, "converged", "{fd} {m} mesh {n}: {}", r.detail);
+                    assert_eq!(
+                        r.outcome.name(),
+                        "converged",
+                        "{fd} {m} mesh {n}: {}",
+                        r.detail
+                    );
                 }
             }
             assert!(
@@ -357,14 +372,16 @@ fn stability_sweep_rows_and_outcomes() {
             for r in rows_of(&rows, fd, StabilityParam::Position, m) {
                 let what = format!("{fd} {m} at s = {}", r.value);
                 match (r.value < 1.0, fd, m) {
-                    (true, _, "qp") => assert_eq!(r.outcome, "converged", "{what}: {}", r.detail),
+                    (true, _, "qp") => {
+                        assert_eq!(r.outcome.name(), "converged", "{what}: {}", r.detail)
+                    }
                     (true, _, _) => assert!(
-                        ["converged", "penalty-too-weak"].contains(&r.outcome.as_str()),
+                        ["converged", "penalty-too-weak"].contains(&r.outcome.name()),
                         "{what}: {}",
                         r.detail
                     ),
                     (false, "winkler", "qp") => {
-                        assert_eq!(r.outcome, "converged", "{what}: {}", r.detail);
+                        assert_eq!(r.outcome.name(), "converged", "{what}: {}", r.detail);
                         assert!(
                             r.contact_fraction <= 1.0 / 64.0 + 1e-12,
                             "{what}: contact {}",
@@ -378,7 +395,7 @@ fn stability_sweep_rows_and_outcomes() {
                         // the corner, like the QP. The plate balanced on one node can still
                         // rotate about it, so the two solutions need not coincide away from the
                         // corner; both keep contact within the 2 × 2 corner elements.
-                        assert_eq!(r.outcome, "converged", "{what}: {}", r.detail);
+                        assert_eq!(r.outcome.name(), "converged", "{what}: {}", r.detail);
                         assert!(
                             r.contact_fraction <= 4.0 / 64.0 + 1e-12,
                             "{what}: contact {}",
@@ -386,7 +403,7 @@ fn stability_sweep_rows_and_outcomes() {
                         );
                     }
                     (false, _, _) => {
-                        assert_eq!(r.outcome, "infeasible", "{what}: {}", r.detail);
+                        assert_eq!(r.outcome.name(), "infeasible", "{what}: {}", r.detail);
                         let reach = 1.0 - (2.0 / 8.0) / 3.0;
                         assert!(
                             r.detail
@@ -402,9 +419,11 @@ fn stability_sweep_rows_and_outcomes() {
             if m == "qp" {
                 for r in rows_of(&rows, fd, StabilityParam::Mu, m) {
                     assert_eq!(
-                        r.outcome, "converged",
+                        r.outcome.name(),
+                        "converged",
                         "{fd} qp μ = {}: {}",
-                        r.value, r.detail
+                        r.value,
+                        r.detail
                     );
                 }
             }
@@ -415,9 +434,11 @@ fn stability_sweep_rows_and_outcomes() {
         assert_eq!(gamma.len(), 10);
         for r in &gamma {
             assert_eq!(
-                r.outcome, "converged",
+                r.outcome.name(),
+                "converged",
                 "{fd} qp Γ = {:e}: {}",
-                r.value, r.detail
+                r.value,
+                r.detail
             );
         }
         for w in gamma.windows(2) {
@@ -447,16 +468,17 @@ fn stability_sweep_rows_and_outcomes() {
         assert_eq!(eps.len(), 13);
         let first = eps
             .iter()
-            .position(|r| r.outcome == "converged")
+            .position(|r| r.outcome.name() == "converged")
             .unwrap_or_else(|| panic!("{fd}: the penalty converges at some ε̄"));
         assert!(
-            first > 0 && eps[0].outcome == "penalty-too-weak",
+            first > 0 && eps[0].outcome.name() == "penalty-too-weak",
             "{fd}: ε̄ = 1e-2 is too weak"
         );
         let smallest = eps[eps.len() - 1];
         for r in &eps[first..] {
             assert_eq!(
-                r.outcome, "converged",
+                r.outcome.name(),
+                "converged",
                 "{fd}: ε̄ = {:e} after convergence at larger ε̄",
                 r.value
             );

@@ -30,17 +30,10 @@ pub enum FoundationKind {
     ElasticLayer,
 }
 
-impl FoundationKind {
-    /// Name used in scene files and reports.
-    pub fn name(self) -> &'static str {
-        match self {
-            FoundationKind::Winkler => "winkler",
-            FoundationKind::HalfSpace => "half-space",
-            FoundationKind::Pasternak => "pasternak",
-            FoundationKind::ElasticLayer => "elastic-layer",
-        }
-    }
+crate::names!(FoundationKind, Winkler => "winkler", HalfSpace => "half-space",
+    Pasternak => "pasternak", ElasticLayer => "elastic-layer");
 
+impl FoundationKind {
     /// True for the local (Winkler) soil, whose T is diagonal; every other soil is a non-local
     /// surface kernel with a dense (or FFT-applied) T.
     pub fn is_local(self) -> bool {

@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 use super::chart::{self, Series};
 use super::Staged;
 use crate::error::{Error, Result};
+use crate::method::MethodKind;
 use crate::study::{StabilityRow, Sweep, Tradeoff};
 
 fn csv_text<T: serde::Serialize>(rows: &[T]) -> Result<String> {
@@ -70,7 +71,7 @@ pub fn write_sweep(dir: &Path, sweep: &Sweep, title: &str) -> Result<Vec<PathBuf
 pub fn write_tradeoff(dir: &Path, t: &Tradeoff, title: &str) -> Result<Vec<PathBuf>> {
     let mut st = Staged::new(dir)?;
     st.write_text("tradeoff.csv", &csv_text(&t.points)?)?;
-    let ok = |m: &str| {
+    let ok = |m: MethodKind| {
         t.points
             .iter()
             .filter(|p| p.method == m && p.converged)
@@ -87,13 +88,13 @@ pub fn write_tradeoff(dir: &Path, t: &Tradeoff, title: &str) -> Result<Vec<PathB
     let series = vec![
         Series {
             name: "penalty (each mesh × ε̄)".into(),
-            points: ok("penalty"),
+            points: ok(MethodKind::Penalty),
             line: false,
             markers: true,
         },
         Series {
             name: "QP (each mesh)".into(),
-            points: ok("qp"),
+            points: ok(MethodKind::Qp),
             line: false,
             markers: true,
         },
@@ -136,19 +137,19 @@ fn short(v: f64) -> String {
 pub fn write_stability(dir: &Path, rows: &[StabilityRow], title: &str) -> Result<Vec<PathBuf>> {
     let mut st = Staged::new(dir)?;
     st.write_text("stability.csv", &csv_text(rows)?)?;
-    for method in ["penalty", "qp"] {
+    for method in [MethodKind::Penalty, MethodKind::Qp] {
         let mine: Vec<&StabilityRow> = rows.iter().filter(|r| r.method == method).collect();
         let mut row_keys: Vec<(&str, &str)> = Vec::new();
         for r in &mine {
-            if !row_keys.contains(&(r.foundation, r.sweep.name())) {
-                row_keys.push((r.foundation, r.sweep.name()));
+            if !row_keys.contains(&(r.foundation.name(), r.sweep.name())) {
+                row_keys.push((r.foundation.name(), r.sweep.name()));
             }
         }
         let cols = row_keys
             .iter()
             .map(|k| {
                 mine.iter()
-                    .filter(|r| (r.foundation, r.sweep.name()) == *k)
+                    .filter(|r| (r.foundation.name(), r.sweep.name()) == *k)
                     .count()
             })
             .max()
@@ -157,15 +158,15 @@ pub fn write_stability(dir: &Path, rows: &[StabilityRow], title: &str) -> Result
         for (ri, k) in row_keys.iter().enumerate() {
             for (ci, r) in mine
                 .iter()
-                .filter(|r| (r.foundation, r.sweep.name()) == *k)
+                .filter(|r| (r.foundation.name(), r.sweep.name()) == *k)
                 .enumerate()
             {
-                let text = if r.outcome == "converged" {
+                let text = if r.outcome == crate::study::RunOutcome::CONVERGED {
                     format!("{} ({})", short(r.value), r.iterations)
                 } else {
                     short(r.value)
                 };
-                cells.push((ri, ci, r.outcome.clone(), text));
+                cells.push((ri, ci, r.outcome.name().to_string(), text));
             }
         }
         let row_labels: Vec<String> = row_keys.iter().map(|(f, s)| format!("{f}: {s}")).collect();

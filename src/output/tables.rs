@@ -135,7 +135,7 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
     for n in &s.notes {
         l.push(format!("  note       : {n}"));
     }
-    let method = if s.contact == "bonded" {
+    let method = if s.contact == crate::method::Contact::Bonded {
         "bonded, direct solve".to_string()
     } else {
         match s.qp_solver {
@@ -158,7 +158,7 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
             get("duality_gap")
         ));
     }
-    if s.qp_solver == Some("active-set") {
+    if s.qp_solver == Some(crate::method::QpSolver::ActiveSet) {
         let get = |k: &str| s.solver_info.get(k).copied().unwrap_or(f64::NAN);
         l.push(format!(
             "  QP solver  : matrix-free active set, {:.0} face solves, {:.0} CG iterations, {:.0} products with S, {:.0} factorisations",
@@ -446,7 +446,10 @@ pub fn tradeoff_table(title: &str, t: &Tradeoff, dir: &Path) -> String {
 /// detail, then the count and where the files went.
 pub fn stability_table(rows: &[StabilityRow], dir: &Path) -> String {
     let mut l = vec![format!("liftoff stability — {} runs", rows.len())];
-    let failed: Vec<&StabilityRow> = rows.iter().filter(|r| r.outcome != "converged").collect();
+    let failed: Vec<&StabilityRow> = rows
+        .iter()
+        .filter(|r| r.outcome != crate::study::RunOutcome::CONVERGED)
+        .collect();
     for r in &failed {
         l.push(format!(
             "  {:<10} {:<8} {:<7} {:>9.2e}: {} — {}",
@@ -471,15 +474,22 @@ pub fn stability_table(rows: &[StabilityRow], dir: &Path) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::study::{StabilityParam, TradeoffPoint};
+    use crate::method::MethodKind;
+    use crate::solve::StatusKind;
+    use crate::study::{RunOutcome, StabilityParam, TradeoffPoint};
 
-    fn row(sweep: StabilityParam, method: &'static str, value: f64, outcome: &str) -> StabilityRow {
+    fn row(
+        sweep: StabilityParam,
+        method: MethodKind,
+        value: f64,
+        outcome: RunOutcome,
+    ) -> StabilityRow {
         StabilityRow {
             sweep,
-            foundation: "winkler",
+            foundation: crate::foundation::FoundationKind::Winkler,
             method,
             value,
-            outcome: outcome.into(),
+            outcome,
             iterations: 3,
             equilibrium: 0.0,
             min_pressure: 0.0,
@@ -495,9 +505,24 @@ mod tests {
     #[test]
     fn stability_table_lists_failures_in_aligned_columns() {
         let rows = [
-            row(StabilityParam::Gamma, "penalty", 1e-6, "penalty-too-weak"),
-            row(StabilityParam::Mu, "qp", 0.5, "converged"),
-            row(StabilityParam::Mesh, "qp", 256.0, "too-large"),
+            row(
+                StabilityParam::Gamma,
+                MethodKind::Penalty,
+                1e-6,
+                RunOutcome::Solved(StatusKind::PenaltyTooWeak),
+            ),
+            row(
+                StabilityParam::Mu,
+                MethodKind::Qp,
+                0.5,
+                RunOutcome::CONVERGED,
+            ),
+            row(
+                StabilityParam::Mesh,
+                MethodKind::Qp,
+                256.0,
+                RunOutcome::Failed(crate::ErrorKind::TooLarge),
+            ),
         ];
         let want = "liftoff stability — 3 runs\n\
             \x20 winkler    gamma    penalty   1.00e-6: penalty-too-weak — why\n\
@@ -520,11 +545,14 @@ mod tests {
             time_s: 0.25,
             error: 0.125,
             converged: true,
-            status: "converged".into(),
+            status: RunOutcome::CONVERGED,
             pareto,
         };
         let t = Tradeoff {
-            points: vec![point("qp", f64::NAN, true), point("penalty", 1e-5, false)],
+            points: vec![
+                point(MethodKind::Qp, f64::NAN, true),
+                point(MethodKind::Penalty, 1e-5, false),
+            ],
             reference: "QP on 16".into(),
         };
         let want = "liftoff tradeoff — T\n\

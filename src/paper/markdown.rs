@@ -16,7 +16,7 @@ use crate::method::Contact;
 pub fn write_markdown(report: &PaperReport) -> String {
     let mut md = String::new();
     intro(&mut md, report);
-    let is_qp = report.method == "qp";
+    let is_qp = report.method == crate::method::MethodKind::Qp;
     for fig in &report.figures {
         push(
             &mut md,

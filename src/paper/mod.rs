@@ -165,7 +165,7 @@ pub struct PaperRun {
     /// Bonded or unbonded contact.
     pub contact: Contact,
     /// `penalty`, `qp` or `direct` (bonded).
-    pub method: String,
+    pub method: crate::method::SolvedBy,
     /// Refinement factor (1 = the paper's mesh).
     pub refine: usize,
     /// Elements over the whole plate.
@@ -273,7 +273,7 @@ pub struct PaperParameters {
 #[derive(Debug, Clone, Serialize)]
 pub struct PaperReport {
     /// Method of the unbonded runs.
-    pub method: String,
+    pub method: crate::method::MethodKind,
     /// Reading of load condition 2.
     pub load2: LoadCondition2,
     /// The same in words.

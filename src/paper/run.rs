@@ -90,7 +90,7 @@ fn solve_case(
         gamma_index: case.gamma_index,
         gamma: case.gamma,
         contact: case.contact,
-        method: s.method.clone(),
+        method: s.method,
         refine,
         elements: s.elements,
         key,
@@ -169,7 +169,7 @@ pub fn run(options: &PaperOptions, out: &Path, monitor: &Monitor<'_>) -> Result<
     files.push("paper.md".into());
 
     let report = PaperReport {
-        method: options.method.name().into(),
+        method: options.method,
         load2: options.load2,
         load2_description: options.load2.describe(),
         refine: options.refine,

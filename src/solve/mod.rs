@@ -30,4 +30,4 @@ pub use checks::{check_equilibrium, check_feasible, discrete_gap, EQUILIBRIUM_TO
 pub use diagnostics::{ActiveSetDiagnostics, CgReport, KktResiduals, QpDiagnostics};
 pub use dispatch::{solve, solve_from, solve_with, takes_start};
 pub use nested::{solve_nested, NESTED_MIN_NODES};
-pub use solution::{Iteration, PenaltyStage, Solution, SolveInfo, Status, Timings};
+pub use solution::{Iteration, PenaltyStage, Solution, SolveInfo, Status, StatusKind, Timings};

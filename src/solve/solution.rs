@@ -42,14 +42,14 @@ impl Status {
         matches!(self, Status::Converged)
     }
 
-    /// Short machine-readable kind, as in the studies' CSV files.
-    pub fn kind(&self) -> &'static str {
+    /// Which kind of outcome, as the studies' CSV files name it.
+    pub fn kind(&self) -> StatusKind {
         match self {
-            Status::Converged => "converged",
-            Status::Cycling { .. } => "cycling",
-            Status::IterationLimit { .. } => "iteration-limit",
-            Status::PenaltyTooWeak { .. } => "penalty-too-weak",
-            Status::SolverFailure { .. } => "solver-failure",
+            Status::Converged => StatusKind::Converged,
+            Status::Cycling { .. } => StatusKind::Cycling,
+            Status::IterationLimit { .. } => StatusKind::IterationLimit,
+            Status::PenaltyTooWeak { .. } => StatusKind::PenaltyTooWeak,
+            Status::SolverFailure { .. } => StatusKind::SolverFailure,
         }
     }
 
@@ -75,6 +75,26 @@ impl Status {
         }
     }
 }
+
+/// The kinds of [`Status`], without their data.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum StatusKind {
+    /// [`Status::Converged`].
+    Converged,
+    /// [`Status::Cycling`].
+    Cycling,
+    /// [`Status::IterationLimit`].
+    IterationLimit,
+    /// [`Status::PenaltyTooWeak`].
+    PenaltyTooWeak,
+    /// [`Status::SolverFailure`].
+    SolverFailure,
+}
+
+crate::names!(StatusKind, Converged => "converged", Cycling => "cycling",
+    IterationLimit => "iteration-limit", PenaltyTooWeak => "penalty-too-weak",
+    SolverFailure => "solver-failure");
 
 /// One step of an iterative method.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -150,7 +170,7 @@ pub struct PenaltyStage {
     /// Linear solves at this ε̄.
     pub steps: usize,
     /// How the stage ended ([`Status::kind`]).
-    pub outcome: &'static str,
+    pub outcome: StatusKind,
 }
 
 /// How a solve went: timings and the external solver's diagnostics.

@@ -4,6 +4,7 @@ use std::time::Instant;
 
 use serde::Serialize;
 
+use super::RunOutcome;
 use crate::error::{Error, Result};
 use crate::method::{Method, PenaltySettings};
 use crate::metrics::{loglog_fit, max_abs_diff, rel_l2};
@@ -11,6 +12,7 @@ use crate::model::{ConstraintPoints, Model};
 use crate::monitor::{Cases, Monitor};
 use crate::operators::Operators;
 use crate::scene::Problem;
+use crate::solve::StatusKind;
 use crate::solve::{self, Solution};
 
 /// Dimensionless nodal fields of a solution: (V at model nodes, σ at model nodes).
@@ -34,7 +36,7 @@ pub struct SweepRow {
     /// Converged (set repeated and penalty strong enough).
     pub converged: bool,
     /// Outcome kind.
-    pub status: String,
+    pub status: RunOutcome,
     /// max |σ_pen − σ_qp| (dimensionless σ).
     pub max_abs_sigma_err: f64,
     /// max |V_pen − V_qp|.
@@ -126,7 +128,7 @@ pub fn eps_sweep(
                         eps,
                         iterations: sol.iterations,
                         converged: sol.status.converged(),
-                        status: sol.status.kind().into(),
+                        status: RunOutcome::Solved(sol.status.kind()),
                         max_abs_sigma_err: max_abs_diff(&s, &sq),
                         max_abs_v_err: max_abs_diff(&v, &vq),
                         rel_l2_sigma: rel_l2(&s, &sq),
@@ -142,7 +144,7 @@ pub fn eps_sweep(
                     eps,
                     iterations: 0,
                     converged: false,
-                    status: e.kind().name().into(),
+                    status: RunOutcome::Failed(e.kind()),
                     max_abs_sigma_err: f64::NAN,
                     max_abs_v_err: f64::NAN,
                     rel_l2_sigma: f64::NAN,
@@ -159,7 +161,8 @@ pub fn eps_sweep(
             // ε̄ → 0 curve; only cycling and the iteration cap do not).
             .filter(|r| {
                 r.constraint == kind.name()
-                    && (r.status == "converged" || r.status == "penalty-too-weak")
+                    && (r.status == RunOutcome::CONVERGED
+                        || r.status == RunOutcome::Solved(StatusKind::PenaltyTooWeak))
                     && r.rel_l2_sigma.is_finite()
             })
             .collect();
@@ -171,7 +174,7 @@ pub fn eps_sweep(
             let mut pts: Vec<(f64, f64)> = mine
                 .iter()
                 .filter(|r| {
-                    (!adequate_only || r.status == "converged")
+                    (!adequate_only || r.status == RunOutcome::CONVERGED)
                         && r.eps >= fit_window[0]
                         && r.eps <= fit_window[1]
                         && r.rel_l2_sigma > 0.0

@@ -7,6 +7,9 @@
 //! Layout: `eps_sweep.rs`, `tradeoff.rs` and `stability.rs` hold one study each,
 //! `options.rs` the validated options the CLI builds them from.
 
+use crate::error::ErrorKind;
+use crate::solve::StatusKind;
+
 mod eps_sweep;
 mod options;
 mod stability;
@@ -18,6 +21,36 @@ pub use stability::{
     stability_plan, stability_run, stability_sweep, StabilityCase, StabilityParam, StabilityRow,
 };
 pub use tradeoff::{tradeoff, Tradeoff, TradeoffPoint};
+
+/// How one run of a study ended: the status of a solve that ran, or the kind of the error that
+/// stopped it (written as its name: "converged", "penalty-too-weak", "infeasible", …).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(untagged)]
+pub enum RunOutcome {
+    /// The solve ran and ended so.
+    Solved(StatusKind),
+    /// An error stopped it.
+    Failed(ErrorKind),
+}
+
+impl RunOutcome {
+    /// The converged outcome.
+    pub const CONVERGED: RunOutcome = RunOutcome::Solved(StatusKind::Converged);
+
+    /// Name as the CSV files write it.
+    pub fn name(self) -> &'static str {
+        match self {
+            RunOutcome::Solved(k) => k.name(),
+            RunOutcome::Failed(k) => k.name(),
+        }
+    }
+}
+
+impl std::fmt::Display for RunOutcome {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.pad(self.name())
+    }
+}
 
 /// Logarithmically spaced values from `from` to `to` (inclusive), `points` ≥ 2 of them.
 pub fn log_space(from: f64, to: f64, points: usize) -> Vec<f64> {

@@ -6,6 +6,7 @@ use std::time::Instant;
 use serde::Serialize;
 
 use super::log_space;
+use super::RunOutcome;
 use crate::error::Result;
 use crate::foundation::FoundationKind;
 use crate::method::{Method, MethodKind, PenaltySettings};
@@ -115,14 +116,14 @@ pub struct StabilityRow {
     /// Which parameter is swept.
     pub sweep: StabilityParam,
     /// Foundation.
-    pub foundation: &'static str,
+    pub foundation: FoundationKind,
     /// Method.
-    pub method: &'static str,
+    pub method: MethodKind,
     /// Value of the swept parameter.
     pub value: f64,
     /// Outcome kind: converged, cycling, iteration-limit, penalty-too-weak, solver-failure,
     /// infeasible, too-large, numerical.
-    pub outcome: String,
+    pub outcome: RunOutcome,
     /// Iterations (penalty steps or interior-point iterations).
     pub iterations: usize,
     /// |reaction − load| / load.
@@ -184,7 +185,7 @@ pub fn stability_run(case: &StabilityCase<'_>) -> StabilityRow {
             model.elements = [n, n];
         }
     }
-    let foundation = model.groups.foundation.name();
+    let foundation = model.groups.foundation;
     let t = Instant::now();
     let result = crate::analysis::prepare(
         &model,
@@ -198,14 +199,14 @@ pub fn stability_run(case: &StabilityCase<'_>) -> StabilityRow {
         Ok((sol, rep))
     });
     let time_s = t.elapsed().as_secs_f64();
-    let (sweep, method) = (case.param, case.method.name());
+    let (sweep, method) = (case.param, case.method);
     match result {
         Ok((sol, rep)) => StabilityRow {
             sweep,
             foundation,
             method,
             value,
-            outcome: sol.status.kind().into(),
+            outcome: RunOutcome::Solved(sol.status.kind()),
             iterations: sol.iterations,
             equilibrium: rep.resultant.relative_error,
             min_pressure: rep.complementarity.min_pressure,
@@ -219,7 +220,7 @@ pub fn stability_run(case: &StabilityCase<'_>) -> StabilityRow {
             foundation,
             method,
             value,
-            outcome: e.kind().name().into(),
+            outcome: RunOutcome::Failed(e.kind()),
             iterations: 0,
             equilibrium: f64::NAN,
             min_pressure: f64::NAN,

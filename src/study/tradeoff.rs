@@ -4,8 +4,9 @@ use std::time::Instant;
 
 use serde::Serialize;
 
+use super::RunOutcome;
 use crate::error::{Error, Result};
-use crate::method::{Method, PenaltySettings, Route};
+use crate::method::{Method, MethodKind, PenaltySettings, Route};
 use crate::metrics::{pareto_front, rel_l2};
 use crate::model::Model;
 use crate::monitor::{Cases, Monitor};
@@ -17,8 +18,8 @@ use crate::solve::{self, Solution};
 /// One point of the speed–accuracy chart.
 #[derive(Debug, Clone, Serialize)]
 pub struct TradeoffPoint {
-    /// "penalty" or "qp".
-    pub method: &'static str,
+    /// The method.
+    pub method: MethodKind,
     /// Elements per side of the whole plate.
     pub mesh: usize,
     /// ε̄ (penalty) or NaN (QP).
@@ -32,7 +33,7 @@ pub struct TradeoffPoint {
     /// Converged.
     pub converged: bool,
     /// Outcome kind.
-    pub status: String,
+    pub status: RunOutcome,
     /// On the Pareto front (no other point both faster and more accurate).
     pub pareto: bool,
 }
@@ -75,7 +76,7 @@ fn with_mesh(model: &Model, n: usize) -> Model {
 
 /// A tradeoff point from a solve that ran, or from the error that stopped it.
 fn tradeoff_point(
-    method: &'static str,
+    method: MethodKind,
     mesh: usize,
     eps: f64,
     time_s: f64,
@@ -89,7 +90,7 @@ fn tradeoff_point(
             time_s,
             error,
             converged: sol.status.converged(),
-            status: sol.status.kind().into(),
+            status: RunOutcome::Solved(sol.status.kind()),
             pareto: false,
         },
         Err(e) => TradeoffPoint {
@@ -99,7 +100,7 @@ fn tradeoff_point(
             time_s,
             error: f64::NAN,
             converged: false,
-            status: e.kind().name().into(),
+            status: RunOutcome::Failed(e.kind()),
             pareto: false,
         },
     }
@@ -168,17 +169,22 @@ pub fn tradeoff(
         let ops = prepare(&model);
         let assemble_s = t.elapsed().as_secs_f64();
         let run = |method: &Method, eps: f64| -> TradeoffPoint {
+            let kind = if matches!(method, Method::Qp(_)) {
+                MethodKind::Qp
+            } else {
+                MethodKind::Penalty
+            };
             let t = Instant::now();
             let ops = match &ops {
                 Ok(ops) => ops,
-                Err(e) => return tradeoff_point(method.name(), n, eps, f64::NAN, Err(e)),
+                Err(e) => return tradeoff_point(kind, n, eps, f64::NAN, Err(e)),
             };
             let sol = solve::solve_with(ops, method, None, &cases.inner());
             let time_s = assemble_s + t.elapsed().as_secs_f64();
             let outcome = sol
                 .as_ref()
                 .map(|sol| (rel_l2(&sample_v(&model, ops, sol), &v_ref), sol));
-            tradeoff_point(method.name(), n, eps, time_s, outcome)
+            tradeoff_point(kind, n, eps, time_s, outcome)
         };
         cases.start(&format!("QP at {n}"))?;
         points.push(run(&qp, f64::NAN));

@@ -20,6 +20,7 @@
 
 mod axis;
 mod category;
+mod comparison;
 mod contact;
 mod loglog;
 mod overlay;
@@ -39,12 +40,12 @@ use plotters::style::FontStyle;
 use crate::error::{Error, Result};
 
 pub use category::write_category_map_svg;
+pub(crate) use comparison::{write_profile_comparison, Curve};
 pub use contact::{write_contact_map, write_field_map, MapValues};
 pub(crate) use contact::{write_contact_regions, Region};
 pub use loglog::{write_loglog_svg, Series};
 pub use overlay::Overlay;
 pub use profile::write_profiles_svg;
-pub(crate) use profile::{write_profile_comparison, Curve};
 pub use units::{Scale, Units};
 
 /// The embedded font.

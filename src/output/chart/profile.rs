@@ -7,8 +7,8 @@
 //!
 //! * [`write_profiles_svg`], the `profiles.svg` of a solve: one column over the whole lines
 //!   (coordinate −1 to 1, or ± the half-length of the longest line in m), one curve per line;
-//! * [`write_profile_comparison`], the paper's Figs. 3–5 and 7: one column per line over its
-//!   half (coordinate 0 to 1, the plate being symmetric), one curve per solve.
+//! * `write_profile_comparison` (`comparison.rs`), the paper's Figs. 3–5 and 7: one column per
+//!   line over its half (coordinate 0 to 1, the plate being symmetric), one curve per solve.
 //!
 //! Both rows share their value range over all columns (so panels compare by eye); the legend
 //! sits in the σ panel of the first column. A single column is drawn large (800 × 900), several
@@ -22,7 +22,7 @@ use plotters::prelude::*;
 use super::axis::{padded_range, tick_format};
 use super::style::{self, DESC_FONT, LABEL_FONT, LINE_WIDTH};
 use super::units::Units;
-use super::{titled, txt, write_png, write_svg, DrawResult, Picture, FONT};
+use super::{titled, txt, write_svg, DrawResult, Picture, FONT};
 use crate::error::Result;
 use crate::post::{Profile, ProfilePoint};
 
@@ -65,7 +65,7 @@ fn line_length(line: &str, units: &Units) -> f64 {
 }
 
 /// The coordinate along a line, as an axis description.
-fn line_coordinate(line: &str) -> &'static str {
+pub(super) fn line_coordinate(line: &str) -> &'static str {
     match line {
         "diagonal" => "fraction of the half-diagonal",
         "y-axis" | "edge-y" => "t",
@@ -74,22 +74,22 @@ fn line_coordinate(line: &str) -> &'static str {
 }
 
 /// One curve: a line's points in one colour.
-struct Line<'a> {
-    label: String,
-    colour: RGBColor,
-    dashed: bool,
+pub(super) struct Line<'a> {
+    pub(super) label: String,
+    pub(super) colour: RGBColor,
+    pub(super) dashed: bool,
     /// Shown position per unit of the points' coordinate.
-    length: f64,
-    points: &'a [ProfilePoint],
+    pub(super) length: f64,
+    pub(super) points: &'a [ProfilePoint],
 }
 
 /// One column of panels (V above σ).
-struct Column<'a> {
+pub(super) struct Column<'a> {
     /// Caption above each of its panels.
-    caption: Option<String>,
+    pub(super) caption: Option<String>,
     /// Description of the x axis.
-    x_desc: String,
-    lines: Vec<Line<'a>>,
+    pub(super) x_desc: String,
+    pub(super) lines: Vec<Line<'a>>,
 }
 
 /// Sizes and fonts of one of the two looks.
@@ -109,15 +109,15 @@ struct Look {
 
 /// The profile chart: columns of V and σ panels (or w and pressure) over the coordinate range
 /// `x`.
-struct ProfileChart<'a> {
-    title: &'a str,
+pub(super) struct ProfileChart<'a> {
+    pub(super) title: &'a str,
     /// Range of the points' own coordinate drawn.
-    coords: (f64, f64),
+    pub(super) coords: (f64, f64),
     /// Range of the x axis, shown units.
-    x: (f64, f64),
-    columns: Vec<Column<'a>>,
+    pub(super) x: (f64, f64),
+    pub(super) columns: Vec<Column<'a>>,
     /// How values are shown.
-    units: Units,
+    pub(super) units: Units,
 }
 
 /// V and σ axis descriptions (on the first column).
@@ -357,68 +357,12 @@ pub fn write_profiles_svg(
     write_svg(path, &chart)
 }
 
-/// One set of curves of a comparison chart: the profiles of one solve, in one colour.
-pub(crate) struct Curve<'a> {
-    /// Legend text.
-    pub label: String,
-    /// Line colour.
-    pub colour: RGBColor,
-    /// Dashed instead of solid.
-    pub dashed: bool,
-    /// The solve's profiles (by line name; lines not among them are left out).
-    pub profiles: &'a [Profile],
-}
-
-/// Write a comparison of several solves along several lines, as SVG (`svg`) and PNG (`png`):
-/// one column per entry of `lines` — (line name, caption) — over the half line (coordinate 0 to
-/// 1), one curve per entry of `curves`.
-///
-/// # Errors
-/// [`crate::Error::Io`] if a file cannot be written or drawing fails.
-pub(crate) fn write_profile_comparison(
-    svg: &Path,
-    png: &Path,
-    title: &str,
-    lines: &[(&str, &str)],
-    curves: &[Curve<'_>],
-) -> Result<()> {
-    let columns = lines
-        .iter()
-        .map(|&(name, caption)| Column {
-            caption: Some(caption.to_string()),
-            x_desc: line_coordinate(name).to_string(),
-            lines: curves
-                .iter()
-                .map(|c| Line {
-                    label: c.label.clone(),
-                    colour: c.colour,
-                    dashed: c.dashed,
-                    length: 1.0,
-                    points: c
-                        .profiles
-                        .iter()
-                        .find(|p| p.line == name)
-                        .map_or(&[][..], |p| &p.points),
-                })
-                .collect(),
-        })
-        .collect();
-    let chart = ProfileChart {
-        title,
-        coords: (0.0, 1.0),
-        x: (0.0, 1.0),
-        columns,
-        units: Units::dimensionless(1.0),
-    };
-    write_svg(svg, &chart)?;
-    write_png(png, &chart)
-}
-
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
 
-    fn profiles() -> Vec<Profile> {
+    /// Five lines of made-up profiles (shared with the comparison chart's test).
+    pub(in crate::output::chart) fn profiles() -> Vec<Profile> {
         let names = ["x-axis", "y-axis", "edge-x", "edge-y", "diagonal"];
         names
             .iter()
@@ -548,43 +492,6 @@ mod tests {
         assert!(std::fs::read_to_string(&path)
             .expect("read")
             .contains("<svg"));
-    }
-
-    #[test]
-    fn comparison_is_written_as_svg_and_png() {
-        let dir = tempfile::tempdir().expect("tempdir");
-        let (svg, png) = (dir.path().join("c.svg"), dir.path().join("c.png"));
-        let a = profiles();
-        let b: Vec<Profile> = a[..2].to_vec();
-        let curves = [
-            Curve {
-                label: "first solve".into(),
-                colour: style::SERIES[0],
-                dashed: false,
-                profiles: &a,
-            },
-            Curve {
-                label: "second solve".into(),
-                colour: style::SERIES[1],
-                dashed: true,
-                profiles: &b,
-            },
-        ];
-        let lines = [("x-axis", "centre line"), ("diagonal", "diagonal s = t")];
-        write_profile_comparison(&svg, &png, "Comparison title", &lines, &curves).expect("write");
-        let text = std::fs::read_to_string(&svg).expect("read svg");
-        for needle in [
-            "Comparison title",
-            "centre line",
-            "second solve",
-            "fraction of the half-diagonal",
-        ] {
-            assert!(text.contains(needle), "comparison SVG lacks {needle:?}");
-        }
-        let bytes = std::fs::read(&png).expect("read png");
-        assert!(bytes.starts_with(&[0x89, b'P', b'N', b'G']));
-        // No lines at all: the title only.
-        write_profile_comparison(&svg, &png, "nothing", &[], &curves).expect("no lines");
     }
 
     #[test]

@@ -1,0 +1,215 @@
+//! The command line's arguments (clap): one struct per subcommand. Choices take their words
+//! from the library's lists ([`Choice`]), so a flag and a scene key are spelled alike.
+
+use std::path::PathBuf;
+
+use clap::builder::{PossibleValuesParser, TypedValueParser};
+use clap::{Parser, Subcommand};
+use liftoff::choice::Choice;
+use liftoff::method::{Contact, MethodKind, QpForm, QpSolver, Route};
+use liftoff::model::{ConstraintPoints, SymmetryMode};
+use liftoff::scene::PenaltySpec;
+use liftoff::study::{ConstraintVariants, EpsSweepOptions};
+
+#[derive(Parser)]
+#[command(
+    name = "liftoff",
+    version,
+    about = "Rectangular plates on tensionless foundations: where they lift off, how they deflect, what the soil takes"
+)]
+pub(crate) struct Cli {
+    #[command(subcommand)]
+    pub(crate) command: Command,
+}
+
+#[derive(Subcommand)]
+pub(crate) enum Command {
+    /// Solve a scene file and report deflections, pressures and the contact region.
+    Solve(SolveArgs),
+    /// Run the penalty method and the QP on one assembled model and compare them.
+    Compare(CompareArgs),
+    /// Solve with the QP once and the penalty method at many ε̄: the penalty limit.
+    EpsSweep(EpsSweepArgs),
+    /// Speed against accuracy of both methods over meshes (and ε̄ for the penalty).
+    Tradeoff(TradeoffArgs),
+    /// Sweep the regimes where the methods break (Γ, ε̄, load position, μ, mesh).
+    Stability(StabilityArgs),
+    /// Regenerate the paper's Figs. 3–7 (SVG and PNG), paper.json and paper.md.
+    Paper(PaperArgs),
+    /// Print a bundled example scene (without NAME: list them).
+    Example {
+        /// Name of the example.
+        name: Option<String>,
+    },
+}
+
+/// Options shared by `solve` and `compare` that override the scene file.
+#[derive(clap::Args)]
+pub(crate) struct Overrides {
+    /// Dimensionless penalty ε̄: auto, or a fixed value such as 1e-5 (overrides [solver] penalty).
+    #[arg(long, value_parser = parse_penalty)]
+    pub(crate) penalty: Option<PenaltySpec>,
+    /// Constraint points (overrides [solver] constraint).
+    #[arg(long, value_parser = choice::<ConstraintPoints>())]
+    pub(crate) constraint: Option<ConstraintPoints>,
+    /// Elements over the whole plate, NX,NY (overrides [mesh] elements).
+    #[arg(long, value_parser = parse_mesh)]
+    pub(crate) mesh: Option<[i64; 2]>,
+    /// How the QP is posed: auto (primal on Winkler, schur on the half-space), schur, lifted or
+    /// primal (overrides [solver] qp_form).
+    #[arg(long, value_parser = choice::<QpForm>())]
+    pub(crate) qp_form: Option<QpForm>,
+    /// Which solver runs the QP: auto (clarabel where its form fits and is robust, the
+    /// matrix-free active-set method elsewhere), clarabel, or active-set (overrides [solver]
+    /// qp_solver).
+    #[arg(long, value_parser = choice::<QpSolver>())]
+    pub(crate) qp_solver: Option<QpSolver>,
+    /// How the half-space is held and solved: auto (dense up to 1500 pressure nodes, iterative
+    /// beyond), dense (dense T, direct factorisations) or iterative (T by FFT, conjugate
+    /// gradients) (overrides [solver] route).
+    #[arg(long, value_parser = choice::<Route>())]
+    pub(crate) solver: Option<Route>,
+}
+
+impl Overrides {
+    /// The library's overrides (shared with the Python package) with these flags set.
+    pub(crate) fn library(&self) -> liftoff::scene::Overrides {
+        liftoff::scene::Overrides {
+            penalty: self.penalty.clone(),
+            constraint: self.constraint,
+            mesh: self.mesh,
+            qp_form: self.qp_form,
+            qp_solver: self.qp_solver,
+            solver: self.solver,
+            ..Default::default()
+        }
+    }
+}
+
+#[derive(clap::Args)]
+pub(crate) struct SolveArgs {
+    /// Scene file (TOML), or `example:NAME` for a bundled scene.
+    pub(crate) scene: String,
+    /// Contact law (overrides [solver] contact).
+    #[arg(long, value_parser = choice::<Contact>())]
+    pub(crate) contact: Option<Contact>,
+    /// Method for unbonded contact (overrides [solver] method).
+    #[arg(long, value_parser = choice::<MethodKind>())]
+    pub(crate) method: Option<MethodKind>,
+    #[command(flatten)]
+    pub(crate) overrides: Overrides,
+    /// Symmetry reduction (overrides [mesh] symmetry).
+    #[arg(long, value_parser = choice::<SymmetryMode>())]
+    pub(crate) symmetry: Option<SymmetryMode>,
+    /// Directory for summary.json, CSV tables, plate.vtu and charts.
+    #[arg(long)]
+    pub(crate) out: Option<PathBuf>,
+    /// Print summary.json to stdout instead of the table.
+    #[arg(long)]
+    pub(crate) json: bool,
+}
+
+#[derive(clap::Args)]
+pub(crate) struct CompareArgs {
+    /// Scene file (TOML), or `example:NAME` for a bundled scene.
+    pub(crate) scene: String,
+    #[command(flatten)]
+    pub(crate) overrides: Overrides,
+    /// Directory for compare.json (default: the current directory).
+    #[arg(long, default_value = ".")]
+    pub(crate) out: PathBuf,
+}
+
+/// The flags are the fields of [`EpsSweepOptions`], with its defaults.
+#[derive(clap::Args)]
+pub(crate) struct EpsSweepArgs {
+    /// Scene file (TOML), or `example:NAME`.
+    pub(crate) scene: String,
+    /// Largest ε̄.
+    #[arg(long, default_value_t = EpsSweepOptions::default().from)]
+    pub(crate) from: f64,
+    /// Smallest ε̄.
+    #[arg(long, default_value_t = EpsSweepOptions::default().to)]
+    pub(crate) to: f64,
+    /// Number of ε̄ values (log-spaced).
+    #[arg(long, default_value_t = EpsSweepOptions::default().points)]
+    pub(crate) points: usize,
+    /// Constraint variants: nodal, gauss or both.
+    #[arg(long, value_parser = choice::<ConstraintVariants>(), hide_possible_values = true,
+          default_value_t = EpsSweepOptions::default().constraints)]
+    pub(crate) constraints: ConstraintVariants,
+    /// Directory for eps_sweep.csv and eps_sweep.svg.
+    #[arg(long, default_value = ".")]
+    pub(crate) out: PathBuf,
+}
+
+/// The flags are the fields of [`TradeoffOptions`]; the defaults are its defaults, spelled as
+/// `--help` shows them (a test checks they agree).
+#[derive(clap::Args)]
+pub(crate) struct TradeoffArgs {
+    /// Scene file (TOML), or `example:NAME`.
+    pub(crate) scene: String,
+    /// Elements per side of the whole plate (along x; y follows μ).
+    #[arg(long, value_delimiter = ',', default_value = "8,16,32,64")]
+    pub(crate) meshes: Vec<usize>,
+    /// Penalty values ε̄ for the penalty method.
+    #[arg(long, value_delimiter = ',', default_value = "1e-2,1e-4,1e-6,1e-8")]
+    pub(crate) penalties: Vec<f64>,
+    /// Directory for tradeoff.csv and tradeoff.svg.
+    #[arg(long, default_value = ".")]
+    pub(crate) out: PathBuf,
+}
+
+#[derive(clap::Args)]
+pub(crate) struct StabilityArgs {
+    /// Base scenes (default: the paper's square plate on both foundations).
+    pub(crate) scenes: Vec<String>,
+    /// Directory for stability.csv and the maps.
+    #[arg(long, default_value = ".")]
+    pub(crate) out: PathBuf,
+}
+
+#[derive(clap::Args)]
+pub(crate) struct PaperArgs {
+    /// Directory for the figures, paper.json and paper.md.
+    #[arg(long, default_value = "paper")]
+    pub(crate) out: PathBuf,
+    /// Method for the unbonded solves.
+    #[arg(long, value_parser = choice::<MethodKind>(), default_value = "penalty")]
+    pub(crate) method: MethodKind,
+    /// Reading of the paper's load condition 2: patch (γ from Fig. 6's captions), patch=G, or edge-band.
+    #[arg(long, default_value = "patch")]
+    pub(crate) load2: String,
+    /// Also solve on meshes 2, 4, … up to this many times finer than the paper's.
+    #[arg(long, default_value_t = 1)]
+    pub(crate) refine: usize,
+}
+
+/// A flag whose values are a library [`Choice`]'s names (one list, shared with the scene files
+/// and the Python package).
+fn choice<T: Choice + Clone + Send + Sync>() -> impl TypedValueParser<Value = T> {
+    PossibleValuesParser::new(T::names())
+        .try_map(|name: String| T::from_name(&name).ok_or_else(|| format!("`{name}` is no choice")))
+}
+
+fn parse_penalty(s: &str) -> Result<PenaltySpec, String> {
+    match s.trim() {
+        "auto" => Ok(PenaltySpec::Word("auto".into())),
+        v => v
+            .parse::<f64>()
+            .map(PenaltySpec::Value)
+            .map_err(|_| format!("expected auto or a number such as 1e-5, got `{s}`")),
+    }
+}
+
+fn parse_mesh(s: &str) -> Result<[i64; 2], String> {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    if parts.len() != 2 {
+        return Err(format!("expected NX,NY (two element counts), got `{s}`"));
+    }
+    let n = |p: &str| {
+        p.parse::<i64>()
+            .map_err(|_| format!("`{p}` is not a whole number of elements"))
+    };
+    Ok([n(parts[0])?, n(parts[1])?])
+}
