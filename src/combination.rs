@@ -198,7 +198,7 @@ pub struct Extreme {
 /// Largest and smallest values of one quantity over every combination.
 #[derive(Debug, Clone, Serialize)]
 pub struct QuantityEnvelope {
-    /// Name (w, pressure, uplift, mx, my, mxy, qx, qy).
+    /// Name (w, pressure, uplift, mx, my, mxy, qx, qy, s1_bottom, s1_top).
     pub quantity: &'static str,
     /// Unit of the values.
     pub unit: &'static str,
@@ -271,12 +271,14 @@ pub fn envelope(runs: &[CombinationRun]) -> Option<Envelope> {
         ("pressure", "Pa", "F/L²", |o| &o.report.field.pressure),
         ("uplift", "m", "F·L²/D", |o| &o.report.field.gap),
     ];
-    let element_fields: [(&'static str, &'static str, &'static str, Getter); 5] = [
+    let element_fields: [(&'static str, &'static str, &'static str, Getter); 7] = [
         ("mx", "N·m/m", "F", |o| &o.report.elements.mx),
         ("my", "N·m/m", "F", |o| &o.report.elements.my),
         ("mxy", "N·m/m", "F", |o| &o.report.elements.mxy),
         ("qx", "N/m", "F/L", |o| &o.report.elements.qx),
         ("qy", "N/m", "F/L", |o| &o.report.elements.qy),
+        ("s1_bottom", "Pa", "F/L²", |o| &o.report.elements.bottom.s1),
+        ("s1_top", "Pa", "F/L²", |o| &o.report.elements.top.s1),
     ];
     let point = |get: Getter| -> PointEnvelope {
         let n = get(first_o).len();

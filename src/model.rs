@@ -165,6 +165,15 @@ pub enum Load {
         /// κ D / P, the curvature ∂²V/∂s² of the plate curling freely.
         curvature: f64,
     },
+    /// The self-equilibrating stress of a nonlinear temperature profile at the top and bottom
+    /// faces (no resultant, no moment: it bends nothing and adds to the surface stresses),
+    /// σ L² / P, tension positive.
+    FaceStress {
+        /// At the top face.
+        top: f64,
+        /// At the bottom face.
+        bottom: f64,
+    },
 }
 
 /// A void: over a rectangle the soil surface lies `depth` lower, so the gap there starts at
@@ -227,7 +236,7 @@ impl Load {
                 to,
                 force_per_length,
             } => force_per_length * (to[0] - from[0]).hypot(to[1] - from[1]),
-            Load::Temperature { .. } => 0.0,
+            Load::Temperature { .. } | Load::FaceStress { .. } => 0.0,
         }
     }
 
@@ -275,6 +284,7 @@ impl Load {
                 }
             }
             Load::Temperature { curvature } => Load::Temperature { curvature },
+            Load::FaceStress { top, bottom } => Load::FaceStress { top, bottom },
         }
     }
 
@@ -327,6 +337,10 @@ impl Load {
             }
             (Load::Temperature { curvature: a }, Load::Temperature { curvature: b }) => {
                 (a - b).abs() <= tol * a.abs().max(b.abs())
+            }
+            (Load::FaceStress { top: a, bottom: b }, Load::FaceStress { top: c, bottom: d }) => {
+                (a - c).abs() <= tol * a.abs().max(c.abs())
+                    && (b - d).abs() <= tol * b.abs().max(d.abs())
             }
             _ => false,
         }
@@ -436,6 +450,20 @@ impl Model {
                 _ => 0.0,
             })
             .sum()
+    }
+
+    /// The nonlinear temperature stress [top, bottom] of the face-stress loads, σ L² / P.
+    pub fn face_stress(&self) -> [f64; 2] {
+        self.loads.iter().fold([0.0, 0.0], |acc, l| match l {
+            Load::FaceStress { top, bottom } => [acc[0] + top, acc[1] + bottom],
+            _ => acc,
+        })
+    }
+
+    /// The plate's thickness over L, from Δ = H²/(6χ(1 − ν)μL²) with χ = 5/6.
+    pub fn thickness_ratio(&self) -> f64 {
+        let g = &self.groups;
+        (5.0 * (1.0 - g.nu) * g.mu * g.delta).sqrt()
     }
 
     /// True when loads, voids and zones are all unchanged by the mirror about x = 0 (`about_x`)

@@ -349,7 +349,7 @@ pub fn load_vector(mesh: &Mesh, dofs: &DofMap, loads: &[Load]) -> Vec<f64> {
     };
     let forces: Vec<Load> = loads
         .iter()
-        .filter(|l| !matches!(l, Load::Temperature { .. }))
+        .filter(|l| !matches!(l, Load::Temperature { .. } | Load::FaceStress { .. }))
         .copied()
         .collect();
     load_vector_with(mesh, dofs, &section, &forces)
@@ -412,6 +412,8 @@ pub fn load_vector_with(mesh: &Mesh, dofs: &DofMap, section: &Section, loads: &[
                     }
                 }
             }
+            // A face stress bends nothing: it has no nodal load.
+            Load::FaceStress { .. } => {}
             Load::Temperature { curvature } => {
                 let m = plate::bending_constitutive(section)
                     * nalgebra::Vector3::new(curvature, curvature, 0.0);

@@ -124,6 +124,9 @@ pub struct Summary {
     pub penalty_stages: Vec<PenaltyStage>,
     /// The bearing check (present when the scene gives an allowable pressure).
     pub bearing: Option<crate::post::Bearing>,
+    /// The largest tensile principal stress at the bottom and the top face, where and in which
+    /// direction (Pa; P/L² in a dimensionless scene), and the thickness they were taken with.
+    pub stresses: crate::post::stress::StressSummary,
     /// Modelling notes.
     pub notes: Vec<String>,
 }
@@ -191,6 +194,7 @@ impl Summary {
             history: sol.history.clone(),
             penalty_stages: sol.info.penalty_stages.clone(),
             bearing: report.bearing,
+            stresses: report.stress,
             notes: ops.notes.iter().chain(&sol.info.notes).cloned().collect(),
         }
     }

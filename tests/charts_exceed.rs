@@ -26,6 +26,8 @@ fn plate(lx: f64, ly: f64, nx: usize, ny: usize, f: impl Fn(f64, f64) -> f64) ->
         v: vec![0.0; n],
         sigma: vec![0.0; n],
         contact: vec![true; n],
+        s1_bottom: vec![0.0; n],
+        s1_top: vec![0.0; n],
     };
     for j in 0..=ny {
         for i in 0..=nx {

@@ -108,7 +108,8 @@ fn bundled_examples_run_and_write_their_files() {
         }
         let header = std::fs::read_to_string(out.join("nodes.csv")).expect("read");
         assert!(
-            header.starts_with("x,y,s,t,w,psi_x,psi_y,pressure,gap,V,sigma,contact"),
+            header
+                .starts_with("x,y,s,t,w,psi_x,psi_y,pressure,gap,V,sigma,s1_bottom,s1_top,contact"),
             "{name}: nodes.csv columns"
         );
         let qp = liftoff(&[

@@ -221,7 +221,16 @@ fn fields<'py>(py: Python<'py>, r: &liftoff::post::Report) -> PyResult<Bound<'py
     let e = &r.elements;
     // The columns of nodes.csv and elements.csv, by the same names and in the same order.
     let contact: Vec<f64> = f.contact.iter().map(|&c| f64::from(u8::from(c))).collect();
-    let mut nodal: Vec<(&str, &[f64])> = f.columns().to_vec();
+    // The faces' stresses recovered at the nodes keep their element-centre twins' names free.
+    let mut nodal: Vec<(&str, &[f64])> = f
+        .columns()
+        .iter()
+        .map(|&(name, v)| match name {
+            "s1_bottom" => ("s1_bottom_nodes", v),
+            "s1_top" => ("s1_top_nodes", v),
+            _ => (name, v),
+        })
+        .collect();
     nodal.push(("contact", &contact));
     let element: Vec<(&str, &[f64])> = e
         .columns()

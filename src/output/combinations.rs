@@ -189,6 +189,19 @@ fn stage_envelope_maps(st: &mut Staged, c: &Combinations, env: &Envelope) -> Res
             ));
         }
     }
+    // The design stresses: the largest tension at the bottom and at the top over every
+    // combination.
+    for (m, face) in [("s1_bottom", "bottom"), ("s1_top", "top")] {
+        if let Some(e) = pick(&env.elements, m) {
+            maps.push((
+                format!("stress-{face}-max"),
+                format!("largest principal stress at the {face}"),
+                e.max,
+                units.stress(),
+                false,
+            ));
+        }
+    }
     for (file, what, values, scale, with_limit) in maps {
         let svg = st.path(&format!("envelope-{file}.svg"));
         let png = st.path(&format!("envelope-{file}.png"));
@@ -343,7 +356,9 @@ pub fn combinations_table(title: &str, c: &Combinations, files: Option<(usize, &
         let _ = writeln!(s, "  envelope (value, where, governing combination):");
         for q in &env.quantities {
             // The table reads in engineering units; the files keep SI.
+            let stress = q.quantity.starts_with("s1_");
             let (factor, unit) = match q.unit {
+                "Pa" if stress => (1e-6, "MPa"),
                 "m" => (1e3, "mm"),
                 "Pa" => (1e-3, "kPa"),
                 "N·m/m" => (1e-3, "kN·m/m"),

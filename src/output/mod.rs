@@ -106,8 +106,9 @@ impl Staged {
 }
 
 /// Write the standard result set of one solve into `dir`: summary.json, nodes.csv,
-/// elements.csv, profiles.csv, plate.vtu, profiles.svg, contact.svg and contact.png; the
-/// contact map shows the model's voids, zones, line loads and bearing limit.
+/// elements.csv, profiles.csv, plate.vtu, profiles.svg, contact.svg, contact.png and the map of
+/// the bottom face's largest principal stress (stress-bottom.svg, .png); the contact map shows
+/// the model's voids, zones, line loads and bearing limit.
 pub fn write_all(
     dir: &Path,
     model: &crate::model::Model,
@@ -145,5 +146,29 @@ pub fn stage_all(
     let svg = st.path(&format!("{prefix}contact.svg"));
     let png = st.path(&format!("{prefix}contact.png"));
     chart::write_contact_map(&svg, &png, &report.field, &title, &units, overlay)?;
+    // The map a pavement or floor designer reads: the largest principal stress at the bottom
+    // face, element by element (tension positive).
+    let svg = st.path(&format!("{prefix}stress-bottom.svg"));
+    let png = st.path(&format!("{prefix}stress-bottom.png"));
+    let peak = &summary.stresses.bottom;
+    let stress = units.stress();
+    chart::write_field_map(
+        &svg,
+        &png,
+        &report.field,
+        &chart::MapValues {
+            values: &report.elements.bottom.s1,
+            name: "σ₁ bottom",
+            scale: stress,
+        },
+        &format!(
+            "{} — largest principal stress at the bottom, max {:.3} {}",
+            summary.title,
+            stress.apply(peak.value),
+            stress.unit
+        ),
+        &units,
+        overlay,
+    )?;
     Ok(())
 }

@@ -19,7 +19,7 @@ fn csv_err(path: &Path, e: csv::Error) -> Error {
     }
 }
 
-/// nodes.csv: x,y,s,t,w,psi_x,psi_y,pressure,gap,V,sigma,contact (whole plate).
+/// nodes.csv: x,y,s,t,w,psi_x,psi_y,pressure,gap,V,sigma,s1_bottom,s1_top,contact (whole plate).
 pub fn write_nodes(path: &Path, f: &FullField) -> Result<()> {
     let columns = f.columns();
     let mut header: Vec<&str> = columns.iter().map(|(name, _)| *name).collect();
@@ -35,7 +35,7 @@ pub fn write_nodes(path: &Path, f: &FullField) -> Result<()> {
     write_csv(path, &header, rows)
 }
 
-/// elements.csv: x,y,mx,my,mxy,qx,qy at element centres.
+/// elements.csv: x,y,mx,my,mxy,qx,qy and the faces' stresses (sx_bottom … angle_top) at element centres.
 pub fn write_elements(path: &Path, e: &ElementField) -> Result<()> {
     let columns = e.columns();
     let header: Vec<&str> = columns.iter().map(|(name, _)| *name).collect();
@@ -97,6 +97,30 @@ fn text(lines: Vec<String>) -> String {
 
 /// The sign convention, printed under every solve table.
 pub const SIGN_CONVENTION: &str = "Sign convention: deflection w and loads are positive downward (into the soil), pressure is positive in compression, and a positive gap means the plate has lifted off the soil.";
+
+/// The surface-stress line of the solve table: the largest tension at the bottom and the top
+/// face, where, and σ₁'s direction.
+fn stress_line(s: &Summary, units: &Units) -> String {
+    let st = units.stress();
+    let at = |p: &crate::post::stress::PeakTension| {
+        if units.is_physical() {
+            format!("({:.2}, {:.2}) m", p.x, p.y)
+        } else {
+            format!("(s, t) = ({:.3}, {:.3})", p.x, p.y / s.dimensionless.mu)
+        }
+    };
+    let (b, t) = (&s.stresses.bottom, &s.stresses.top);
+    format!(
+        "  stress     : bottom max tension {:.3} {u} at {} ({:.0}°), top {:.3} {u} at {} ({:.0}°); σ = ±6m/H², tension positive",
+        st.apply(b.value),
+        at(b),
+        b.angle,
+        st.apply(t.value),
+        at(t),
+        t.angle,
+        u = st.unit
+    )
+}
 
 /// The table of `liftoff solve`: model, method, status, penalty history, timings, results —
 /// in engineering units for a scene given in SI (deflections in mm, pressure in kPa, moments in
@@ -261,6 +285,7 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
             mom.apply(s.moments.my[1]),
             u = mom.unit
         ));
+        l.push(stress_line(s, &units));
         l.push(format!(
             "  resultant  : load {:.2} {u}, reaction {:.2} {u} (relative error {:.1e})",
             force.apply(r.load),
@@ -289,6 +314,7 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
             "  V          : max {:.5e}, centre {:.5e}, corner {:.5e}  (V = D w / (P L²))",
             s.V_max, s.V_center, s.V_corner
         ));
+        l.push(stress_line(s, &units));
         l.push(format!(
             "  contact    : {:.1} % of the plate, radius {:.3} L, extent x {:.3}, y {:.3}, diagonal {:.3}",
             100.0 * s.contact_fraction,

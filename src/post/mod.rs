@@ -11,6 +11,7 @@
 
 pub mod boundary;
 pub mod exceed;
+pub mod stress;
 
 use serde::Serialize;
 
@@ -22,6 +23,7 @@ use crate::model::{Model, Physical};
 use crate::operators::Operators;
 use crate::plate::{centre_resultants, ElementVector};
 use crate::solve::Solution;
+use stress::{FaceStress, StressSummary};
 
 /// A node is in contact where its pressure exceeds this fraction of the peak pressure: contact
 /// is where the soil carries load. QP solutions leave ~1e-11 of the peak on lifted nodes and
@@ -68,6 +70,11 @@ pub struct FullField {
     pub sigma: Vec<f64>,
     /// Pressure above [`CONTACT_THRESHOLD`] of the peak.
     pub contact: Vec<bool>,
+    /// Largest principal stress at the bottom face, recovered at the nodes (the mean of the
+    /// stress components of the elements around a node, then its principal value).
+    pub s1_bottom: Vec<f64>,
+    /// Largest principal stress at the top face, recovered at the nodes.
+    pub s1_top: Vec<f64>,
 }
 
 impl FullField {
@@ -78,7 +85,7 @@ impl FullField {
 
     /// The numeric per-node columns of nodes.csv in its order, by name (node i + j (nx + 1));
     /// `contact` is the one boolean column beside them.
-    pub fn columns(&self) -> [(&'static str, &[f64]); 11] {
+    pub fn columns(&self) -> [(&'static str, &[f64]); 13] {
         [
             ("x", &self.x),
             ("y", &self.y),
@@ -91,6 +98,8 @@ impl FullField {
             ("gap", &self.gap),
             ("V", &self.v),
             ("sigma", &self.sigma),
+            ("s1_bottom", &self.s1_bottom),
+            ("s1_top", &self.s1_top),
         ]
     }
 
@@ -128,12 +137,17 @@ pub struct ElementField {
     pub qx: Vec<f64>,
     /// Transverse shear force on y faces, per unit length.
     pub qy: Vec<f64>,
+    /// Stresses at the bottom (soil-side) face.
+    pub bottom: FaceStress,
+    /// Stresses at the top face.
+    pub top: FaceStress,
 }
 
 impl ElementField {
     /// The per-element columns of elements.csv in its order, by name (element ie + je nx).
-    pub fn columns(&self) -> [(&'static str, &[f64]); 7] {
-        [
+    pub fn columns(&self) -> Vec<(&'static str, &[f64])> {
+        let (b, t) = (&self.bottom, &self.top);
+        vec![
             ("x", &self.x),
             ("y", &self.y),
             ("mx", &self.mx),
@@ -141,6 +155,18 @@ impl ElementField {
             ("mxy", &self.mxy),
             ("qx", &self.qx),
             ("qy", &self.qy),
+            ("sx_bottom", &b.sx),
+            ("sy_bottom", &b.sy),
+            ("sxy_bottom", &b.sxy),
+            ("s1_bottom", &b.s1),
+            ("s2_bottom", &b.s2),
+            ("angle_bottom", &b.angle),
+            ("sx_top", &t.sx),
+            ("sy_top", &t.sy),
+            ("sxy_top", &t.sxy),
+            ("s1_top", &t.s1),
+            ("s2_top", &t.s2),
+            ("angle_top", &t.angle),
         ]
     }
 }
@@ -254,6 +280,8 @@ pub struct Report {
     pub complementarity: Complementarity,
     /// The bearing check, when the scene gives an allowable pressure.
     pub bearing: Option<Bearing>,
+    /// The largest tension at the bottom and top faces, and where.
+    pub stress: StressSummary,
 }
 
 /// The soil pressure against what the soil may take.
@@ -289,6 +317,29 @@ fn scales(model: &Model) -> Physical {
     })
 }
 
+/// A face's largest principal stress at the nodes: the element components averaged over the
+/// elements around each node, then their principal value.
+fn recover_principal(mesh: &Mesh, face: &FaceStress) -> Vec<f64> {
+    let n = mesh.n_nodes();
+    let mut sum = vec![[0.0; 3]; n];
+    let mut count = vec![0u32; n];
+    for e in 0..mesh.n_elements() {
+        for &node in &mesh.element_nodes(e) {
+            sum[node][0] += face.sx[e];
+            sum[node][1] += face.sy[e];
+            sum[node][2] += face.sxy[e];
+            count[node] += 1;
+        }
+    }
+    sum.iter()
+        .zip(&count)
+        .map(|(s, &c)| {
+            let c = f64::from(c.max(1));
+            stress::principal(s[0] / c, s[1] / c, s[2] / c).0
+        })
+        .collect()
+}
+
 /// Build the report of a solution.
 pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
     let mesh = &ops.mesh;
@@ -320,6 +371,8 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
         v: Vec::with_capacity(n_full),
         sigma: Vec::with_capacity(n_full),
         contact: Vec::with_capacity(n_full),
+        s1_bottom: Vec::new(),
+        s1_top: Vec::new(),
     };
     // Unit-system nodal dofs over the whole plate (for element resultants).
     let mut full_u = vec![[0.0; 3]; n_full];
@@ -355,6 +408,10 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
 
     // Element resultants on the whole plate; D_b κ₀ of the temperature loads (D = 1).
     let thermal_moment = (1.0 + ops.section.poisson) * model.thermal_curvature();
+    // Surface stresses: ±6m/H² in the unit system (P/L²), then to the scene's units.
+    let thickness = model.thickness_ratio();
+    let eigen = model.face_stress();
+    let stress_scale = ph.pressure();
     let full_mesh = Mesh::new(2.0, 2.0 * mu, [nx, ny], false, false);
     let mut elements = ElementField::default();
     for e in 0..full_mesh.n_elements() {
@@ -377,7 +434,26 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
         elements.mxy.push(r[2] * ph.moment());
         elements.qx.push(r[3] * ph.shear());
         elements.qy.push(r[4] * ph.shear());
+        let (b, t) = stress::face_states([r[0], r[1], r[2]], thickness, eigen);
+        let s = stress_scale;
+        elements.bottom.push(b[0] * s, b[1] * s, b[2] * s);
+        elements.top.push(t[0] * s, t[1] * s, t[2] * s);
     }
+    field.s1_bottom = recover_principal(&full_mesh, &elements.bottom);
+    field.s1_top = recover_principal(&full_mesh, &elements.top);
+    let peak_or_zero = |face: &FaceStress| {
+        stress::peak(face, &elements.x, &elements.y).unwrap_or(stress::PeakTension {
+            value: 0.0,
+            angle: 0.0,
+            x: 0.0,
+            y: 0.0,
+        })
+    };
+    let stress = StressSummary {
+        bottom: peak_or_zero(&elements.bottom),
+        top: peak_or_zero(&elements.top),
+        thickness: thickness * ph.half_length,
+    };
 
     let profiles = profiles(&field);
     let v_max = field.v.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
@@ -446,6 +522,7 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
         }
     });
     Report {
+        stress,
         bearing,
         pressure_max,
         moments,
@@ -552,6 +629,8 @@ pub(crate) mod test_fixtures {
             v: vec![],
             sigma: vec![],
             contact: vec![],
+            s1_bottom: vec![],
+            s1_top: vec![],
         };
         for j in 0..=ny {
             for i in 0..=nx {
@@ -571,6 +650,8 @@ pub(crate) mod test_fixtures {
                 f.v.push(0.1 * sigma);
                 f.sigma.push(sigma.max(0.0));
                 f.contact.push(sigma > 0.0);
+                f.s1_bottom.push(2.0 * sigma);
+                f.s1_top.push(-sigma);
             }
         }
         let mut e = ElementField::default();
@@ -584,6 +665,8 @@ pub(crate) mod test_fixtures {
                 e.mxy.push(-k);
                 e.qx.push(0.5 * k);
                 e.qy.push(0.25 * k);
+                e.bottom.push(6.0 * k, 12.0 * k, -6.0 * k);
+                e.top.push(-6.0 * k, -12.0 * k, 6.0 * k);
             }
         }
         (f, e)

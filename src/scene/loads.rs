@@ -329,7 +329,14 @@ pub(super) fn normalise(
     };
     let mut loads = raw;
     for (k, l) in loads.iter_mut() {
+        if let Load::FaceStress { top, bottom } = l {
+            // Stresses of a temperature profile, raw σ L² in N: finite once finite in Pa.
+            *top /= p_force;
+            *bottom /= p_force;
+            continue;
+        }
         let (v, name) = match l {
+            Load::FaceStress { .. } => continue,
             Load::Point { force, .. } => (force, "force"),
             Load::Patch { pressure, .. } => (pressure, "pressure"),
             Load::Line {

@@ -295,6 +295,10 @@ fn scale(load: Load, f: f64) -> Load {
         Load::Temperature { curvature } => Load::Temperature {
             curvature: curvature * f,
         },
+        Load::FaceStress { top, bottom } => Load::FaceStress {
+            top: top * f,
+            bottom: bottom * f,
+        },
     }
 }
 

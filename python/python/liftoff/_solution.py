@@ -8,9 +8,12 @@ from typing import Any, Dict, List, Optional
 import numpy as np
 
 #: Nodal fields, each an array of shape (ny + 1, nx + 1) over the whole plate (row j is y_j).
-NODAL = ("x", "y", "s", "t", "w", "psi_x", "psi_y", "pressure", "gap", "V", "sigma", "contact")
+NODAL = ("x", "y", "s", "t", "w", "psi_x", "psi_y", "pressure", "gap", "V", "sigma",
+         "s1_bottom_nodes", "s1_top_nodes", "contact")
 #: Element-centre fields, each of shape (ny, nx).
-ELEMENT = ("element_x", "element_y", "mx", "my", "mxy", "qx", "qy")
+ELEMENT = ("element_x", "element_y", "mx", "my", "mxy", "qx", "qy", "sx_bottom", "sy_bottom",
+           "sxy_bottom", "s1_bottom", "s2_bottom", "angle_bottom", "sx_top", "sy_top", "sxy_top",
+           "s1_top", "s2_top", "angle_top")
 
 
 def _array(raw: bytes, shape: Optional[tuple]) -> np.ndarray:
@@ -27,9 +30,15 @@ class Solution:
     - nodal, shape ``(ny + 1, nx + 1)``: ``x``, ``y`` (coordinates), ``s``, ``t`` (x/L, y/μL),
       ``w`` (deflection, downward), ``psi_x``, ``psi_y`` (rotations), ``pressure`` (contact
       pressure, compression positive), ``gap`` (≥ 0 where the plate lifted), ``V`` and
-      ``sigma`` (the paper's dimensionless deflection and pressure), ``contact`` (bool);
+      ``sigma`` (the paper's dimensionless deflection and pressure), ``s1_bottom_nodes``,
+      ``s1_top_nodes`` (the faces' largest principal stress recovered at the nodes),
+      ``contact`` (bool);
     - element centres, shape ``(ny, nx)``: ``element_x``, ``element_y``, ``mx``, ``my``,
-      ``mxy`` (moments per unit length, positive: tension on the soil side), ``qx``, ``qy``.
+      ``mxy`` (moments per unit length, positive: tension on the soil side), ``qx``, ``qy``,
+      and the surface stresses of the bottom and top faces (σ = ±6m/H² plus a nonlinear
+      temperature profile's own stress; tension positive): ``sx_bottom``, ``sy_bottom``,
+      ``sxy_bottom``, ``s1_bottom``, ``s2_bottom`` (principal), ``angle_bottom`` (direction of
+      σ₁ from x, degrees), and the same ``…_top``.
 
     Every key of the summary (``liftoff solve --json``; README "summary.json") is an attribute:
     ``V_max``, ``V_center``, ``V_corner``, ``w_max``, ``pressure_max``, ``contact_fraction``,

@@ -140,6 +140,19 @@ impl Units {
         )
     }
 
+    /// Surface stresses (ElementField bottom, top; FullField s1_bottom, s1_top): MPa; in units
+    /// of P/L².
+    pub fn stress(&self) -> Scale {
+        self.pick(
+            "MPa",
+            1e-6,
+            Scale {
+                unit: "P/L²",
+                factor: 1.0,
+            },
+        )
+    }
+
     /// Shear forces per unit length (ElementField qx, qy): kN/m; in units of P/L.
     pub fn shear(&self) -> Scale {
         self.pick(

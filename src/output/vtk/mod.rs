@@ -72,10 +72,12 @@ impl Scalar for u8 {
 /// * Cells: one `VTK_QUAD` per element, nodes (i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1)
 ///   (counter-clockwise), cell index ie + je nx.
 /// * Point data: `w`, `psi_x`, `psi_y`, `pressure`, `gap`, `V`, `sigma` (active scalars),
+///   `s1_bottom`, `s1_top` (the faces' largest principal stresses recovered at the nodes),
 ///   `contact` (Int32, 1 in contact, 0 lifted) and the vector `displacement` = (0, 0, −w)
 ///   (active vectors; w is positive downward, so "Warp By Vector" shows the deflected shape
 ///   with z up).
-/// * Cell data: `mx` (active scalars), `my`, `mxy`, `qx`, `qy` from `elements`. If `elements`
+/// * Cell data: `mx` (active scalars), `my`, `mxy`, `qx`, `qy` and the bottom and top faces'
+///   stresses (`sx_bottom`, …, `s1_top`, `angle_top`) from `elements`. If `elements`
 ///   holds no values at all (e.g. `ElementField::default()`), the cell data are omitted.
 ///
 /// The file is always written as XML whatever the extension of `path`; use `.vtu`.
@@ -120,7 +122,7 @@ fn check(path: &Path, field: &FullField, elements: &ElementField) -> Result<Size
         ));
     };
 
-    let nodal: [(&str, usize); 12] = [
+    let nodal: [(&str, usize); 14] = [
         ("x", field.x.len()),
         ("y", field.y.len()),
         ("s", field.s.len()),
@@ -132,6 +134,8 @@ fn check(path: &Path, field: &FullField, elements: &ElementField) -> Result<Size
         ("gap", field.gap.len()),
         ("V", field.v.len()),
         ("sigma", field.sigma.len()),
+        ("s1_bottom", field.s1_bottom.len()),
+        ("s1_top", field.s1_top.len()),
         ("contact", field.contact.len()),
     ];
     if let Some((name, len)) = nodal.iter().find(|(_, len)| *len != n_nodes) {
@@ -168,15 +172,14 @@ fn check(path: &Path, field: &FullField, elements: &ElementField) -> Result<Size
     })
 }
 
-/// The cell data arrays, the active scalars first.
-fn cell_arrays(elements: &ElementField) -> [(&'static str, &[f64]); 5] {
-    [
-        ("mx", &elements.mx),
-        ("my", &elements.my),
-        ("mxy", &elements.mxy),
-        ("qx", &elements.qx),
-        ("qy", &elements.qy),
-    ]
+/// The cell data arrays, the active scalars (`mx`) first: the columns of elements.csv but the
+/// centre coordinates (moments, shear forces, the faces' stresses).
+fn cell_arrays(elements: &ElementField) -> Vec<(&'static str, &[f64])> {
+    elements
+        .columns()
+        .into_iter()
+        .filter(|(name, _)| !matches!(*name, "x" | "y"))
+        .collect()
 }
 
 /// The whole `.vtu` document; the arrays have the lengths in `sizes`.
@@ -219,7 +222,7 @@ fn piece<W: Write>(
     elements: &ElementField,
     sizes: &Sizes,
 ) -> io::Result<()> {
-    let nodal: [(&str, &[f64]); 7] = [
+    let nodal: [(&str, &[f64]); 9] = [
         ("w", &field.w),
         ("psi_x", &field.psi_x),
         ("psi_y", &field.psi_y),
@@ -227,6 +230,8 @@ fn piece<W: Write>(
         ("gap", &field.gap),
         ("V", &field.v),
         ("sigma", &field.sigma),
+        ("s1_bottom", &field.s1_bottom),
+        ("s1_top", &field.s1_top),
     ];
     xml.create_element("PointData")
         .with_attributes([("Scalars", "sigma"), ("Vectors", "displacement")])

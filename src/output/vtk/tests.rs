@@ -159,6 +159,8 @@ fn vtu_round_trips() {
             "gap",
             "V",
             "sigma",
+            "s1_bottom",
+            "s1_top",
             "contact",
             "displacement"
         ]
@@ -171,6 +173,8 @@ fn vtu_round_trips() {
         ("gap", &f.gap),
         ("V", &f.v),
         ("sigma", &f.sigma),
+        ("s1_bottom", &f.s1_bottom),
+        ("s1_top", &f.s1_top),
     ] {
         let a = vtu.array("PointData", name);
         assert_eq!(
@@ -195,7 +199,35 @@ fn vtu_round_trips() {
     assert_eq!(f64s(disp), want, "vtu: displacement = (0, 0, -w)");
 
     let cell = vtu.arrays_in("CellData");
-    assert_eq!(names(&cell), ["mx", "my", "mxy", "qx", "qy"]);
+    assert_eq!(
+        names(&cell),
+        [
+            "mx",
+            "my",
+            "mxy",
+            "qx",
+            "qy",
+            "sx_bottom",
+            "sy_bottom",
+            "sxy_bottom",
+            "s1_bottom",
+            "s2_bottom",
+            "angle_bottom",
+            "sx_top",
+            "sy_top",
+            "sxy_top",
+            "s1_top",
+            "s2_top",
+            "angle_top"
+        ]
+    );
+    for (name, want) in [("s1_bottom", &e.bottom.s1), ("angle_top", &e.top.angle)] {
+        assert_eq!(
+            &f64s(vtu.array("CellData", name)),
+            want,
+            "vtu: cell array {name}"
+        );
+    }
     for (name, want) in [
         ("mx", &e.mx),
         ("my", &e.my),
@@ -269,7 +301,7 @@ fn vtu_without_elements_and_bad_sizes() {
         "vtu: empty cell data omitted"
     );
     assert!(vtu.arrays_in("CellData").is_empty());
-    assert_eq!(vtu.arrays_in("PointData").len(), 9);
+    assert_eq!(vtu.arrays_in("PointData").len(), 11);
 
     // Bad sizes are rejected before the file is created.
     let invalid = |r: Result<()>| match r {
