@@ -109,16 +109,23 @@ fn stress_line(s: &Summary, units: &Units) -> String {
             format!("(s, t) = ({:.3}, {:.3})", p.x, p.y / s.dimensionless.mu)
         }
     };
-    let (b, t) = (&s.stresses.bottom, &s.stresses.top);
+    let face = |p: &crate::post::stress::PeakTension| {
+        if p.value > 0.0 {
+            format!(
+                "{:.3} {} at {} ({:.0}°)",
+                st.apply(p.value),
+                st.unit,
+                at(p),
+                p.angle
+            )
+        } else {
+            format!("no tension (σ₁ ≤ {:.3} {})", st.apply(p.value), st.unit)
+        }
+    };
     format!(
-        "  stress     : bottom max tension {:.3} {u} at {} ({:.0}°), top {:.3} {u} at {} ({:.0}°); σ = ±6m/H², tension positive",
-        st.apply(b.value),
-        at(b),
-        b.angle,
-        st.apply(t.value),
-        at(t),
-        t.angle,
-        u = st.unit
+        "  stress     : bottom max tension {}, top {}; σ = ±6m/H², tension positive",
+        face(&s.stresses.bottom),
+        face(&s.stresses.top)
     )
 }
 

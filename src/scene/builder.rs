@@ -121,17 +121,11 @@ impl ModelBuilder {
         pressure: Option<f64>,
     ) -> Self {
         self.file.load.push(LoadSpec {
-            kind,
             x,
             y,
             force,
             pressure,
-            from: None,
-            to: None,
-            force_per_length: None,
-            difference: None,
-            curvature: None,
-            case: None,
+            ..LoadSpec::new(kind)
         });
         self
     }

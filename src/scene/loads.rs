@@ -4,6 +4,7 @@
 
 use super::numbers::finite_positive;
 use super::spec::{Coord, LoadKind, LoadSpec};
+use super::temperature::Thermal;
 use super::SceneFile;
 use crate::error::{Error, Result};
 use crate::foundation::FoundationKind;
@@ -16,14 +17,6 @@ use crate::model::{Groups, Load, LoadReference, Void, Zone};
 pub(super) struct RawLoad {
     pub(super) load: Load,
     pub(super) case: String,
-}
-
-/// What turns SI temperature differences into curvatures: α (if given), H and D.
-#[derive(Debug, Clone, Copy)]
-pub(super) struct Thermal {
-    pub(super) alpha: Option<f64>,
-    pub(super) thickness: f64,
-    pub(super) rigidity: f64,
 }
 
 /// Name of the case of loads that name none.
@@ -120,16 +113,21 @@ pub(super) fn raw_loads(
                 Ok(())
             }
         };
-        let kind_name = match l.kind {
-            LoadKind::Point => "point",
-            LoadKind::Patch => "patch",
-            LoadKind::Uniform => "uniform",
-            LoadKind::Line => "line",
-            LoadKind::Temperature => "temperature",
-        };
+        let kind_name = l.kind.name();
+        if let Some(key) = l.foreign_key() {
+            forbid(key, true, kind_name)?;
+        }
         // Fields that belong to other kinds.
         let line = matches!(l.kind, LoadKind::Line);
-        let temp = matches!(l.kind, LoadKind::Temperature);
+        let temp = matches!(
+            l.kind,
+            LoadKind::Temperature
+                | LoadKind::TemperatureProfile
+                | LoadKind::Moisture
+                | LoadKind::BuiltInCurl
+                | LoadKind::Axle
+                | LoadKind::Gear
+        );
         forbid("from", l.from.is_some() && !line, kind_name)?;
         forbid("to", l.to.is_some() && !line, kind_name)?;
         forbid(
@@ -139,13 +137,49 @@ pub(super) fn raw_loads(
         )?;
         forbid("difference", l.difference.is_some() && !temp, kind_name)?;
         forbid("curvature", l.curvature.is_some() && !temp, kind_name)?;
-        if line || temp {
+        if line || matches!(l.kind, LoadKind::Temperature) {
             forbid("x", l.x.is_some(), kind_name)?;
             forbid("y", l.y.is_some(), kind_name)?;
             forbid("force", l.force.is_some(), kind_name)?;
             forbid("pressure", l.pressure.is_some(), kind_name)?;
         }
+        let case = match &l.case {
+            Some(c) if c.trim().is_empty() => {
+                return Err(Error::invalid(
+                    field("case"),
+                    "is empty: name the case (e.g. \"dead\") or leave it out for \"default\"",
+                ))
+            }
+            Some(c) => c.trim().to_string(),
+            None => DEFAULT_CASE.to_string(),
+        };
         let load = match l.kind {
+            LoadKind::TemperatureProfile
+            | LoadKind::Moisture
+            | LoadKind::BuiltInCurl
+            | LoadKind::Axle
+            | LoadKind::Gear => {
+                let produced = match l.kind {
+                    LoadKind::Axle | LoadKind::Gear => super::vehicles::patches(
+                        l,
+                        k,
+                        physical.is_some(),
+                        &super::vehicles::Geometry {
+                            scale_xy,
+                            half: [hx, hy],
+                            area_scale,
+                        },
+                    )?,
+                    _ => super::temperature::loads(l, k, thermal, physical.map(|p| p.0))?,
+                };
+                for load in produced {
+                    loads.push(RawLoad {
+                        load,
+                        case: case.clone(),
+                    });
+                }
+                continue;
+            }
             LoadKind::Point => {
                 forbid("pressure", l.pressure.is_some(), "point")?;
                 Load::Point {
@@ -229,16 +263,6 @@ pub(super) fn raw_loads(
                 };
                 Load::Temperature { curvature }
             }
-        };
-        let case = match &l.case {
-            Some(c) if c.trim().is_empty() => {
-                return Err(Error::invalid(
-                    field("case"),
-                    "is empty: name the case (e.g. \"dead\") or leave it out for \"default\"",
-                ))
-            }
-            Some(c) => c.trim().to_string(),
-            None => DEFAULT_CASE.to_string(),
         };
         loads.push(RawLoad { load, case });
     }

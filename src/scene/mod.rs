@@ -12,12 +12,15 @@
 //! * [`builder`]: [`Model::builder`], the same validation from Rust without writing TOML.
 
 pub mod builder;
+mod load_spec;
 mod loads;
 mod numbers;
 pub mod overrides;
 pub mod soils;
 pub mod spec;
+pub mod temperature;
 pub mod validate;
+pub mod vehicles;
 
 pub use builder::ModelBuilder;
 pub use loads::{DEFAULT_CASE, MAX_VOID_DEPTH_RATIO};

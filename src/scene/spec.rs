@@ -210,69 +210,7 @@ pub struct DimensionlessSpec {
     pub zone: Vec<ZoneSpec>,
 }
 
-/// A coordinate: a number (point loads) or a range [lo, hi] (patch loads).
-#[derive(Debug, Clone, Copy, Deserialize)]
-#[serde(untagged)]
-pub enum Coord {
-    /// A single value.
-    Value(f64),
-    /// A closed interval.
-    Range([f64; 2]),
-}
-
-/// Kind of a load entry.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum LoadKind {
-    /// Concentrated force at (x, y).
-    Point,
-    /// Uniform pressure over the rectangle x = [x0, x1], y = [y0, y1].
-    Patch,
-    /// Uniform pressure over the whole plate (self-weight, surcharge).
-    Uniform,
-    /// Force per unit length along the segment `from` → `to` (a wall, a line of columns).
-    Line,
-    /// A temperature difference, top minus bottom, linear through the thickness.
-    Temperature,
-}
-
-/// One `[[load]]` entry.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct LoadSpec {
-    /// point | patch | uniform.
-    pub kind: LoadKind,
-    /// x (point) or [x0, x1] (patch); m, or s in a dimensionless scene.
-    #[serde(default)]
-    pub x: Option<Coord>,
-    /// y (point) or [y0, y1] (patch); m, or t in a dimensionless scene.
-    #[serde(default)]
-    pub y: Option<Coord>,
-    /// Point force, N downward (relative in a dimensionless scene).
-    #[serde(default)]
-    pub force: Option<f64>,
-    /// Pressure, Pa downward (relative in a dimensionless scene).
-    #[serde(default)]
-    pub pressure: Option<f64>,
-    /// Start of a line load: m, or (s, t) in a dimensionless scene.
-    #[serde(default)]
-    pub from: Option<[f64; 2]>,
-    /// End of a line load.
-    #[serde(default)]
-    pub to: Option<[f64; 2]>,
-    /// Line load, N/m downward (relative per unit L in a dimensionless scene).
-    #[serde(default)]
-    pub force_per_length: Option<f64>,
-    /// Temperature difference top minus bottom, K (SI scenes).
-    #[serde(default)]
-    pub difference: Option<f64>,
-    /// Free curling curvature ∂²V/∂s² times the loads' force unit (dimensionless scenes).
-    #[serde(default)]
-    pub curvature: Option<f64>,
-    /// Load case; loads without one belong to case "default".
-    #[serde(default)]
-    pub case: Option<String>,
-}
+pub use super::load_spec::{Coord, LoadKind, LoadSpec};
 
 /// `[solver] penalty`: `"auto"` or a fixed ε̄.
 #[derive(Debug, Clone, PartialEq, Deserialize, serde::Serialize)]

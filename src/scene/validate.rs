@@ -2,7 +2,7 @@
 //! field and the fix in its errors.
 
 use super::loads::{
-    normalise, raw_allowable, raw_loads, raw_voids, voids_for, zones, RawLoad, RawVoid, Thermal,
+    normalise, raw_allowable, raw_loads, raw_voids, voids_for, zones, RawLoad, RawVoid,
     DEFAULT_CASE,
 };
 pub(super) use super::numbers::finite_positive;
@@ -11,6 +11,7 @@ use super::soils::{self, PlateGroups};
 use super::spec::{
     DimensionlessSpec, FoundationSpec, LoadKind, MeshSpec, PenaltySpec, PlateSpec, SolverSpec,
 };
+use super::temperature::Thermal;
 use super::{Combination, Problem, SceneFile};
 use crate::budget::default_memory_limit;
 use crate::error::{Error, Result};
@@ -214,6 +215,7 @@ fn shared(file: &SceneFile) -> Result<Shared> {
                 .transpose()?,
             thickness: p.thickness,
             rigidity: d,
+            poisson: p.poissons_ratio,
         }),
         _ => None,
     };
