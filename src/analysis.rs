@@ -50,8 +50,26 @@ pub fn run_with(
     assemble_s: f64,
     monitor: &Monitor<'_>,
 ) -> Result<MethodRun> {
+    run_from(model, ops, method, assemble_s, None, monitor)
+}
+
+/// [`run_with`], started from the nodal pressures `start` of a related solve on the same
+/// operators (a neighbouring load position, another combination): the penalty's first lifted
+/// set and the active-set QP's first iterate; without one, a large active-set QP starts from a
+/// coarser grid ([`solve::solve_nested`]). The answer does not depend on the start.
+pub fn run_from(
+    model: &Model,
+    ops: &Operators,
+    method: &Method,
+    assemble_s: f64,
+    start: Option<&[f64]>,
+    monitor: &Monitor<'_>,
+) -> Result<MethodRun> {
     let t = Instant::now();
-    let solution = solve::solve_nested(model, ops, method, monitor)?;
+    let solution = match start {
+        Some(s) => solve::solve_with(ops, method, Some(s), monitor)?,
+        None => solve::solve_nested(model, ops, method, monitor)?,
+    };
     let solve_s = t.elapsed().as_secs_f64();
     let report = post::report(model, ops, &solution);
     let times = Times {

@@ -110,40 +110,7 @@ pub fn analyse(problem: &Problem, monitor: &Monitor<'_>) -> Result<Combinations>
             "the scene has no [[combination]]: solve it as one load set",
         ));
     }
-    let (mesh, _) = crate::model::plan_shared_mesh(&models);
-    let first = &models[0];
-    // Combinations run side by side: each needs its own factorisation.
-    let parallel = rayon::current_num_threads().min(models.len()).max(1) as f64;
-    // The route of `[solver] route` (the half-space T by FFT beyond the size `auto` allows).
-    let toeplitz = !first.groups.foundation.is_local()
-        && problem
-            .route
-            .iterative(mesh.n_nodes(), &problem.method, problem.model.constraint)?;
-    if toeplitz {
-        let need = budget::iterative_bytes(&mesh);
-        if need > problem.memory_limit / parallel {
-            return Err(Error::TooLarge {
-                what: format!(
-                    "{} combinations of a {} × {} element model on the iterative route",
-                    models.len(),
-                    mesh.nx,
-                    mesh.ny
-                ),
-                need_gib: need * parallel / 1024f64.powi(3),
-                limit_gib: problem.memory_limit / 1024f64.powi(3),
-                hint: "use fewer elements".into(),
-            });
-        }
-    } else {
-        budget::check_mesh(
-            &mesh,
-            first.groups.foundation,
-            first.constraint,
-            &problem.method,
-            problem.memory_limit / parallel,
-        )?;
-    }
-    let base = Operators::assemble_shared_with(&models, toeplitz);
+    let base = assemble_for(problem, &models, "combinations")?;
     let assemble_s = t0.elapsed().as_secs_f64();
     let cases = Cases::new(monitor, problem.combinations.len());
     let inner = cases.inner();
@@ -180,6 +147,48 @@ pub fn analyse(problem: &Problem, monitor: &Monitor<'_>) -> Result<Combinations>
         assemble_s,
         total_s: t0.elapsed().as_secs_f64(),
     })
+}
+
+/// One set of operators for several models of one plate and soil that differ only in their
+/// loads and voids (the combinations of a scene, the positions of a moving load), on the route
+/// `[solver] route` gives and within the memory limit shared by the models solved side by side
+/// (each needs its own factorisation); `what` names them in a refusal.
+pub(crate) fn assemble_for(problem: &Problem, models: &[Model], what: &str) -> Result<Operators> {
+    let Some(first) = models.first() else {
+        return Err(Error::invalid(what, "nothing to solve"));
+    };
+    let (mesh, _) = crate::model::plan_shared_mesh(models);
+    let parallel = rayon::current_num_threads().min(models.len()).max(1) as f64;
+    // The route of `[solver] route` (the half-space T by FFT beyond the size `auto` allows).
+    let toeplitz = !first.groups.foundation.is_local()
+        && problem
+            .route
+            .iterative(mesh.n_nodes(), &problem.method, problem.model.constraint)?;
+    if toeplitz {
+        let need = budget::iterative_bytes(&mesh);
+        if need > problem.memory_limit / parallel {
+            return Err(Error::TooLarge {
+                what: format!(
+                    "{} {what} of a {} × {} element model on the iterative route",
+                    models.len(),
+                    mesh.nx,
+                    mesh.ny
+                ),
+                need_gib: need * parallel / 1024f64.powi(3),
+                limit_gib: problem.memory_limit / 1024f64.powi(3),
+                hint: "use fewer elements".into(),
+            });
+        }
+    } else {
+        budget::check_mesh(
+            &mesh,
+            first.groups.foundation,
+            first.constraint,
+            &problem.method,
+            problem.memory_limit / parallel,
+        )?;
+    }
+    Ok(Operators::assemble_shared_with(models, toeplitz))
 }
 
 /// Where an extreme occurs and which combination gives it.

@@ -365,6 +365,48 @@ fn study(
     }
 }
 
+/// The scene file of a (kind, text) pair with the options applied (not validated).
+fn scene_file(kind: &str, text: &str, options: &str) -> liftoff::Result<SceneFile> {
+    let mut file = source(kind, text).parse()?;
+    Overrides::from_json(options)?.apply(&mut file);
+    Ok(file)
+}
+
+/// `liftoff critical`: the search's result as JSON (`critical.json`), its options the JSON of
+/// [`liftoff::critical::CriticalOptions`] (`indices` for a share of the grid).
+#[pyfunction]
+#[pyo3(signature = (kind, text, options, critical, progress=None))]
+fn critical(
+    py: Python<'_>,
+    kind: &str,
+    text: &str,
+    options: &str,
+    critical: &str,
+    progress: Option<&Bound<'_, PyAny>>,
+) -> PyResult<String> {
+    let o: liftoff::critical::CriticalOptions = serde_json::from_str(critical)
+        .map_err(|e| to_py(Error::invalid("critical", e.to_string())))?;
+    json(&run(py, progress, |m| {
+        liftoff::critical::critical(&scene_file(kind, text, options)?, &o, m)
+    })?)
+}
+
+/// How many positions `critical` has for these options.
+#[pyfunction]
+fn critical_len(
+    py: Python<'_>,
+    kind: &str,
+    text: &str,
+    options: &str,
+    critical: &str,
+) -> PyResult<usize> {
+    let o: liftoff::critical::CriticalOptions = serde_json::from_str(critical)
+        .map_err(|e| to_py(Error::invalid("critical", e.to_string())))?;
+    run(py, None, |_| {
+        liftoff::critical::positions(&scene_file(kind, text, options)?, &o)
+    })
+}
+
 /// How many runs `liftoff stability` makes on these scenes (each a (kind, text) pair).
 #[pyfunction]
 fn stability_len(py: Python<'_>, scenes: Vec<(String, String)>, options: &str) -> PyResult<usize> {
@@ -437,6 +479,8 @@ fn _liftoff(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(compare, m)?)?;
     m.add_function(wrap_pyfunction!(study, m)?)?;
     m.add_function(wrap_pyfunction!(stability_len, m)?)?;
+    m.add_function(wrap_pyfunction!(critical, m)?)?;
+    m.add_function(wrap_pyfunction!(critical_len, m)?)?;
     m.add_function(wrap_pyfunction!(stability_rows, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

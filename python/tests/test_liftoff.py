@@ -412,3 +412,50 @@ def test_progress_reaches_a_callable_for_studies_and_combinations():
     assert done == [1, 2, 3, 4], events
     with pytest.raises(ZeroDivisionError):
         liftoff.solve("example:raft-combinations", progress=lambda *e: 1 / 0)
+
+
+# -- the critical position of a vehicle load ----------------------------------------------------
+
+SLAB_WITH_AXLE = """
+title = "ESAL axle on a slab"
+[plate]
+length = 4.5
+width = 3.6
+thickness = 0.25
+youngs_modulus = 30e9
+poissons_ratio = 0.15
+[foundation]
+model = "winkler"
+modulus = 27e6
+[[load]]
+kind = "uniform"
+pressure = 6e3
+[[load]]
+kind = "axle"
+name = "truck"
+standard = "esal-single-dual"
+x = 0.0
+y = 0.0
+[mesh]
+elements = [30, 24]
+"""
+
+
+def test_critical_equals_the_cli_and_spreads_over_a_cluster(client, tmp_path):
+    scene = tmp_path / "slab.toml"
+    scene.write_text(SLAB_WITH_AXLE)
+    local = liftoff.critical(scene, "truck", grid=(5, 3))
+    r = cli("critical", str(scene), "--load", "truck", "--grid", "5,3", "--json")
+    assert r.returncode == 0, r.stderr
+    ref = json.loads(r.stdout)
+    drop = lambda rows: [{k: v for k, v in row.items() if k != "time_s"} for row in rows]
+    assert drop(local) == drop(ref["positions"])
+    assert local.meta["bottom"] == ref["bottom"] and local.meta["combination"] is None
+    best = local[local.meta["bottom"]]
+    assert abs(best["x"]) < 1e-9 and best["bottom"] == max(row["bottom"] for row in local)
+    spread = liftoff.critical(scene, "truck", grid=(5, 3), client=client, chunk=4)
+    assert drop(spread) == drop(local)
+    assert {k: spread.meta[k] for k in ("bottom", "top", "deflection")} == \
+        {k: local.meta[k] for k in ("bottom", "top", "deflection")}
+    with pytest.raises(liftoff.SceneError, match="no load named"):
+        liftoff.critical(scene, "bus")

@@ -6,8 +6,10 @@
 
 pub mod chart;
 pub mod combinations;
+pub mod critical;
 pub mod studies;
 
+pub mod study_tables;
 pub mod tables;
 pub mod vtk;
 

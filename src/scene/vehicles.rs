@@ -156,7 +156,7 @@ pub struct Tire {
 }
 
 /// The tires of an `axle` or `gear` entry `k`, in metres about the plate's centre.
-pub(super) fn tires(spec: &LoadSpec, k: usize, axle: bool) -> Result<Vec<Tire>> {
+pub fn tires(spec: &LoadSpec, k: usize, axle: bool) -> Result<Vec<Tire>> {
     let field = |n: &str| format!("load[{k}].{n}");
     let standard = match &spec.standard {
         Some(name) => {

@@ -32,8 +32,9 @@ pub fn takes_start(ops: &Operators, method: &Method) -> bool {
 }
 
 /// [`solve`], with the nodal pressures `start` as the matrix-free active-set QP's first
-/// iterate where it runs ([`takes_start`]); the other methods ignore it. The answer does not
-/// depend on the start (the QP's solution is unique), only the number of face solves does.
+/// iterate where it runs ([`takes_start`]) and as the penalty iteration's first penalised set
+/// (its lifted points); bonded contact and clarabel ignore it. The answer does not depend on
+/// the start (both problems have one solution), only the number of steps does.
 pub fn solve_from(ops: &Operators, method: &Method, start: Option<&[f64]>) -> Result<Solution> {
     solve_with(ops, method, start, &Monitor::NONE)
 }
@@ -59,7 +60,7 @@ pub fn solve_with(
         }
         Method::Penalty(settings) => {
             check_feasible(ops)?;
-            penalty::solve_with(ops, settings, monitor)?
+            penalty::solve_with(ops, settings, start, monitor)?
         }
         Method::Qp(settings) => {
             check_feasible(ops)?;

@@ -201,14 +201,19 @@ fn tension_check(ops: &Operators, sigma: &[f64], epsilon: f64) -> Status {
 /// from the last penalised set, on the same backend: the symbolic factorisation (and the last
 /// numeric factor, for Woodbury updates) is reused across stages.
 pub fn solve(ops: &Operators, settings: &PenaltySettings) -> Result<Solution> {
-    solve_with(ops, settings, &Monitor::NONE)
+    solve_with(ops, settings, None, &Monitor::NONE)
 }
 
-/// [`solve`], watched by `monitor`: a progress event after every step, the cancel flag checked
-/// before every step and inside the iterative route's conjugate gradients.
+/// [`solve`], from the nodal pressures `start` when given — a neighbouring solve's answer on the
+/// same operators: its lifted points (σ at or below 1e-9 of the largest |σ| at a constraint
+/// point) are the first penalised set instead of none, so the steps only settle what differs —
+/// and watched by `monitor`: a progress event after every step, the cancel flag checked before
+/// every step and inside the iterative route's conjugate gradients. The penalised problem is
+/// strictly convex, so its answer does not depend on the start.
 pub fn solve_with(
     ops: &Operators,
     settings: &PenaltySettings,
+    start: Option<&[f64]>,
     monitor: &Monitor<'_>,
 ) -> Result<Solution> {
     let t0 = Instant::now();
@@ -220,7 +225,14 @@ pub fn solve_with(
     let mut stages = Vec::new();
     let mut t_solves = 0.0;
     let mut epsilon = settings.epsilon;
-    let mut start = vec![false; n_c];
+    let mut start = match start {
+        Some(sigma) if sigma.len() == ops.n_sigma() => {
+            let gs = ops.g_times(sigma);
+            let peak = gs.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+            gs.iter().map(|&v| v <= 1e-9 * peak).collect()
+        }
+        _ => vec![false; n_c],
+    };
     let end = loop {
         let from = history.len();
         let end = stage(

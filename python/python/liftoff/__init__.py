@@ -23,7 +23,7 @@ from . import _progress
 from ._records import Records
 from ._scene import Scene, options_json, scene_pair
 from ._solution import Combinations, Solution, from_core
-from ._sweep import Grid, make_grid, run_all, stability_chunk
+from ._sweep import Grid, critical_chunk, make_grid, run_all, stability_chunk
 from ._sweep import sweep as _run_sweep
 from .errors import (
     Infeasible,
@@ -45,6 +45,7 @@ __all__ = [
     "eps_sweep",
     "tradeoff",
     "stability",
+    "critical",
     "grid",
     "sweep",
     "Solution",
@@ -189,6 +190,61 @@ def stability(
     for part in run_all(stability_chunk, tasks, client):
         rows.extend(json.loads(part))
     return Records(rows)
+
+
+def critical(
+    scene: Scene,
+    load: str,
+    *,
+    grid: Sequence[int] = (11, 9),
+    headings: Optional[Sequence[float]] = None,
+    combination: Optional[str] = None,
+    warm: bool = True,
+    client: Any = None,
+    chunk: int = 8,
+    progress: Any = None,
+    method: Optional[str] = None,
+    **options: Any,
+) -> Records:
+    """The critical position of a vehicle load (``liftoff critical``): the ``axle`` or ``gear``
+    load named ``load`` moved over a ``grid`` of reference points that keep its tires on the
+    plate (and over ``headings``), the rest of its ``combination`` present, every position its
+    own contact problem on operators assembled once, warm-started from its neighbour.
+
+    One record per position (``x``, ``y``, ``heading``, ``outcome``, ``bottom``/``top`` — the
+    largest principal stress of that face, Pa — with ``bottom_at``/``top_at``, ``w_max``, …);
+    ``meta`` holds the indices of the critical positions (``bottom``, ``top``, ``deflection``)
+    and the search's facts. With a Dask ``client`` the positions are spread over the cluster in
+    tasks of ``chunk`` positions (each task assembles the operators once); rows come back in
+    grid order.
+    """
+    kind, text = scene_pair(scene)
+    opts = options_json(method, options)
+    spec = {"load": load, "grid": list(grid), "headings": list(headings or []),
+            "combination": combination, "warm": warm}
+    if client is None:
+        doc = json.loads(_progress.run(_core.critical, progress, kind, text, opts, json.dumps(spec)))
+        rows = doc.pop("positions")
+        return Records(rows, doc)
+    n = _core.critical_len(kind, text, opts, json.dumps(spec))
+    tasks = [
+        {"kind": kind, "text": text, "options": opts,
+         "critical": json.dumps({**spec, "indices": list(range(i, min(i + chunk, n)))})}
+        for i in range(0, n, chunk)
+    ]
+    rows: List[Dict[str, Any]] = []
+    meta: Dict[str, Any] = {}
+    for part in run_all(critical_chunk, tasks, client):
+        doc = json.loads(part)
+        rows.extend(doc.pop("positions"))
+        meta = {k: v for k, v in doc.items() if k not in ("bottom", "top", "deflection")}
+
+    def best(key: str) -> Optional[int]:
+        ok = [i for i, r in enumerate(rows) if r["outcome"] == "converged"]
+        return max(ok, key=lambda i: rows[i][key]) if ok else None
+
+    meta.update({"bottom": best("bottom"), "top": best("top"), "deflection": best("w_max")})
+    return Records(rows, meta)
 
 
 def grid(base: Scene, axes: Mapping[str, Sequence[Any]]) -> Grid:

@@ -170,6 +170,11 @@ def sweep(
     return Records(rows, {"cases": len(rows), "failed": sum(not r["ok"] for r in rows)})
 
 
+def critical_chunk(args: Dict[str, Any]) -> str:
+    """One Dask task of a critical-position search: some positions of its grid, as JSON."""
+    return _core.critical(args["kind"], args["text"], args["options"], args["critical"])
+
+
 def stability_chunk(args: Dict[str, Any]) -> str:
     """One Dask task of the stability study: some runs of its plan, as JSON rows."""
     return _core.stability_rows(args["scenes"], args["options"], args["indices"])

@@ -34,6 +34,9 @@ pub(crate) enum Command {
     Tradeoff(TradeoffArgs),
     /// Sweep the regimes where the methods break (Γ, ε̄, load position, μ, mesh).
     Stability(StabilityArgs),
+    /// Move a named axle or gear load over the plate: the positions that give the largest
+    /// bottom and top stress and deflection, and influence maps.
+    Critical(CriticalArgs),
     /// Regenerate the paper's Figs. 3–7 (SVG and PNG), paper.json and paper.md.
     Paper(PaperArgs),
     /// Print a bundled example scene (without NAME: list them).
@@ -199,6 +202,54 @@ fn parse_penalty(s: &str) -> Result<PenaltySpec, String> {
             .parse::<f64>()
             .map(PenaltySpec::Value)
             .map_err(|_| format!("expected auto or a number such as 1e-5, got `{s}`")),
+    }
+}
+
+/// The flags of `critical`; the defaults are [`liftoff::critical::CriticalOptions`]'s.
+#[derive(clap::Args)]
+pub(crate) struct CriticalArgs {
+    /// Scene file (TOML), or `example:NAME`.
+    pub(crate) scene: String,
+    /// The `name` of the axle or gear load to move.
+    #[arg(long)]
+    pub(crate) load: String,
+    /// Reference points along x and y, NX,NY (1 keeps the load's own coordinate).
+    #[arg(long, value_parser = parse_grid, default_value = "11,9")]
+    pub(crate) grid: [usize; 2],
+    /// Headings to try, degrees (default: the load's own).
+    #[arg(long, value_delimiter = ',')]
+    pub(crate) headings: Vec<f64>,
+    /// The combination the load acts in (default: the first that has its case).
+    #[arg(long)]
+    pub(crate) combination: Option<String>,
+    /// Solve every position from scratch instead of from its neighbour's answer.
+    #[arg(long)]
+    pub(crate) cold: bool,
+    /// Method for unbonded contact (overrides [solver] method).
+    #[arg(long, value_parser = choice::<MethodKind>())]
+    pub(crate) method: Option<MethodKind>,
+    /// Contact law (overrides [solver] contact).
+    #[arg(long, value_parser = choice::<Contact>())]
+    pub(crate) contact: Option<Contact>,
+    #[command(flatten)]
+    pub(crate) overrides: Overrides,
+    /// Directory for critical.csv, critical.json and the influence maps.
+    #[arg(long)]
+    pub(crate) out: Option<PathBuf>,
+    /// Print critical.json to stdout instead of the table.
+    #[arg(long)]
+    pub(crate) json: bool,
+}
+
+fn parse_grid(s: &str) -> Result<[usize; 2], String> {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    let n = |p: &str| {
+        p.parse::<usize>()
+            .map_err(|_| format!("`{p}` is not a whole number of points"))
+    };
+    match parts.as_slice() {
+        [a, b] => Ok([n(a)?, n(b)?]),
+        _ => Err(format!("expected NX,NY (two point counts), got `{s}`")),
     }
 }
 

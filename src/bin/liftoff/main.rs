@@ -9,12 +9,13 @@ mod progress;
 use std::process::ExitCode;
 
 use clap::Parser;
-use liftoff::output::{self, tables};
+use liftoff::output::{self, study_tables, tables};
 use liftoff::study::{self, EpsSweepOptions, TradeoffOptions};
 use liftoff::{Error, ErrorKind, Method, Outcome, Problem, Source};
 
 use args::{
-    Cli, Command, CompareArgs, EpsSweepArgs, PaperArgs, SolveArgs, StabilityArgs, TradeoffArgs,
+    Cli, Command, CompareArgs, CriticalArgs, EpsSweepArgs, PaperArgs, SolveArgs, StabilityArgs,
+    TradeoffArgs,
 };
 use failure::{exit, Failure};
 use progress::with_progress;
@@ -28,6 +29,7 @@ fn main() -> ExitCode {
         Command::EpsSweep(args) => eps_sweep(args),
         Command::Tradeoff(args) => tradeoff(args),
         Command::Stability(args) => stability(args),
+        Command::Critical(args) => critical(args),
         Command::Paper(args) => paper(args),
         Command::Example { name } => example(name.as_deref()),
     };
@@ -174,7 +176,7 @@ fn compare(args: CompareArgs) -> Result<(), Failure> {
     st.commit()?;
     print!(
         "{}",
-        tables::compare_table(&c, &args.out.join("compare.json"))
+        study_tables::compare_table(&c, &args.out.join("compare.json"))
     );
     if !c.penalty.converged || !c.qp.converged {
         let message = "a method did not converge; see the status row";
@@ -198,7 +200,10 @@ fn eps_sweep(args: EpsSweepArgs) -> Result<(), Failure> {
     let title = &problem.model.title;
     let chart_title = format!("{title} — penalty against QP");
     output::studies::write_sweep(&args.out, &sweep, &chart_title)?;
-    print!("{}", tables::eps_sweep_table(title, &sweep, &args.out));
+    print!(
+        "{}",
+        study_tables::eps_sweep_table(title, &sweep, &args.out)
+    );
     Ok(())
 }
 
@@ -215,7 +220,7 @@ fn tradeoff(args: TradeoffArgs) -> Result<(), Failure> {
     let title = &problem.model.title;
     let chart_title = format!("{title} — speed against accuracy");
     output::studies::write_tradeoff(&args.out, &t, &chart_title)?;
-    print!("{}", tables::tradeoff_table(title, &t, &args.out));
+    print!("{}", study_tables::tradeoff_table(title, &t, &args.out));
     Ok(())
 }
 
@@ -236,7 +241,47 @@ fn stability(args: StabilityArgs) -> Result<(), Failure> {
     let plan = study::stability_plan(&bases);
     let rows = with_progress(false, |m| study::stability_sweep(&plan, m))?;
     output::studies::write_stability(&args.out, &rows, "liftoff stability")?;
-    print!("{}", tables::stability_table(&rows, &args.out));
+    print!("{}", study_tables::stability_table(&rows, &args.out));
+    Ok(())
+}
+
+fn critical(args: CriticalArgs) -> Result<(), Failure> {
+    let overrides = liftoff::scene::Overrides {
+        contact: args.contact,
+        method: args.method,
+        ..args.overrides.library()
+    };
+    let mut file = Source::from_arg(&args.scene)
+        .parse()
+        .map_err(|e| Failure::in_scene(&args.scene, e))?;
+    overrides.apply(&mut file);
+    let options = liftoff::critical::CriticalOptions {
+        load: args.load,
+        grid: args.grid,
+        headings: args.headings,
+        combination: args.combination,
+        warm: !args.cold,
+        indices: None,
+    };
+    options.validate().map_err(Failure::option)?;
+    if let Some(dir) = &args.out {
+        output::prepare_dir(dir)?;
+    }
+    let c = with_progress(false, |m| liftoff::critical::critical(&file, &options, m))
+        .map_err(|e| Failure::in_scene(&args.scene, e))?;
+    let title = file.title.clone().unwrap_or_else(|| args.scene.clone());
+    let written = match &args.out {
+        Some(dir) => output::critical::write_critical(dir, &c, &title)?.len(),
+        None => 0,
+    };
+    if args.json {
+        let json = serde_json::to_string_pretty(&c)
+            .map_err(|e| Failure::new(exit::IO, format!("cannot serialise critical.json: {e}")))?;
+        println!("{json}");
+    } else {
+        let files = args.out.as_deref().map(|dir| (written, dir));
+        print!("{}", output::critical::critical_table(&title, &c, files));
+    }
     Ok(())
 }
 

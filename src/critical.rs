@@ -1,0 +1,437 @@
+//! The critical position of a vehicle load (`liftoff critical`): the named `axle` or `gear`
+//! load moved over a grid of reference points inside the plate (and over headings where asked),
+//! the rest of its combination present, each position its own contact problem on operators
+//! assembled once (K, B, T shared; only the load vector changes), solved side by side on every
+//! core, each warm-started from the position before it; the positions that give the largest
+//! tension at the bottom and at the top face and the largest deflection.
+//!
+//! The grid runs, for each heading, from the position where the prints touch one edge of the
+//! plate to where they touch the other, so the edge positions of the classical critical cases
+//! (the outer tire on the free edge) are on it.
+
+use std::time::Instant;
+
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+
+use crate::analysis;
+use crate::combination::assemble_for;
+use crate::error::{Error, Result};
+use crate::model::{Model, SymmetryMode};
+use crate::monitor::{Cases, Monitor};
+use crate::scene::spec::{Coord, LoadKind};
+use crate::scene::vehicles::tires;
+use crate::scene::SceneFile;
+use crate::study::RunOutcome;
+
+/// What to move and over what.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct CriticalOptions {
+    /// The `name` of the `axle` or `gear` load to move.
+    pub load: String,
+    /// Reference points along x and y (≥ 1 each; 1 keeps the load's own coordinate).
+    pub grid: [usize; 2],
+    /// Headings, degrees (empty: the load's own).
+    pub headings: Vec<f64>,
+    /// The combination the load acts in (default: the first that has its case).
+    pub combination: Option<String>,
+    /// Start each position from its neighbour's answer (false: every position cold).
+    pub warm: bool,
+    /// Solve only these positions of the grid (by index; a Dask task's share), all when None.
+    pub indices: Option<Vec<usize>>,
+}
+
+impl Default for CriticalOptions {
+    /// An 11 × 9 grid (odd, so that the middle lines are on it), the load's own heading,
+    /// warm starts.
+    fn default() -> Self {
+        Self {
+            load: String::new(),
+            grid: [11, 9],
+            headings: Vec::new(),
+            combination: None,
+            warm: true,
+            indices: None,
+        }
+    }
+}
+
+impl CriticalOptions {
+    /// Check the options; errors name the field.
+    pub fn validate(&self) -> Result<()> {
+        if self.load.trim().is_empty() {
+            return Err(Error::invalid(
+                "load",
+                "give the name of the axle or gear load to move (its `name` in the scene)",
+            ));
+        }
+        if self.grid.iter().any(|&n| n == 0 || n > 201) {
+            return Err(Error::invalid(
+                "grid",
+                format!("must be 1..=201 points along x and y, got {:?}", self.grid),
+            ));
+        }
+        if let Some(h) = self.headings.iter().find(|h| !h.is_finite()) {
+            return Err(Error::invalid(
+                "headings",
+                format!("must be finite, got {h}"),
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// One position's outcome: where, and what it causes.
+#[derive(Debug, Clone, Serialize)]
+pub struct Position {
+    /// Reference point x, m.
+    pub x: f64,
+    /// Reference point y, m.
+    pub y: f64,
+    /// Heading, degrees.
+    pub heading: f64,
+    /// How the solve ended.
+    pub outcome: RunOutcome,
+    /// Penalty steps or face solves.
+    pub iterations: usize,
+    /// Largest principal stress at the bottom face, Pa.
+    pub bottom: f64,
+    /// Where (x, y), m.
+    pub bottom_at: [f64; 2],
+    /// Largest principal stress at the top face, Pa.
+    pub top: f64,
+    /// Where (x, y), m.
+    pub top_at: [f64; 2],
+    /// Largest downward deflection, m.
+    pub w_max: f64,
+    /// Contact area over plate area.
+    pub contact_fraction: f64,
+    /// Seconds for this position.
+    pub time_s: f64,
+}
+
+/// The search's result.
+#[derive(Debug, Clone, Serialize)]
+pub struct Critical {
+    /// The moved load's name.
+    pub load: String,
+    /// The combination it acted in (None: a scene without combinations).
+    pub combination: Option<String>,
+    /// Plate sides (length along x, width along y), m.
+    pub plate: [f64; 2],
+    /// Grid spacing of the reference points (x, y), m (0 where the grid has one point).
+    pub spacing: [f64; 2],
+    /// Every position solved, in grid order (heading, then y, then x).
+    pub positions: Vec<Position>,
+    /// Index of the largest bottom tension among the converged positions.
+    pub bottom: Option<usize>,
+    /// Index of the largest top tension.
+    pub top: Option<usize>,
+    /// Index of the largest deflection.
+    pub deflection: Option<usize>,
+    /// Seconds to assemble the shared operators.
+    pub assemble_s: f64,
+    /// Wall-clock seconds of the whole search.
+    pub total_s: f64,
+}
+
+impl Critical {
+    /// The index of the converged position with the largest `value`.
+    fn argmax(positions: &[Position], value: impl Fn(&Position) -> f64) -> Option<usize> {
+        (0..positions.len())
+            .filter(|&i| positions[i].outcome == RunOutcome::CONVERGED)
+            .max_by(|&a, &b| value(&positions[a]).total_cmp(&value(&positions[b])))
+    }
+}
+
+/// The reference points (x, y, heading) in grid order, the plate's sides and the spacing of the
+/// first heading's grid.
+type Grid = (Vec<[f64; 3]>, [f64; 2], [f64; 2]);
+
+/// The grid of reference points for each heading: (x, y, heading) in grid order, and the
+/// spacing of the first heading's grid.
+fn grid(file: &SceneFile, k: usize, options: &CriticalOptions) -> Result<Grid> {
+    let spec = &file.load[k];
+    let plate = file.plate.as_ref().ok_or_else(|| {
+        Error::invalid(
+            "plate",
+            "the critical position needs an SI scene ([plate] and [foundation])",
+        )
+    })?;
+    let (a, b) = (plate.length, plate.width);
+    let own = spec.heading.unwrap_or(0.0);
+    let headings = if options.headings.is_empty() {
+        vec![own]
+    } else {
+        options.headings.clone()
+    };
+    let axle = spec.kind == LoadKind::Axle;
+    let coordinate = |c: &Option<Coord>| c.as_ref().and_then(Coord::value).unwrap_or(0.0);
+    let mut points = Vec::new();
+    let mut spacing = [0.0; 2];
+    for (h, &heading) in headings.iter().enumerate() {
+        let mut at_origin = spec.clone();
+        at_origin.x = Some(Coord::Value(0.0));
+        at_origin.y = Some(Coord::Value(0.0));
+        at_origin.heading = Some(heading);
+        let prints = tires(&at_origin, k, axle)?;
+        let lo = |axis: usize| {
+            prints
+                .iter()
+                .map(|t| t.centre[axis] - t.size[axis] / 2.0)
+                .fold(f64::INFINITY, f64::min)
+        };
+        let hi = |axis: usize| {
+            prints
+                .iter()
+                .map(|t| t.centre[axis] + t.size[axis] / 2.0)
+                .fold(f64::NEG_INFINITY, f64::max)
+        };
+        // The reference points that keep every print on the plate, a hair inside.
+        let inset = 1e-9 * a.max(b);
+        let range = |axis: usize, half: f64| -> Result<[f64; 2]> {
+            let r = [-half - lo(axis) + inset, half - hi(axis) - inset];
+            if r[0] > r[1] {
+                return Err(Error::invalid(
+                    "load",
+                    format!(
+                        "the load `{}` at heading {heading}° is wider than the plate along {}: no position keeps its tires on it",
+                        options.load,
+                        if axis == 0 { "x" } else { "y" }
+                    ),
+                ));
+            }
+            Ok(r)
+        };
+        let (rx, ry) = (range(0, a / 2.0)?, range(1, b / 2.0)?);
+        let along = |r: [f64; 2], n: usize, own: f64| -> Vec<f64> {
+            if n == 1 {
+                vec![own.clamp(r[0], r[1])]
+            } else {
+                (0..n)
+                    .map(|i| r[0] + (r[1] - r[0]) * i as f64 / (n - 1) as f64)
+                    .collect()
+            }
+        };
+        let xs = along(rx, options.grid[0], coordinate(&spec.x));
+        let ys = along(ry, options.grid[1], coordinate(&spec.y));
+        if h == 0 {
+            spacing = [
+                xs.get(1).map_or(0.0, |x1| x1 - xs[0]),
+                ys.get(1).map_or(0.0, |y1| y1 - ys[0]),
+            ];
+        }
+        for &y in &ys {
+            for &x in &xs {
+                points.push([x, y, heading]);
+            }
+        }
+    }
+    Ok((points, [a, b], spacing))
+}
+
+/// The scene to solve at every position: the combination the load acts in alone, the whole
+/// plate modelled (a moving load has no symmetry). Returns it with the load's index and the
+/// combination's name.
+fn scene_for(
+    file: &SceneFile,
+    options: &CriticalOptions,
+) -> Result<(SceneFile, usize, Option<String>)> {
+    let names: Vec<&str> = file.load.iter().filter_map(|l| l.name.as_deref()).collect();
+    let k = file
+        .load
+        .iter()
+        .position(|l| l.name.as_deref() == Some(options.load.as_str()))
+        .ok_or_else(|| {
+            Error::invalid(
+                "load",
+                format!(
+                    "no load named `{}` in the scene; named loads: {}",
+                    options.load,
+                    if names.is_empty() {
+                        "none (give the axle or gear a `name`)".to_string()
+                    } else {
+                        names.join(", ")
+                    }
+                ),
+            )
+        })?;
+    if !matches!(file.load[k].kind, LoadKind::Axle | LoadKind::Gear) {
+        return Err(Error::invalid(
+            format!("load[{k}].kind"),
+            format!(
+                "`{}` is a {} load: the critical position moves an axle or a gear",
+                options.load, file.load[k].kind
+            ),
+        ));
+    }
+    let mut scene = file.clone();
+    scene.mesh.symmetry = SymmetryMode::None;
+    let mut combination = None;
+    if !file.combination.is_empty() {
+        let case = file.load[k]
+            .case
+            .clone()
+            .unwrap_or_else(|| crate::scene::DEFAULT_CASE.into());
+        let chosen = match &options.combination {
+            Some(name) => file
+                .combination
+                .iter()
+                .find(|c| &c.name == name)
+                .ok_or_else(|| {
+                    Error::invalid("combination", format!("no combination named `{name}`"))
+                })?,
+            None => file
+                .combination
+                .iter()
+                .find(|c| c.factors.get(&case).is_some_and(|&f| f != 0.0))
+                .ok_or_else(|| {
+                    Error::invalid(
+                        "combination",
+                        format!(
+                            "no combination has the case `{case}` of load `{}`",
+                            options.load
+                        ),
+                    )
+                })?,
+        };
+        combination = Some(chosen.name.clone());
+        scene.combination = vec![chosen.clone()];
+    } else if options.combination.is_some() {
+        return Err(Error::invalid(
+            "combination",
+            "the scene has no [[combination]]",
+        ));
+    }
+    Ok((scene, k, combination))
+}
+
+/// The model of the scene with the load `k` at `p` = (x, y, heading).
+fn model_at(scene: &SceneFile, k: usize, p: [f64; 3]) -> Result<Model> {
+    let mut s = scene.clone();
+    s.load[k].x = Some(Coord::Value(p[0]));
+    s.load[k].y = Some(Coord::Value(p[1]));
+    s.load[k].heading = Some(p[2]);
+    let problem = s.validate()?;
+    Ok(match problem.combinations.into_iter().next() {
+        Some(c) => c.model,
+        None => problem.model,
+    })
+}
+
+/// How many positions the search of `options` has (every heading's grid): what a caller that
+/// spreads them over workers (`options.indices`) splits.
+pub fn positions(file: &SceneFile, options: &CriticalOptions) -> Result<usize> {
+    options.validate()?;
+    let (scene, k, _) = scene_for(file, options)?;
+    Ok(grid(&scene, k, options)?.0.len())
+}
+
+/// Move the load over the grid and solve every position; see the module's description.
+pub fn critical(
+    file: &SceneFile,
+    options: &CriticalOptions,
+    monitor: &Monitor<'_>,
+) -> Result<Critical> {
+    options.validate()?;
+    let t0 = Instant::now();
+    let (scene, k, combination) = scene_for(file, options)?;
+    let problem = scene.validate()?;
+    let (points, plate, spacing) = grid(&scene, k, options)?;
+    let picked: Vec<usize> = match &options.indices {
+        Some(ix) => {
+            if let Some(&bad) = ix.iter().find(|&&i| i >= points.len()) {
+                return Err(Error::invalid(
+                    "indices",
+                    format!("{bad} is beyond the grid's {} positions", points.len()),
+                ));
+            }
+            ix.clone()
+        }
+        None => (0..points.len()).collect(),
+    };
+    let models: Vec<Model> = picked
+        .iter()
+        .map(|&i| model_at(&scene, k, points[i]))
+        .collect::<Result<_>>()?;
+    let base = assemble_for(&problem, &models, "positions")?;
+    let assemble_s = t0.elapsed().as_secs_f64();
+    // Contiguous runs of the grid order, one per core: each position starts from the answer of
+    // the one before it (a step of the grid away), the runs side by side.
+    let chunks = rayon::current_num_threads().clamp(1, models.len().max(1));
+    let per = models.len().div_ceil(chunks).max(1);
+    let cases = Cases::new(monitor, models.len());
+    let inner = cases.inner();
+    let work: Vec<(usize, &Model)> = picked.iter().copied().zip(&models).collect();
+    let solved: Vec<Result<Vec<Position>>> = work
+        .par_chunks(per)
+        .map(|run| {
+            let mut out = Vec::with_capacity(run.len());
+            let mut start: Option<Vec<f64>> = None;
+            for &(i, model) in run {
+                let t = Instant::now();
+                let [x, y, heading] = points[i];
+                let ops = base.loaded(model);
+                let warm = if options.warm { start.as_deref() } else { None };
+                let result = analysis::run_from(model, &ops, &problem.method, 0.0, warm, &inner);
+                let position = match result {
+                    Err(e @ Error::Cancelled(_)) => return Err(e),
+                    Ok(r) => {
+                        let s = &r.summary;
+                        if s.converged {
+                            start = Some(r.solution.sigma.clone());
+                        }
+                        Position {
+                            x,
+                            y,
+                            heading,
+                            outcome: RunOutcome::Solved(r.solution.status.kind()),
+                            iterations: s.iterations,
+                            bottom: s.stresses.bottom.value,
+                            bottom_at: [s.stresses.bottom.x, s.stresses.bottom.y],
+                            top: s.stresses.top.value,
+                            top_at: [s.stresses.top.x, s.stresses.top.y],
+                            w_max: s.w_max,
+                            contact_fraction: s.contact_fraction,
+                            time_s: t.elapsed().as_secs_f64(),
+                        }
+                    }
+                    Err(e) => Position {
+                        x,
+                        y,
+                        heading,
+                        outcome: RunOutcome::Failed(e.kind()),
+                        iterations: 0,
+                        bottom: f64::NAN,
+                        bottom_at: [f64::NAN; 2],
+                        top: f64::NAN,
+                        top_at: [f64::NAN; 2],
+                        w_max: f64::NAN,
+                        contact_fraction: f64::NAN,
+                        time_s: t.elapsed().as_secs_f64(),
+                    },
+                };
+                cases.finish(&format!("({x:.2}, {y:.2}) m, {heading}°"))?;
+                out.push(position);
+            }
+            Ok(out)
+        })
+        .collect();
+    let mut positions = Vec::with_capacity(models.len());
+    for part in solved {
+        positions.extend(part?);
+    }
+    Ok(Critical {
+        load: options.load.clone(),
+        combination,
+        plate,
+        spacing,
+        bottom: Critical::argmax(&positions, |p| p.bottom),
+        top: Critical::argmax(&positions, |p| p.top),
+        deflection: Critical::argmax(&positions, |p| p.w_max),
+        positions,
+        assemble_s,
+        total_s: t0.elapsed().as_secs_f64(),
+    })
+}

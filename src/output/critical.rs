@@ -1,0 +1,179 @@
+//! The files and the table of `liftoff critical`: `critical.csv` (every position), `critical.json`
+//! (the search with its critical positions) and influence maps of the bottom and top stresses
+//! and of the deflection (`influence-{bottom,top,deflection}.svg/png`).
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use super::chart::{self, Influence, Units};
+use super::Staged;
+use crate::critical::{Critical, Position};
+use crate::error::{Error, Result};
+use crate::model::Physical;
+
+/// critical.csv: one row per position.
+fn csv(c: &Critical) -> String {
+    let mut s = String::from(
+        "x_m,y_m,heading_deg,outcome,iterations,bottom_Pa,bottom_x_m,bottom_y_m,top_Pa,top_x_m,top_y_m,w_max_m,contact_fraction,time_s\n",
+    );
+    for p in &c.positions {
+        let _ = writeln!(
+            s,
+            "{},{},{},{},{},{:e},{},{},{:e},{},{},{:e},{},{}",
+            p.x,
+            p.y,
+            p.heading,
+            p.outcome,
+            p.iterations,
+            p.bottom,
+            p.bottom_at[0],
+            p.bottom_at[1],
+            p.top,
+            p.top_at[0],
+            p.top_at[1],
+            p.w_max,
+            p.contact_fraction,
+            p.time_s
+        );
+    }
+    s
+}
+
+/// Write critical.csv, critical.json and the influence maps into `dir`, staged.
+pub fn write_critical(dir: &Path, c: &Critical, title: &str) -> Result<Vec<PathBuf>> {
+    let mut st = Staged::new(dir)?;
+    st.write_text("critical.csv", &csv(c))?;
+    let json = serde_json::to_string_pretty(c)
+        .map_err(|e| Error::numerical("critical.json", format!("cannot serialise: {e}")))?;
+    st.write_text("critical.json", &json)?;
+    // Stresses and deflections are SI (Pa, m): the maps show MPa and mm.
+    let units = Units::new(
+        Some(Physical {
+            half_length: 1.0,
+            force: 1.0,
+            rigidity: 1.0,
+        }),
+        1.0,
+    );
+    // One map per heading would need its own grid; the maps show the first heading's.
+    let heading = c.positions.first().map_or(0.0, |p| p.heading);
+    let mine: Vec<&Position> = c
+        .positions
+        .iter()
+        .filter(|p| p.heading == heading)
+        .collect();
+    let points: Vec<(f64, f64)> = mine.iter().map(|p| (p.x, p.y)).collect();
+    type Pick = fn(&Position) -> f64;
+    let maps: [(&str, &str, Pick, chart::Scale); 3] = [
+        ("bottom", "σ₁ bottom", |p| p.bottom, units.stress()),
+        ("top", "σ₁ top", |p| p.top, units.stress()),
+        ("deflection", "w max", |p| p.w_max, units.deflection()),
+    ];
+    for (file, name, pick, scale) in maps {
+        let values: Vec<f64> = mine.iter().map(|p| pick(p)).collect();
+        let svg = st.path(&format!("influence-{file}.svg"));
+        let png = st.path(&format!("influence-{file}.png"));
+        chart::write_influence_map(
+            &svg,
+            &png,
+            &Influence {
+                plate: c.plate,
+                points: &points,
+                spacing: c.spacing,
+                values: &values,
+                name,
+                scale,
+            },
+            &format!(
+                "{title} — {name} with `{}` standing at each point (heading {heading}°)",
+                c.load
+            ),
+            &units,
+        )?;
+    }
+    st.commit()
+}
+
+/// What the command line prints.
+pub fn critical_table(title: &str, c: &Critical, files: Option<(usize, &Path)>) -> String {
+    let mut s = String::new();
+    let n = c.positions.len();
+    let converged = c
+        .positions
+        .iter()
+        .filter(|p| p.outcome == crate::study::RunOutcome::CONVERGED)
+        .count();
+    let _ = writeln!(
+        s,
+        "liftoff critical — {title}: `{}` over {n} positions",
+        c.load
+    );
+    if let Some(comb) = &c.combination {
+        let _ = writeln!(s, "  combination: {comb} (the rest of its loads present)");
+    }
+    let _ = writeln!(
+        s,
+        "  operators assembled once in {:.3} s; {n} positions solved in {:.3} s ({:.1} ms each), {converged} converged",
+        c.assemble_s,
+        c.total_s,
+        1e3 * (c.total_s - c.assemble_s) / n.max(1) as f64
+    );
+    let line = |what: &str, i: Option<usize>, value: &dyn Fn(&Position) -> String| -> String {
+        match i {
+            Some(i) => {
+                let p = &c.positions[i];
+                format!(
+                    "  {what:<20}: {} with the load at ({:.3}, {:.3}) m, heading {}°",
+                    value(p),
+                    p.x,
+                    p.y,
+                    p.heading
+                )
+            }
+            None => format!("  {what:<20}: no position converged"),
+        }
+    };
+    let _ = writeln!(
+        s,
+        "{}",
+        line("bottom tension", c.bottom, &|p| format!(
+            "{:.3} MPa at ({:.2}, {:.2})",
+            p.bottom * 1e-6,
+            p.bottom_at[0],
+            p.bottom_at[1]
+        ))
+    );
+    let _ = writeln!(
+        s,
+        "{}",
+        line("top tension", c.top, &|p| format!(
+            "{:.3} MPa at ({:.2}, {:.2})",
+            p.top * 1e-6,
+            p.top_at[0],
+            p.top_at[1]
+        ))
+    );
+    let _ = writeln!(
+        s,
+        "{}",
+        line("deflection", c.deflection, &|p| format!(
+            "{:.3} mm",
+            p.w_max * 1e3
+        ))
+    );
+    if converged < n {
+        let _ = writeln!(
+            s,
+            "  {} position(s) without a solution: see critical.csv (outcome)",
+            n - converged
+        );
+    }
+    if let Some((k, dir)) = files {
+        let _ = writeln!(
+            s,
+            "  files      : {k} in {} (critical.csv, critical.json, influence maps)",
+            dir.display()
+        );
+    }
+    s
+}
