@@ -317,29 +317,6 @@ fn scales(model: &Model) -> Physical {
     })
 }
 
-/// A face's largest principal stress at the nodes: the element components averaged over the
-/// elements around each node, then their principal value.
-fn recover_principal(mesh: &Mesh, face: &FaceStress) -> Vec<f64> {
-    let n = mesh.n_nodes();
-    let mut sum = vec![[0.0; 3]; n];
-    let mut count = vec![0u32; n];
-    for e in 0..mesh.n_elements() {
-        for &node in &mesh.element_nodes(e) {
-            sum[node][0] += face.sx[e];
-            sum[node][1] += face.sy[e];
-            sum[node][2] += face.sxy[e];
-            count[node] += 1;
-        }
-    }
-    sum.iter()
-        .zip(&count)
-        .map(|(s, &c)| {
-            let c = f64::from(c.max(1));
-            stress::principal(s[0] / c, s[1] / c, s[2] / c).0
-        })
-        .collect()
-}
-
 /// Build the report of a solution.
 pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
     let mesh = &ops.mesh;
@@ -439,8 +416,8 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
         elements.bottom.push(b[0] * s, b[1] * s, b[2] * s);
         elements.top.push(t[0] * s, t[1] * s, t[2] * s);
     }
-    field.s1_bottom = recover_principal(&full_mesh, &elements.bottom);
-    field.s1_top = recover_principal(&full_mesh, &elements.top);
+    field.s1_bottom = stress::recover_principal(&full_mesh, &elements.bottom);
+    field.s1_top = stress::recover_principal(&full_mesh, &elements.top);
     let peak_or_zero = |face: &FaceStress| {
         stress::peak(face, &elements.x, &elements.y).unwrap_or(stress::PeakTension {
             value: 0.0,
@@ -606,69 +583,4 @@ pub fn profiles(field: &FullField) -> Vec<Profile> {
 
 /// Small synthetic fields shared by the output writers' tests.
 #[cfg(test)]
-pub(crate) mod test_fixtures {
-    use super::{ElementField, FullField};
-
-    /// A 4 × 2 plate with a σ bump in the middle and lifted corners.
-    pub(crate) fn bump() -> (FullField, ElementField) {
-        let (nx, ny) = (4, 2);
-        let mut f = FullField {
-            nx,
-            ny,
-            x: vec![],
-            y: vec![],
-            s: vec![],
-            t: vec![],
-            w: vec![],
-            psi_x: vec![],
-            psi_y: vec![],
-            pressure: vec![],
-            gap: vec![],
-            signed_gap: vec![],
-            gap_per_sigma: 0.01,
-            v: vec![],
-            sigma: vec![],
-            contact: vec![],
-            s1_bottom: vec![],
-            s1_top: vec![],
-        };
-        for j in 0..=ny {
-            for i in 0..=nx {
-                let s = -1.0 + 2.0 * i as f64 / nx as f64;
-                let t = -1.0 + 2.0 * j as f64 / ny as f64;
-                let sigma = 1.0 - s * s - 0.6 * t * t;
-                f.x.push(2.0 * s);
-                f.y.push(t);
-                f.s.push(s);
-                f.t.push(t);
-                f.w.push(0.01 * sigma);
-                f.psi_x.push(0.001 * s);
-                f.psi_y.push(0.001 * t);
-                f.pressure.push(sigma.max(0.0));
-                f.gap.push((-sigma).max(0.0));
-                f.signed_gap.push(-0.01 * sigma);
-                f.v.push(0.1 * sigma);
-                f.sigma.push(sigma.max(0.0));
-                f.contact.push(sigma > 0.0);
-                f.s1_bottom.push(2.0 * sigma);
-                f.s1_top.push(-sigma);
-            }
-        }
-        let mut e = ElementField::default();
-        for je in 0..ny {
-            for ie in 0..nx {
-                let k = (ie + je * nx) as f64;
-                e.x.push(-1.5 + ie as f64);
-                e.y.push(-0.5 + je as f64);
-                e.mx.push(k);
-                e.my.push(2.0 * k);
-                e.mxy.push(-k);
-                e.qx.push(0.5 * k);
-                e.qy.push(0.25 * k);
-                e.bottom.push(6.0 * k, 12.0 * k, -6.0 * k);
-                e.top.push(-6.0 * k, -12.0 * k, 6.0 * k);
-            }
-        }
-        (f, e)
-    }
-}
+pub(crate) mod test_fixtures;

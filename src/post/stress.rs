@@ -9,6 +9,8 @@
 
 use serde::Serialize;
 
+use crate::mesh::Mesh;
+
 /// Principal stresses of a plane stress state: (σ₁, σ₂, θ) with σ₁ ≥ σ₂ and θ the direction of
 /// σ₁ from the x axis, in degrees in (−90, 90].
 pub fn principal(sx: f64, sy: f64, sxy: f64) -> (f64, f64, f64) {
@@ -62,6 +64,29 @@ pub fn face_states(m: [f64; 3], h: f64, eigen: [f64; 2]) -> ([f64; 3], [f64; 3])
     let bottom = [f * m[0] + eigen[1], f * m[1] + eigen[1], f * m[2]];
     let top = [-f * m[0] + eigen[0], -f * m[1] + eigen[0], -f * m[2]];
     (bottom, top)
+}
+
+/// A face's largest principal stress at the nodes: the element components averaged over the
+/// elements around each node, then their principal value.
+pub(super) fn recover_principal(mesh: &Mesh, face: &FaceStress) -> Vec<f64> {
+    let n = mesh.n_nodes();
+    let mut sum = vec![[0.0; 3]; n];
+    let mut count = vec![0u32; n];
+    for e in 0..mesh.n_elements() {
+        for &node in &mesh.element_nodes(e) {
+            sum[node][0] += face.sx[e];
+            sum[node][1] += face.sy[e];
+            sum[node][2] += face.sxy[e];
+            count[node] += 1;
+        }
+    }
+    sum.iter()
+        .zip(&count)
+        .map(|(s, &c)| {
+            let c = f64::from(c.max(1));
+            principal(s[0] / c, s[1] / c, s[2] / c).0
+        })
+        .collect()
 }
 
 /// The largest tension on a face and where it acts.
