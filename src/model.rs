@@ -71,6 +71,10 @@ pub struct Groups {
     /// Elastic layer only: its rigid base, rough or smooth (None for the other soils).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub base: Option<crate::foundation::layer::Base>,
+    /// Kerr only: Γ_c = D/(c μ L⁴) of its upper springs c (None for the other soils; Γ is the
+    /// lower springs' Γ_w and `shear` its shear layer's Γ_g).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub upper: Option<f64>,
 }
 
 impl Groups {
@@ -82,8 +86,13 @@ impl Groups {
                 length: h,
                 poisson: self.soil_nu.unwrap_or(0.0),
                 base: self.base.unwrap_or(crate::foundation::layer::Base::Rough),
+                local: 0.0,
             },
-            None => crate::foundation::SoilShape::length(self.decay_length()),
+            None => crate::foundation::SoilShape {
+                // Kerr: the upper springs' compliance over the lower ones', k/c = Γ_c/Γ_w.
+                local: self.upper.map_or(0.0, |u| u / self.gamma),
+                ..crate::foundation::SoilShape::length(self.decay_length())
+            },
         }
     }
 

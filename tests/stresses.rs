@@ -58,77 +58,6 @@ fn element_at(r: &Report, x: f64, y: f64) -> usize {
         .unwrap_or(0)
 }
 
-/// Gauss–Legendre nodes and weights on [−1, 1] (Golub–Welsch by Newton on P_n).
-fn gauss(n: usize) -> Vec<(f64, f64)> {
-    (0..n)
-        .map(|i| {
-            let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
-            let mut dp = 1.0;
-            for _ in 0..100 {
-                let (mut p0, mut p1) = (1.0, x);
-                for k in 2..=n {
-                    let p2 = ((2 * k - 1) as f64 * x * p1 - (k - 1) as f64 * p0) / k as f64;
-                    p0 = p1;
-                    p1 = p2;
-                }
-                dp = n as f64 * (x * p1 - p0) / (x * x - 1.0);
-                let dx = p1 / dp;
-                x -= dx;
-                if dx.abs() < 1e-15 {
-                    break;
-                }
-            }
-            (x, 2.0 / ((1.0 - x * x) * dp * dp))
-        })
-        .collect()
-}
-
-/// The infinite bonded Mindlin plate on Winkler springs under a uniform c × c square of total
-/// force `p`, at the square's centre: (m_x, w). With ψ = ∇φ the plate's symbol is
-/// ŵ = (1 + Dξ²/S) q̂ / (Dξ⁴ + (1 + Dξ²/S) k), m̂_x + m̂_y = D(1 + ν)ξ² q̂ / den; at the centre of
-/// the square m_x = m_y, so m_x(0) = (1 + ν)/(4π) ∫ Dξ³ Q̄(ξ)/den dξ with Q̄ the angular mean of
-/// q̂, Q̄(ξ) = 8q ∫₀^{π/4} R J₁(ξR)/ξ dt, R = c/(2 cos t). Quadrature: 8-point Gauss panels in ξ
-/// up to 400/c (the integrand decays as ξ^(−5/2) and oscillates: the tail is below 1e-4 of the
-/// whole), panels in t finer as ξc grows.
-fn infinite_plate(c: f64, p: f64) -> (f64, f64) {
-    let d = rigidity();
-    let s = 5.0 / 6.0 * E / (2.0 * (1.0 + NU)) * H;
-    let q = p / (c * c);
-    let g8 = gauss(8);
-    let g4 = gauss(4);
-    let qbar = |xi: f64| -> f64 {
-        if xi == 0.0 {
-            return p;
-        }
-        let panels = 4 + (xi * c) as usize / 2;
-        let width = std::f64::consts::FRAC_PI_4 / panels as f64;
-        let mut sum = 0.0;
-        for k in 0..panels {
-            for &(x, w) in &g4 {
-                let t = width * (k as f64 + 0.5 + 0.5 * x);
-                let r = c / (2.0 * t.cos());
-                sum += 0.5 * width * w * r * libm::j1(xi * r) / xi;
-            }
-        }
-        8.0 * q * sum
-    };
-    let (mut m, mut w0) = (0.0, 0.0);
-    let step = 0.5 / c;
-    let panels = (400.0 / c / step) as usize;
-    for k in 0..panels {
-        for &(x, wt) in &g8 {
-            let xi = step * (k as f64 + 0.5 + 0.5 * x);
-            let a = 1.0 + d * xi * xi / s;
-            let den = d * xi.powi(4) + a * K;
-            let qb = qbar(xi);
-            m += 0.5 * step * wt * d * xi.powi(3) * qb / den;
-            w0 += 0.5 * step * wt * xi * a * qb / den;
-        }
-    }
-    let pi = std::f64::consts::PI;
-    ((1.0 + NU) / (4.0 * pi) * m, w0 / (2.0 * pi))
-}
-
 /// Westergaard's 1948 interior stress under a circle of radius a (the small-load expansion of
 /// the thin plate's exact solution), tension at the bottom.
 fn westergaard_interior(a: f64, p: f64) -> f64 {
@@ -175,7 +104,12 @@ fn interior_stress_against_the_infinite_plate_and_westergaard() {
     };
     let (coarse, _) = centre(240);
     let (fine, a) = centre(480);
-    let (m_ref, w_ref) = infinite_plate(c, P);
+    let (m_ref, w_ref) = common::infinite::centre(
+        &common::infinite::Plate { e: E, nu: NU, h: H },
+        &|_xi: f64| 1.0 / K,
+        c,
+        P,
+    );
     let sigma_ref = 6.0 * m_ref / (H * H);
     let (e1, e2) = ((coarse - sigma_ref).abs(), (fine - sigma_ref).abs());
     let rate = (e1 / e2).log2();

@@ -53,6 +53,16 @@ pub enum Kernel {
         /// The correction F of the layer's Poisson's ratio.
         table: Arc<super::layer::LayerTable>,
     },
+    /// Kerr's soil: the Pasternak kernel of the lower springs k and shear layer G (λ = √(G/k),
+    /// c = 1/k) plus the upper springs' local part (k/c_u) δ(ρ): T = (1/k)·(Pasternak pairs +
+    /// (k/c_u) ∫ N_a N_b), the local part only in each element's pair with itself (the
+    /// consistent mass of the bilinear pressure).
+    Kerr {
+        /// λ in the caller's length unit.
+        lambda: f64,
+        /// k/c_u.
+        local: f64,
+    },
 }
 
 impl Kernel {
@@ -64,6 +74,7 @@ impl Kernel {
                 bessel_k0(rho / lambda) / (2.0 * std::f64::consts::PI * lambda * lambda)
             }
             Kernel::ElasticLayer { depth, table } => table.kernel(rho, *depth),
+            Kernel::Kerr { lambda, .. } => Kernel::Pasternak { lambda: *lambda }.value(rho),
         }
     }
 
@@ -73,6 +84,7 @@ impl Kernel {
             Kernel::Boussinesq => None,
             Kernel::Pasternak { lambda } => Some(PASTERNAK_CUTOFF * lambda),
             Kernel::ElasticLayer { depth, .. } => Some(super::layer::LAYER_CUTOFF * depth),
+            Kernel::Kerr { lambda, .. } => Some(PASTERNAK_CUTOFF * lambda),
         }
     }
 
@@ -82,6 +94,7 @@ impl Kernel {
             Kernel::Boussinesq => f64::INFINITY,
             Kernel::Pasternak { lambda } => *lambda,
             Kernel::ElasticLayer { depth, .. } => *depth,
+            Kernel::Kerr { lambda, .. } => *lambda,
         }
     }
 
@@ -90,6 +103,27 @@ impl Kernel {
     pub fn pair_block(&self, di: usize, dj: usize, hx: f64, hy: f64) -> [[f64; 4]; 4] {
         match self {
             Kernel::Boussinesq => super::boussinesq::pair_block(di, dj, hx, hy),
+            Kernel::Kerr { lambda, local } => {
+                let mut block =
+                    generic_pair_block(&Kernel::Pasternak { lambda: *lambda }, di, dj, hx, hy);
+                if di == 0 && dj == 0 {
+                    // ∫_e N_a N_b dA of bilinear shape functions: hx hy/36 · (4, 2, 1) for the
+                    // same, an edge-adjacent and the opposite corner.
+                    for (a, row) in block.iter_mut().enumerate() {
+                        for (b, v) in row.iter_mut().enumerate() {
+                            let same_x = NODE_XI[a] == NODE_XI[b];
+                            let same_y = NODE_ETA[a] == NODE_ETA[b];
+                            let weight = match (same_x, same_y) {
+                                (true, true) => 4.0,
+                                (false, false) => 1.0,
+                                _ => 2.0,
+                            };
+                            *v += local * weight * hx * hy / 36.0;
+                        }
+                    }
+                }
+                block
+            }
             _ => generic_pair_block(self, di, dj, hx, hy),
         }
     }

@@ -28,10 +28,14 @@ pub enum FoundationKind {
     /// Homogeneous elastic layer of depth h on a rigid base (rough or smooth): the half-space's kernel
     /// minus a smooth correction from Burmister's symbol ([`layer`]).
     ElasticLayer,
+    /// Kerr's three-parameter soil: springs c (upper) in series with a Pasternak soil (lower
+    /// springs k, shear layer G): compliance 1/c + 1/(k + Gξ²), a local part and the Pasternak
+    /// kernel ([`kernel::Kernel::Kerr`]). Reissner's continuum-derived foundation is one.
+    Kerr,
 }
 
 crate::names!(FoundationKind, Winkler => "winkler", HalfSpace => "half-space",
-    Pasternak => "pasternak", ElasticLayer => "elastic-layer");
+    Pasternak => "pasternak", ElasticLayer => "elastic-layer", Kerr => "kerr");
 
 impl FoundationKind {
     /// True for the local (Winkler) soil, whose T is diagonal; every other soil is a non-local
@@ -52,6 +56,10 @@ impl FoundationKind {
                 depth: shape.length,
                 table: layer::LayerTable::shared(shape.poisson, shape.base),
             }),
+            FoundationKind::Kerr => Some(kernel::Kernel::Kerr {
+                lambda: shape.length,
+                local: shape.local,
+            }),
         }
     }
 }
@@ -68,6 +76,8 @@ pub struct SoilShape {
     pub poisson: f64,
     /// The layer's base.
     pub base: layer::Base,
+    /// Kerr: the compliance of the upper springs over the lower ones', k/c.
+    pub local: f64,
 }
 
 impl Default for SoilShape {
@@ -83,6 +93,7 @@ impl SoilShape {
             length,
             poisson: 0.0,
             base: layer::Base::Rough,
+            local: 0.0,
         }
     }
 }

@@ -147,8 +147,12 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
             _ => String::new(),
         },
     };
+    // A Kerr soil's upper springs.
+    let upper = g
+        .upper
+        .map_or(String::new(), |u| format!(", Γ_c = {u:.4e}"));
     l.push(format!(
-        "  foundation : {} (Γ = {:.4e}{shear}, Δ = {:.4e}, μ = {:.4}, ν = {})",
+        "  foundation : {} (Γ = {:.4e}{shear}{upper}, Δ = {:.4e}, μ = {:.4}, ν = {})",
         s.foundation, g.gamma, g.delta, g.mu, g.nu
     ));
     l.push(format!(

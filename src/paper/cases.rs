@@ -238,6 +238,7 @@ pub(super) fn foundation_names(f: FoundationKind) -> FoundationNames {
         FoundationKind::Winkler => ("Winkler subgrade", "Winkler", "winkler"),
         FoundationKind::Pasternak => ("Pasternak soil", "Pasternak", "pasternak"),
         FoundationKind::ElasticLayer => ("elastic layer", "elastic layer", "layer"),
+        FoundationKind::Kerr => ("Kerr soil", "Kerr", "kerr"),
     };
     FoundationNames { label, short, tag }
 }

@@ -81,6 +81,7 @@ impl ModelBuilder {
             foundation,
             gamma,
             shear: None,
+            upper: None,
             depth: None,
             soil_nu: None,
             base: None,

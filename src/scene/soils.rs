@@ -34,6 +34,7 @@ impl PlateGroups {
             depth: None,
             soil_nu: None,
             base: None,
+            upper: None,
         }
     }
 }
@@ -41,11 +42,21 @@ impl PlateGroups {
 /// The groups of the soil of `[foundation]` (SI units) under a plate of half-length `l` (m)
 /// and rigidity `d` (N·m).
 pub(super) fn si(f: &FoundationSpec, plate: PlateGroups, l: f64, d: f64) -> Result<Groups> {
+    if f.upper_modulus.is_some() && f.model != FoundationKind::Kerr {
+        return Err(Error::invalid(
+            "foundation.upper_modulus",
+            format!(
+                "belongs to model = \"kerr\"; a {} foundation has no upper springs (leave it out)",
+                f.model.name()
+            ),
+        ));
+    }
     match f.model {
         FoundationKind::Winkler => winkler_si(f, plate, l, d),
         FoundationKind::HalfSpace => half_space_si(f, plate, l, d),
         FoundationKind::Pasternak => pasternak_si(f, plate, l, d),
         FoundationKind::ElasticLayer => elastic_layer_si(f, plate, l, d),
+        FoundationKind::Kerr => kerr_si(f, plate, l, d),
     }
 }
 
@@ -55,11 +66,18 @@ pub(super) fn dimensionless(
     plate: PlateGroups,
     gamma: f64,
 ) -> Result<Groups> {
+    if g.upper.is_some() && g.foundation != FoundationKind::Kerr {
+        return Err(Error::invalid(
+            "dimensionless.upper",
+            format!("belongs to foundation = \"kerr\"; a {} foundation has no upper springs (leave it out)", g.foundation.name()),
+        ));
+    }
     match g.foundation {
         FoundationKind::Winkler => winkler_dimensionless(g, plate, gamma),
         FoundationKind::HalfSpace => half_space_dimensionless(g, plate, gamma),
         FoundationKind::Pasternak => pasternak_dimensionless(g, plate, gamma),
         FoundationKind::ElasticLayer => elastic_layer_dimensionless(g, plate, gamma),
+        FoundationKind::Kerr => kerr_dimensionless(g, plate, gamma),
     }
 }
 
@@ -131,6 +149,101 @@ fn pasternak_si(f: &FoundationSpec, p: PlateGroups, l: f64, d: f64) -> Result<Gr
         shear: Some(shear),
         ..p.on(FoundationKind::Pasternak, d / (k * p.mu * l.powi(4)))
     })
+}
+
+/// Kerr's soil: upper springs c (`upper_modulus`, N/m³) in series with a Pasternak soil of
+/// springs k (`modulus`) and shear layer G (`shear_modulus`, N/m): Γ_w of k, Γ_g of G and
+/// Γ_c = D/(c μ L⁴). Or, with `reissner = true`, Reissner's layer of `youngs_modulus` E_s,
+/// `poissons_ratio` ν_s and `depth` H on a rigid base, which is the Kerr soil c₁ = E_oed/H,
+/// c₂ = G_s H/3: k = 4c₁/3, c = 4c₁, G = 4c₂/3 (E_oed = E(1 − ν)/((1 + ν)(1 − 2ν)), so that a
+/// long load settles p H/E_oed, as the layer does).
+fn kerr_si(f: &FoundationSpec, p: PlateGroups, l: f64, d: f64) -> Result<Groups> {
+    let (k, g_s, c) = if f.youngs_modulus.is_some() || f.depth.is_some() {
+        if f.modulus.is_some() || f.shear_modulus.is_some() || f.upper_modulus.is_some() {
+            return Err(Error::invalid(
+                "foundation.modulus",
+                "a Kerr soil takes either its three constants (modulus, shear_modulus, upper_modulus) or Reissner's layer (youngs_modulus, poissons_ratio, depth), not both",
+            ));
+        }
+        if f.base.is_some() {
+            return Err(Error::invalid(
+                "foundation.base",
+                "belongs to model = \"elastic-layer\"; Reissner's layer on a Kerr soil has its base fixed by its assumptions",
+            ));
+        }
+        let (e, nu) = reissner_soil(f)?;
+        let h = finite_positive(
+            "foundation.depth",
+            f.depth.ok_or_else(|| {
+                Error::invalid(
+                    "foundation.depth",
+                    "missing: the depth H of Reissner's layer, m",
+                )
+            })?,
+            "m",
+        )?;
+        let e_oed = e * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
+        let c1 = e_oed / h;
+        let c2 = e / (2.0 * (1.0 + nu)) * h / 3.0;
+        (4.0 * c1 / 3.0, 4.0 * c2 / 3.0, 4.0 * c1)
+    } else {
+        let get = |key: &str, v: Option<f64>, what: &str, unit: &str| -> Result<f64> {
+            let field = format!("foundation.{key}");
+            let v = v.ok_or_else(|| Error::invalid(&field, format!("missing: {what}")))?;
+            finite_positive(&field, v, unit)
+        };
+        (
+            get(
+                "modulus",
+                f.modulus,
+                "the Kerr soil's lower springs k in N/m³",
+                "N/m³",
+            )?,
+            get(
+                "shear_modulus",
+                f.shear_modulus,
+                "the Kerr soil's shear layer G in N/m",
+                "N/m",
+            )?,
+            get(
+                "upper_modulus",
+                f.upper_modulus,
+                "the Kerr soil's upper springs c in N/m³ (c → ∞ is the Pasternak soil)",
+                "N/m³",
+            )?,
+        )
+    };
+    let gamma = d / (k * p.mu * l.powi(4));
+    let shear = pasternak_length("foundation.shear_modulus", g_s * l * l / d, gamma, p.mu)?;
+    Ok(Groups {
+        shear: Some(shear),
+        upper: Some(d / (c * p.mu * l.powi(4))),
+        ..p.on(FoundationKind::Kerr, gamma)
+    })
+}
+
+/// Reissner's layer's E_s and ν_s (`youngs_modulus`, `poissons_ratio`).
+fn reissner_soil(f: &FoundationSpec) -> Result<(f64, f64)> {
+    let e = finite_positive(
+        "foundation.youngs_modulus",
+        f.youngs_modulus.ok_or_else(|| {
+            Error::invalid(
+                "foundation.youngs_modulus",
+                "missing: the layer's Young's modulus E_s in Pa",
+            )
+        })?,
+        "Pa",
+    )?;
+    let nu = poisson(
+        "foundation.poissons_ratio",
+        f.poissons_ratio.ok_or_else(|| {
+            Error::invalid(
+                "foundation.poissons_ratio",
+                "missing: the layer's Poisson's ratio ν_s",
+            )
+        })?,
+    )?;
+    Ok((e, nu))
 }
 
 /// An elastic layer of E_s (Pa) and ν_s, `depth` h (m) down to a rigid `base`: the
@@ -277,6 +390,32 @@ fn no_shear_layer(g: &DimensionlessSpec) -> Result<()> {
         ));
     }
     Ok(())
+}
+
+/// Kerr: Γ_w of its lower springs, Γ_g of its shear layer and Γ_c = D/(c μ L⁴) of its upper
+/// springs (`upper`).
+fn kerr_dimensionless(g: &DimensionlessSpec, p: PlateGroups, gamma: f64) -> Result<Groups> {
+    no_rigid_base(g)?;
+    let shear = g.shear.ok_or_else(|| {
+        Error::invalid(
+            "dimensionless.shear",
+            "missing: the Kerr soil's shear parameter Γ_g = G L²/D",
+        )
+    })?;
+    let shear = finite_positive("dimensionless.shear", shear, "Γ_g = G L²/D")?;
+    let shear = pasternak_length("dimensionless.shear", shear, gamma, p.mu)?;
+    let upper = g.upper.ok_or_else(|| {
+        Error::invalid(
+            "dimensionless.upper",
+            "missing: the Kerr soil's upper springs Γ_c = D/(c μ L⁴)",
+        )
+    })?;
+    let upper = finite_positive("dimensionless.upper", upper, "Γ_c = D/(c μ L⁴)")?;
+    Ok(Groups {
+        shear: Some(shear),
+        upper: Some(upper),
+        ..p.on(FoundationKind::Kerr, gamma)
+    })
 }
 
 /// Refuse `depth`, `soil_nu` and `base` on a soil without a rigid base.

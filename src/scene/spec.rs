@@ -62,6 +62,9 @@ pub struct FoundationSpec {
     /// Pasternak shear-layer modulus G_p, N/m (force per unit length).
     #[serde(default)]
     pub shear_modulus: Option<f64>,
+    /// Kerr: the upper springs' modulus c, N/m³.
+    #[serde(default)]
+    pub upper_modulus: Option<f64>,
     /// Half-space or elastic layer E_s, Pa.
     #[serde(default)]
     pub youngs_modulus: Option<f64>,
@@ -90,6 +93,7 @@ impl FoundationSpec {
             model: FoundationKind::Winkler,
             modulus: Some(k),
             shear_modulus: None,
+            upper_modulus: None,
             youngs_modulus: None,
             poissons_ratio: None,
             depth: None,
@@ -105,6 +109,7 @@ impl FoundationSpec {
             model: FoundationKind::HalfSpace,
             modulus: None,
             shear_modulus: None,
+            upper_modulus: None,
             youngs_modulus: Some(e),
             poissons_ratio: Some(nu),
             depth: None,
@@ -187,6 +192,9 @@ pub struct DimensionlessSpec {
     /// Pasternak only: the shear parameter Γ_g = G_p L²/D.
     #[serde(default)]
     pub shear: Option<f64>,
+    /// Kerr: Γ_c = D/(c μ L⁴) of the upper springs.
+    #[serde(default)]
+    pub upper: Option<f64>,
     /// Elastic layer only: the depth ratio h/L (layer depth over the plate's half-length).
     #[serde(default)]
     pub depth: Option<f64>,

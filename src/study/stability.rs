@@ -61,7 +61,8 @@ impl StabilityParam {
                 // (the other non-local soils, Pasternak and the elastic layer, likewise).
                 FoundationKind::HalfSpace
                 | FoundationKind::Pasternak
-                | FoundationKind::ElasticLayer => {
+                | FoundationKind::ElasticLayer
+                | FoundationKind::Kerr => {
                     vec![8.0, 16.0, 32.0, 64.0, 128.0, 512.0]
                 }
             },

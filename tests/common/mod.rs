@@ -1,6 +1,8 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
 
+pub mod infinite;
+
 use liftoff::model::ConstraintPoints;
 use liftoff::post::Report;
 use liftoff::study::{eps_sweep, log_space};
