@@ -86,7 +86,7 @@ fn unknown_keys_and_wrong_types_are_parse_errors_naming_the_key() {
             "thicknes",
         ),
         ("[mesh]", "[meshes]", "meshes"),
-        ("model = \"winkler\"", "model = \"kerr\"", "kerr"),
+        ("model = \"winkler\"", "model = \"winkel\"", "winkel"),
         ("kind = \"point\"", "kind = \"wind\"", "wind"),
         ("thickness = 0.25", "thickness = \"thick\"", "thickness"),
     ];
