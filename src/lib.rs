@@ -48,6 +48,7 @@ pub mod error;
 pub mod examples;
 pub mod foundation;
 pub mod integrals;
+pub mod layout;
 pub mod mesh;
 pub mod method;
 pub mod metrics;
