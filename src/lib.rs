@@ -66,6 +66,7 @@ pub mod scene;
 pub mod solve;
 pub mod study;
 pub mod summary;
+pub mod system;
 
 pub use analysis::{analyse, Analysis};
 pub use entry::{load, run, Outcome, Source};
