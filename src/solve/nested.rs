@@ -20,7 +20,7 @@ pub const NESTED_MIN_NODES: usize = 4096;
 /// The answer is the same (the QP's solution is unique); a coarse solve that fails or does
 /// not converge is dropped for a cold start.
 pub fn solve_nested(model: &Model, ops: &Operators, method: &Method) -> Result<Solution> {
-    if !takes_start(ops, method) || ops.n_sigma() < NESTED_MIN_NODES {
+    if !takes_start(ops, method) || ops.n_sigma() < NESTED_MIN_NODES || ops.mesh.topo.is_some() {
         return solve(ops, method);
     }
     let mut coarse = model.clone();

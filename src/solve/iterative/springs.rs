@@ -50,6 +50,10 @@ impl SpringPlate {
     /// element counts are even, fine otherwise.
     pub fn new(ops: &Operators, coarse: bool) -> Result<Self> {
         let m = &ops.mesh;
+        // A jointed plate: the fine plate (its coarse plate comes with the joints' own step).
+        if m.topo.is_some() {
+            return Self::fine(ops);
+        }
         if coarse && m.nx.is_multiple_of(2) && m.ny.is_multiple_of(2) && m.nx >= 2 && m.ny >= 2 {
             Self::coarse(ops)
         } else {

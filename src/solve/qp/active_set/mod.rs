@@ -44,11 +44,10 @@
 
 mod point;
 mod primal_dual;
-mod projection;
 mod run;
 mod safeguard;
 
-pub use projection::project;
+pub use crate::solve::projection::project;
 
 use std::time::Instant;
 
