@@ -275,6 +275,19 @@ impl Layout {
             .collect()
     }
 
+    /// True when every joint line of the plate [−1, 1] × [−μ, μ] lies on an element edge of a
+    /// grid of `elements` (to 1e-6 of an element).
+    pub fn fits(&self, elements: [usize; 2], mu: f64) -> bool {
+        self.joints.iter().all(|j| {
+            let (half, n) = match j.axis {
+                Axis::X => (1.0, elements[0]),
+                Axis::Y => (mu, elements[1]),
+            };
+            let f = (j.at + half) / (2.0 * half) * n as f64;
+            (f - f.round()).abs() <= 1e-6
+        })
+    }
+
     /// True when some joint cuts the plate (any kind but continuous).
     pub fn cuts(&self) -> bool {
         self.joints.iter().any(|j| j.kind.doubles())

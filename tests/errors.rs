@@ -96,6 +96,8 @@ fn every_catalogue_entry_has_its_exit_code_and_message() {
         Case { id: "E58 panel overridden twice", scene: edit("[mesh]", "[[joint]]\nx = 0.0\nkind = \"free\"\n[[panel]]\nat = [1.0, 1.0]\nthickness = 0.3\n[[panel]]\nat = [2.0, -1.0]\nyoungs_modulus = 35e9\n[mesh]"), args: vec![], code: 2, message: "which panel[0] already overrides" },
         Case { id: "E58 panel override that changes nothing", scene: edit("[mesh]", "[[panel]]\nat = [1.0, 1.0]\n[mesh]"), args: vec![], code: 2, message: "the override changes nothing" },
         Case { id: "E59 point load on a joint", scene: edit("[mesh]", "[[joint]]\nx = 1.5\nkind = \"free\"\n[mesh]"), args: vec![], code: 2, message: "load[0].x`: lies on joint J1 (x = 1.500000 m), a free joint: which panel carries it is ambiguous" },
+        Case { id: "E19 a free panel loaded only upwards", scene: edit("force = 2.0e5", "force = -2.0e5\n[[load]]\nkind = \"point\"\nx = -1.5\ny = 1.0\nforce = 5.0e5\n[[joint]]\nx = 0.0\nkind = \"free\""), args: vec![], code: 3, message: "panel (2, 1) (joined to no other by a joint that transfers load): the net load is upward or zero" },
+        Case { id: "E20 loads that turn a hinge", scene: edit("force = 2.0e5", "force = -1.0e5\n[[load]]\nkind = \"point\"\nx = -1.5\ny = 1.0\nforce = 5.0e5\n[[joint]]\nx = 0.0\nkind = \"aggregate\"\nstiffness = 1e8"), args: vec![], code: 3, message: "the loads on panels (1, 1), (2, 1) cannot be balanced by pressures that only push: a panel would tip over or turn about a joint" },
         Case { id: "E29 unreadable scene", scene: None, args: vec![], code: 5, message: "cannot read scene file" },
     ];
     let dir = tempfile::tempdir().expect("tempdir");
