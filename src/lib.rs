@@ -49,6 +49,7 @@ pub mod error;
 pub mod examples;
 pub mod foundation;
 pub mod integrals;
+pub mod layout;
 pub mod mesh;
 pub mod method;
 pub mod metrics;
@@ -66,6 +67,7 @@ pub mod scene;
 pub mod solve;
 pub mod study;
 pub mod summary;
+pub mod system;
 
 pub use analysis::{analyse, Analysis};
 pub use entry::{load, run, Outcome, Source};

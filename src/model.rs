@@ -18,6 +18,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::foundation::FoundationKind;
+use crate::layout::Layout;
 use crate::mesh::Mesh;
 
 /// Where σ ≥ 0 is imposed.
@@ -403,6 +404,9 @@ pub struct Model {
     /// What P is: a quarter of the net load, or, when the loads add up to zero (only a bonded
     /// plate can carry such loads), the reference that stands in for it.
     pub reference: LoadReference,
+    /// Joint lines and panels with their own section ([`crate::layout`]); empty for a plate of
+    /// one piece.
+    pub layout: Layout,
 }
 
 /// The force P that V = D w / (P L²) and σ = μ L² r / P are reported against.
@@ -475,8 +479,8 @@ impl Model {
         (5.0 * (1.0 - g.nu) * g.mu * g.delta).sqrt()
     }
 
-    /// True when loads, voids and zones are all unchanged by the mirror about x = 0 (`about_x`)
-    /// or y = 0.
+    /// True when loads, voids, zones and the layout (joints and panels) are all unchanged by
+    /// the mirror about x = 0 (`about_x`) or y = 0.
     pub fn symmetric(&self, about_x: bool) -> bool {
         let voids: Vec<_> = self.voids.iter().map(|v| (v.x, v.y, v.depth)).collect();
         let zones: Vec<_> = self
@@ -487,6 +491,7 @@ impl Model {
         loads_symmetric(&self.loads, about_x)
             && rects_symmetric(&voids, about_x)
             && rects_symmetric(&zones, about_x)
+            && self.layout.symmetric(about_x)
     }
 
     /// The grid to solve on: a half or a quarter where the loads allow it and the element counts
@@ -497,7 +502,9 @@ impl Model {
 }
 
 /// The one grid for several models of the same plate (the combinations of a scene): halved or
-/// quartered only where every model's loads, voids and zones allow it.
+/// quartered only where every model's loads, voids, zones and layout allow it (not about a line
+/// that a joint cuts the plate along), with the layout's node copies
+/// ([`Mesh::with_layout`]; the combinations of a scene share one layout).
 pub fn plan_shared_mesh(models: &[Model]) -> (Mesh, Vec<String>) {
     let mut notes = Vec::new();
     let Some(first) = models.first() else {
@@ -520,9 +527,22 @@ pub fn plan_shared_mesh(models: &[Model]) -> (Mesh, Vec<String>) {
             ));
             sy = false;
         }
+        for (about_x, reduce, line, what) in [
+            (true, &mut sx, "x = 0", "width"),
+            (false, &mut sy, "y = 0", "depth"),
+        ] {
+            if let Some(j) = (*reduce)
+                .then(|| first.layout.cut_on_symmetry_line(about_x))
+                .flatten()
+            {
+                notes.push(format!(
+                    "joint {} lies on the symmetry line {line}: modelling the whole {what}",
+                    j.name
+                ));
+                *reduce = false;
+            }
+        }
     }
-    (
-        Mesh::new(2.0, 2.0 * first.groups.mu, first.elements, sx, sy),
-        notes,
-    )
+    let mesh = Mesh::new(2.0, 2.0 * first.groups.mu, first.elements, sx, sy);
+    (mesh.with_layout(&first.layout), notes)
 }

@@ -161,6 +161,15 @@ pub fn element_stiffness(section: &Section, hx: f64, hy: f64) -> ElementMatrix {
 /// columns are laid out first and the element values added into place, without triplets.
 pub fn assemble_stiffness(mesh: &Mesh, dofs: &DofMap, section: &Section) -> sprs::CsMat<f64> {
     let ke = element_stiffness(section, mesh.hx, mesh.hy);
+    assemble_structured(mesh, dofs, |_| &ke)
+}
+
+/// The structured assembly with element e's matrix `ke_of(e)` (a grid without node copies).
+pub(crate) fn assemble_structured<'a>(
+    mesh: &Mesh,
+    dofs: &DofMap,
+    ke_of: impl Fn(usize) -> &'a ElementMatrix,
+) -> sprs::CsMat<f64> {
     let n = dofs.n_eq();
     let (nnx, nny) = (mesh.nodes_x(), mesh.nodes_y());
     // Column pattern: equations of the neighbouring nodes, sorted (node-major numbering makes
@@ -193,6 +202,7 @@ pub fn assemble_stiffness(mesh: &Mesh, dofs: &DofMap, section: &Section) -> sprs
     }
     let mut data = vec![0.0; indices.len()];
     for e in 0..mesh.n_elements() {
+        let ke = ke_of(e);
         let eqs = dofs.element_eqs(&mesh.element_nodes(e));
         for (b, eb) in eqs.iter().enumerate() {
             let Some(col) = *eb else { continue };

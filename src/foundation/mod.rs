@@ -2,7 +2,10 @@
 //! pressure shape functions) and the coupling B between plate deflections and pressures.
 //!
 //! The pressure σ is interpolated with the same bilinear functions f_i as the deflection, one
-//! unknown per model node. The discrete gap is g = Tσ − Bᵀu and the plate feels the load −Bσ.
+//! unknown per model node — per node copy on a jointed plate ([`crate::mesh::Topology`]), so
+//! each side of a joint has its own pressure over its own tributary area, and every element loop
+//! here reads the copies of its own side through [`Mesh::element_nodes`]. The discrete gap is
+//! g = Tσ − Bᵀu and the plate feels the load −Bσ.
 
 pub mod boussinesq;
 pub mod fft;

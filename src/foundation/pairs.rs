@@ -5,6 +5,11 @@
 //! to the mirrored offset with the local nodes reflected) and scattered into the dense matrix.
 //! The FFT route ([`super::fft`]) reads the same table.
 //!
+//! The blocks are element-pair 4 × 4 corner blocks, scattered through [`Mesh::element_nodes`]:
+//! on a jointed plate, whose elements hold the node copies of their own side, that is the exact
+//! Galerkin T of a pressure bilinear per element and discontinuous across the joints, over one
+//! soil surface (the cell-corner form) — with no change here.
+//!
 //! On a symmetry-reduced model the pressure is extended by mirror images to the whole plate, so
 //! T includes the settlement caused by the images: the quarter model's quadratic form is exactly
 //! a quarter of the whole plate's for symmetric pressures.

@@ -2,7 +2,8 @@
 //!
 //! With the lumped coupling B = diag(∫ f_i) the discrete gap Tσ − Bᵀu vanishes node by node
 //! when σ_i = K w_i: the foundation is a bed of independent springs of stiffness K ∫ f_i, and
-//! the bonded and penalised problems keep the sparsity of the plate stiffness.
+//! the bonded and penalised problems keep the sparsity of the plate stiffness. On a jointed plate
+//! each node copy is one spring over its own side's tributary area.
 
 use super::{nodal_areas, Compliance};
 use crate::mesh::Mesh;

@@ -42,6 +42,8 @@ impl Model {
                 load: Vec::new(),
                 combination: Vec::new(),
                 void: Vec::new(),
+                joint: Vec::new(),
+                panel: Vec::new(),
                 mesh: MeshSpec::default(),
                 solver: SolverSpec::default(),
             },
@@ -204,6 +206,19 @@ impl ModelBuilder {
         } else if let Some(d) = self.file.dimensionless.as_mut() {
             d.allowable_pressure = Some(p);
         }
+        self
+    }
+
+    /// A joint line across the plate ([`super::JointSpec`]: `x` or `y` in m for SI scenes, s or
+    /// t for dimensionless ones; its kind and constants).
+    pub fn joint(mut self, joint: super::JointSpec) -> Self {
+        self.file.joint.push(joint);
+        self
+    }
+
+    /// A panel with its own thickness or Young's modulus ([`super::PanelSpec`]).
+    pub fn panel(mut self, panel: super::PanelSpec) -> Self {
+        self.file.panel.push(panel);
         self
     }
 

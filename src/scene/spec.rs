@@ -3,6 +3,7 @@
 use serde::Deserialize;
 
 use crate::foundation::FoundationKind;
+use crate::layout::{Axis, JointType};
 use crate::method::{Contact, MethodKind, QpForm, QpSolver, Route};
 use crate::model::{ConstraintPoints, SymmetryMode};
 
@@ -218,6 +219,148 @@ pub struct DimensionlessSpec {
     pub zone: Vec<ZoneSpec>,
 }
 
+/// One `[[joint]]`: a line across the whole plate, `x = …` or `y = …` (m from the plate's
+/// centre; s or t in a dimensionless scene), and its load transfer.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct JointSpec {
+    /// The line x = this (m, or s).
+    #[serde(default)]
+    pub x: Option<f64>,
+    /// The line y = this (m, or t).
+    #[serde(default)]
+    pub y: Option<f64>,
+    /// free | continuous | aggregate | tied | dowels.
+    pub kind: JointType,
+    /// Name for reports (default J1, J2 … in file order).
+    #[serde(default)]
+    pub name: Option<String>,
+    /// Aggregate and tied: the shear stiffness AGG per unit length per unit relative deflection,
+    /// N/m² (dimensionless: c L³/D).
+    #[serde(default)]
+    pub stiffness: Option<f64>,
+    /// Tied: the moment per unit length per unit relative normal rotation, N·m/m per rad
+    /// (dimensionless: c_r L/D).
+    #[serde(default)]
+    pub rotational_stiffness: Option<f64>,
+    /// Dowels: distance between bars along the joint, m (dimensionless: in the joint's own
+    /// coordinate, t for a line x = …, s for y = …).
+    #[serde(default)]
+    pub spacing: Option<f64>,
+    /// Dowels with `spacing`: distance of the first bar from the plate edge where the joint
+    /// starts (its lower / left end); default half the spacing.
+    #[serde(default)]
+    pub offset: Option<f64>,
+    /// Dowels: the bars' positions along the joint (y of each bar on a line x = …, x on y = …;
+    /// m from the centre, or t / s), instead of `spacing`.
+    #[serde(default)]
+    pub positions: Option<Vec<f64>>,
+    /// Dowels (SI): bar diameter d, m.
+    #[serde(default)]
+    pub diameter: Option<f64>,
+    /// Dowels (SI): the bar's Young's modulus E_d, Pa.
+    #[serde(default)]
+    pub youngs_modulus: Option<f64>,
+    /// Dowels (SI): joint opening z, m.
+    #[serde(default)]
+    pub opening: Option<f64>,
+    /// Dowels (SI): modulus of dowel support K, N/m³.
+    #[serde(default)]
+    pub support_modulus: Option<f64>,
+    /// Dowels: the spring of one bar directly, N/m (dimensionless: k_d L²/D), instead of the
+    /// bar's properties.
+    #[serde(default)]
+    pub dowel_stiffness: Option<f64>,
+}
+
+impl JointSpec {
+    /// A joint line x = `at` (Axis::X) or y = `at` of the given kind, without parameters.
+    pub fn line(axis: Axis, at: f64, kind: JointType) -> Self {
+        Self {
+            x: (axis == Axis::X).then_some(at),
+            y: (axis == Axis::Y).then_some(at),
+            kind,
+            name: None,
+            stiffness: None,
+            rotational_stiffness: None,
+            spacing: None,
+            offset: None,
+            positions: None,
+            diameter: None,
+            youngs_modulus: None,
+            opening: None,
+            support_modulus: None,
+            dowel_stiffness: None,
+        }
+    }
+
+    /// An aggregate joint of shear stiffness `stiffness` (N/m², or c L³/D).
+    pub fn aggregate(axis: Axis, at: f64, stiffness: f64) -> Self {
+        Self {
+            stiffness: Some(stiffness),
+            ..Self::line(axis, at, JointType::Aggregate)
+        }
+    }
+
+    /// A tied joint of shear and rotational stiffness.
+    pub fn tied(axis: Axis, at: f64, stiffness: f64, rotational: f64) -> Self {
+        Self {
+            stiffness: Some(stiffness),
+            rotational_stiffness: Some(rotational),
+            ..Self::line(axis, at, JointType::Tied)
+        }
+    }
+
+    /// A doweled joint with bars of spring `stiffness` (N/m, or k_d L²/D) at `positions`.
+    pub fn dowels(axis: Axis, at: f64, stiffness: f64, positions: Vec<f64>) -> Self {
+        Self {
+            dowel_stiffness: Some(stiffness),
+            positions: Some(positions),
+            ..Self::line(axis, at, JointType::Dowels)
+        }
+    }
+
+    /// The same joint with a name.
+    pub fn named(mut self, name: impl Into<String>) -> Self {
+        self.name = Some(name.into());
+        self
+    }
+}
+
+/// One `[[panel]]`: the panel holding the point `at` with its own thickness or Young's modulus
+/// (same ν and χ as the plate).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PanelSpec {
+    /// Any point inside the panel, [x, y] (m, or (s, t)).
+    pub at: [f64; 2],
+    /// The panel's thickness, m (SI scenes).
+    #[serde(default)]
+    pub thickness: Option<f64>,
+    /// The panel's Young's modulus, Pa (SI scenes).
+    #[serde(default)]
+    pub youngs_modulus: Option<f64>,
+    /// H_p / H (dimensionless scenes).
+    #[serde(default)]
+    pub thickness_ratio: Option<f64>,
+    /// E_p / E (dimensionless scenes).
+    #[serde(default)]
+    pub modulus_ratio: Option<f64>,
+}
+
+impl PanelSpec {
+    /// The panel holding (x, y), with nothing changed yet.
+    pub fn at(x: f64, y: f64) -> Self {
+        Self {
+            at: [x, y],
+            thickness: None,
+            youngs_modulus: None,
+            thickness_ratio: None,
+            modulus_ratio: None,
+        }
+    }
+}
+
 pub use super::load_spec::{Coord, LoadKind, LoadSpec};
 
 /// `[solver] penalty`: `"auto"` or a fixed ε̄.
@@ -368,6 +511,12 @@ pub struct SceneFile {
     /// Voids under the plate.
     #[serde(default)]
     pub void: Vec<VoidSpec>,
+    /// Joint lines cutting the plate into panels.
+    #[serde(default)]
+    pub joint: Vec<JointSpec>,
+    /// Panels with their own thickness or Young's modulus.
+    #[serde(default)]
+    pub panel: Vec<PanelSpec>,
     /// Mesh.
     #[serde(default)]
     pub mesh: MeshSpec,

@@ -199,6 +199,7 @@ struct Shared {
     zones: Vec<Zone>,
     allowable: Option<f64>,
     elements: [usize; 2],
+    layout: crate::layout::Layout,
 }
 
 fn shared(file: &SceneFile) -> Result<Shared> {
@@ -224,6 +225,20 @@ fn shared(file: &SceneFile) -> Result<Shared> {
     let zones = zones(file, &groups, scale_xy)?;
     let allowable = raw_allowable(file, &groups, physical)?;
     let elements = elements(&file.mesh)?;
+    let frame = super::joints::Frame {
+        half: [1.0, groups.mu],
+        scale_xy,
+        elements,
+        si: match (&file.plate, physical) {
+            (Some(p), Some((l, d))) => Some([l, d, p.thickness, p.youngs_modulus]),
+            _ => None,
+        },
+        max_elements: MAX_ELEMENTS_PER_SIDE as usize,
+    };
+    let mut layout = super::joints::layout(file, &frame)?;
+    super::panels::panels(file, &mut layout, &frame)?;
+    let unit_loads: Vec<Load> = raw.iter().map(|r| r.load).collect();
+    super::panels::loads_off_cuts(&layout, &unit_loads, &frame)?;
     Ok(Shared {
         title,
         groups,
@@ -233,6 +248,7 @@ fn shared(file: &SceneFile) -> Result<Shared> {
         zones,
         allowable,
         elements,
+        layout,
     })
 }
 
@@ -268,6 +284,7 @@ impl Shared {
             allowable_pressure: self.allowable.map(|a| a / p_force),
             load_scale: p_force,
             reference,
+            layout: self.layout.clone(),
         })
     }
 }

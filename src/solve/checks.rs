@@ -2,6 +2,7 @@
 //! a reaction that balances it, and the discrete gap the methods share.
 
 use super::linalg;
+use super::projection::project;
 use super::solution::Solution;
 use crate::error::{Error, Result};
 use crate::model::ConstraintPoints;
@@ -32,8 +33,13 @@ pub fn check_equilibrium(ops: &Operators, sol: &Solution) -> Result<()> {
 }
 
 /// A tensionless foundation can only balance a net downward load whose line of action passes
-/// through the plate: check the rigid-body components of the load before solving.
+/// through the plate: check the rigid-body components of the load before solving. On a jointed
+/// plate, cluster by cluster (panels joined by transferring joints; the rigid modes do not mix
+/// clusters): [`check_feasible_jointed`].
 pub fn check_feasible(ops: &Operators) -> Result<()> {
+    if ops.mesh.is_jointed() {
+        return check_feasible_jointed(ops);
+    }
     let rf: Vec<f64> = ops.rigid.iter().map(|r| linalg::dot(r, &ops.f)).collect();
     let total = rf[0];
     let scale: f64 = ops.f.iter().map(|v| v.abs()).sum();
@@ -84,6 +90,87 @@ pub fn check_feasible(ops: &Operators) -> Result<()> {
         if ybar < lo - tol || ybar > hi + tol {
             return Err(Error::Infeasible(format!(
                 "the load resultant acts at y = {ybar:.4} L, outside [{lo:.4}, {hi:.4}] L where non-negative nodal pressures can balance it (the plate would tip over; a resultant on the very edge needs pressure concentrated on the edge, which bilinear pressures reach only to within a third of an element)"
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// [`check_feasible`] of a jointed plate, for each cluster c of panels joined by transferring
+/// joints: its net load (Σ f over its w-equations: the cluster's translation is always one of
+/// its modes) must push down, and with nodal constraints some σ ≥ 0 on its pressure unknowns
+/// must balance every one of its modes, C_cᵀσ = R_cᵀf with C_c = BᵀR_c — decided by the
+/// projection onto that set, which exists exactly when the set is not empty. A hinge that the
+/// loads would turn, a panel that would tip, are caught here; with Gauss-point constraints only
+/// the net load is checked (the QP reports the rest). The errors name the cluster's panels.
+pub fn check_feasible_jointed(ops: &Operators) -> Result<()> {
+    let Some(topo) = ops.mesh.topo.as_ref() else {
+        return Ok(());
+    };
+    let cluster_of_node = |n: usize| -> usize {
+        topo.incident(n)
+            .first()
+            .map_or(0, |&(e, _)| topo.cluster[topo.piece[e] as usize] as usize)
+    };
+    let n_clusters = topo.n_clusters();
+    let columns = topo.layout.panel_counts()[0];
+    let panels = |c: usize| -> String {
+        let mut ids: Vec<u32> = (0..ops.mesh.n_elements())
+            .filter(|&e| topo.cluster[topo.piece[e] as usize] as usize == c)
+            .map(|e| topo.panel[e])
+            .collect();
+        ids.sort_unstable();
+        ids.dedup();
+        let names: Vec<String> = ids
+            .iter()
+            .map(|&p| {
+                format!(
+                    "({}, {})",
+                    p as usize % columns + 1,
+                    p as usize / columns + 1
+                )
+            })
+            .collect();
+        format!(
+            "panel{} {}",
+            if names.len() > 1 { "s" } else { "" },
+            names.join(", ")
+        )
+    };
+    let scale: f64 = ops.f.iter().map(|v| v.abs()).sum();
+    let mut total = vec![0.0; n_clusters];
+    for n in 0..ops.n_sigma() {
+        if let Some(e) = ops.dofs.eq(n, crate::mesh::Dof::W) {
+            total[cluster_of_node(n)] += ops.f[e];
+        }
+    }
+    for (c, &t) in total.iter().enumerate() {
+        if t <= 1e-12 * scale {
+            return Err(Error::Infeasible(format!(
+                "{} (joined to no other by a joint that transfers load): the net load is upward or zero ({t:.3e} in units of P on the model): a foundation that cannot pull cannot hold {} down — give every panel cut off by free joints its own downward load (its self-weight); bonded contact can",
+                panels(c),
+                if panels(c).starts_with("panels") { "them" } else { "it" }
+            )));
+        }
+    }
+    if ops.constraints.kind != ConstraintPoints::Nodal {
+        return Ok(());
+    }
+    for c in 0..n_clusters {
+        let modes: Vec<&Vec<f64>> = ops
+            .rigid
+            .iter()
+            .zip(&ops.rigid_clusters)
+            .filter(|(_, &k)| k == c)
+            .map(|(r, _)| r)
+            .collect();
+        let cols: Vec<Vec<f64>> = modes.iter().map(|r| ops.bt_times(r)).collect();
+        let b: Vec<f64> = modes.iter().map(|r| linalg::dot(r, &ops.f)).collect();
+        let zeros = vec![0.0; ops.n_sigma()];
+        if project(&zeros, &cols, &b).is_none() {
+            return Err(Error::Infeasible(format!(
+                "the loads on {} cannot be balanced by pressures that only push: a panel would tip over or turn about a joint (move the loads inwards, or use bonded contact)",
+                panels(c)
             )));
         }
     }

@@ -344,7 +344,8 @@ pub fn schur_complement(ops: &Operators, kinv: &PlateInverse) -> Mat<f64> {
     s
 }
 
-/// A small symmetric positive semi-definite system (the rigid modes' m × m, m ≤ 3) solved by
+/// A small symmetric positive semi-definite system (the rigid modes' m × m: 3 or fewer for a
+/// plate of one piece, as many as a jointed plate's zero-energy modes) solved by
 /// its pseudo-inverse: eigenvalues below 1e-12 of the largest are dropped. The rigid-mode
 /// columns restricted to a few contact points can be dependent (a plate resting on one node or
 /// one line of nodes); the pseudo-inverse then gives the least-squares, minimum-norm answer

@@ -11,7 +11,8 @@
 //! `penalty.rs` (its linear steps in `penalty_step.rs`, `low_rank.rs` and the iterative route
 //! `iterative/`) and the QP solvers under `qp/`; below them all sit `solution.rs` (what a solve
 //! returns), `diagnostics.rs` (what each solver reports), `checks.rs` (feasibility, equilibrium,
-//! the discrete gap) and `linalg.rs`.
+//! the discrete gap), `projection.rs` (the projection onto {σ ≥ 0, Cᵀσ = b}: the active-set QP's
+//! and the feasibility check's) and `linalg.rs`.
 
 pub mod bonded;
 mod checks;
@@ -23,6 +24,7 @@ pub mod low_rank;
 mod nested;
 pub mod penalty;
 mod penalty_step;
+mod projection;
 pub mod qp;
 mod solution;
 

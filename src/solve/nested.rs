@@ -19,7 +19,8 @@ pub const NESTED_MIN_NODES: usize = 4096;
 /// cold start the contact edge moves by a ring of nodes per face solve, so the face solves grow
 /// with the grid; from the coarse answer only the rings near the edge remain to be settled.
 /// The answer is the same (the QP's solution is unique); a coarse solve that fails or does
-/// not converge is dropped for a cold start.
+/// not converge is dropped for a cold start, and so is a jointed plate whose joints would not
+/// lie on the coarse grid's lines.
 pub fn solve_nested(
     model: &Model,
     ops: &Operators,
@@ -32,6 +33,11 @@ pub fn solve_nested(
     let mut coarse = model.clone();
     // Even counts, so that the coarse grid keeps the fine one's symmetry reduction.
     coarse.elements = model.elements.map(|n| 2 * n.div_ceil(4).max(1));
+    // A jointed plate starts from a coarse grid only when its joints stay on grid lines there
+    // (each side of a joint then starts from its own side's pressures).
+    if !model.layout.fits(coarse.elements, model.groups.mu) {
+        return solve_with(ops, method, None, monitor);
+    }
     let toeplitz = matches!(ops.t.as_ref(), Compliance::Toeplitz(_));
     let coarse_ops = Operators::assemble_with(&coarse, toeplitz);
     monitor.check("the coarse-grid start")?;

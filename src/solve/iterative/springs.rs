@@ -12,7 +12,9 @@
 //!   model's element counts are even), φ_I the coarse functions at the fine nodes (1, ½ or ¼),
 //!   so Q D⁻¹ Qᵀ couples coarse nodes of one coarse element — inside K_p's own pattern. The
 //!   plate dominates A only at low frequencies (well below the coarse grid's), and the solve
-//!   with the smaller factor costs about a quarter.
+//!   with the smaller factor costs about a quarter. A jointed plate's coarse plate has the same
+//!   joints (segments and dowels re-derived on the coarse grid) when they lie on its lines, and
+//!   each pressure copy spreads over its own side's coarse element; otherwise the fine plate.
 //!
 //! The symbolic analysis is done once; each penalised set (a new D) costs one numeric
 //! factorisation.
@@ -50,6 +52,13 @@ impl SpringPlate {
     /// element counts are even, fine otherwise.
     pub fn new(ops: &Operators, coarse: bool) -> Result<Self> {
         let m = &ops.mesh;
+        if m.topo.is_some() {
+            return if coarse {
+                Self::coarse_jointed(ops)
+            } else {
+                Self::fine(ops)
+            };
+        }
         if coarse && m.nx.is_multiple_of(2) && m.ny.is_multiple_of(2) && m.nx >= 2 && m.ny >= 2 {
             Self::coarse(ops)
         } else {
@@ -115,6 +124,53 @@ impl SpringPlate {
                     }
                 }
                 out
+            })
+            .collect();
+        let order = crate::mesh::equation_order(&cmesh, &cdofs, |e| !cfixed.contains(&e));
+        Self::finish(k, spread, &order, "coarse")
+    }
+
+    /// The coarse plate of a plate with a layout: the same layout on the grid twice as coarse
+    /// ([`Mesh::coarsened`]: when the joints stay on its lines; the fine plate otherwise), its
+    /// panels' sections, joint elements and dowels, fixed by its own rigid modes; a pressure
+    /// node spreads over the corners of the coarse element holding one of its fine elements,
+    /// with the coarse bilinear weights at its position (so each side of a joint loads its own
+    /// side's coarse plate). On a grid that no joint cuts these are the weights (1, ½, ¼) of
+    /// [`Self::coarse`].
+    fn coarse_jointed(ops: &Operators) -> Result<Self> {
+        let m = &ops.mesh;
+        let (Some(cmesh), Some(topo)) = (m.coarsened(), m.topo.as_ref()) else {
+            return Self::fine(ops);
+        };
+        let cdofs = DofMap::new(&cmesh);
+        let kc = crate::system::assemble_system(&cmesh, &cdofs, &ops.sections);
+        let (_, cfixed, _) = crate::operators::jointed_rigid_modes(&cmesh, &cdofs);
+        let (k, map) = reduce(&kc, &cfixed);
+        let areas = crate::foundation::nodal_areas(m);
+        let spread: Vec<Vec<(usize, f64)>> = (0..ops.n_sigma())
+            .map(|j| {
+                let Some(&(e, _)) = topo.incident(j).first() else {
+                    return Vec::new();
+                };
+                let (ie, je) = m.element_ij(e);
+                let (ci, cj) = (ie / 2, je / 2);
+                let (x, y) = m.node_xy(j);
+                let xi = 2.0 * (x - cmesh.x0) / cmesh.hx - 2.0 * ci as f64 - 1.0;
+                let eta = 2.0 * (y - cmesh.y0) / cmesh.hy - 2.0 * cj as f64 - 1.0;
+                let weights = crate::plate::shape(xi, eta);
+                cmesh
+                    .element_nodes(ci + cj * cmesh.nx)
+                    .into_iter()
+                    .zip(weights)
+                    // Round-off weights at the far corners of a coarse element: dropped.
+                    .filter(|&(_, w)| w.abs() > 1e-12)
+                    .filter_map(|(node, w)| {
+                        cdofs
+                            .eq(node, Dof::W)
+                            .and_then(|e| map[e])
+                            .map(|r| (r, areas[j] * w))
+                    })
+                    .collect()
             })
             .collect();
         let order = crate::mesh::equation_order(&cmesh, &cdofs, |e| !cfixed.contains(&e));
@@ -208,10 +264,17 @@ mod tests {
     #[test]
     fn woodbury_solve_inverts_the_dense_preconditioner() {
         let ops = ops(8);
-        let n = ops.n_sigma();
         for coarse in [false, true] {
             let sp = SpringPlate::new(&ops, coarse).expect("springs");
             assert_eq!(sp.kind, if coarse { "coarse" } else { "fine" });
+            woodbury_check(&ops, &sp);
+        }
+    }
+
+    /// M (M⁻¹ r) = r for one plate on springs.
+    fn woodbury_check(ops: &Operators, sp: &SpringPlate) {
+        let n = ops.n_sigma();
+        {
             let inv_d: Vec<f64> = (0..n).map(|j| 1.0 + 0.1 * (j % 7) as f64).collect();
             let factor = sp.factor(&inv_d).expect("factor");
             let r: Vec<f64> = (0..n).map(|j| ((j * 37 % 11) as f64) - 5.0).collect();
@@ -248,6 +311,69 @@ mod tests {
                 );
             }
         }
+    }
+
+    fn jointed_ops(joints: &str, n: usize) -> Operators {
+        let text = crate::examples::scene("paper-halfspace").unwrap_or_default();
+        let text = text.replace("elements = [16, 16]", &format!("elements = [{n}, {n}]"));
+        let text = text.replace("[mesh]", &format!("{joints}\n[mesh]"));
+        let p = crate::Problem::from_toml(&text).expect("jointed paper scene");
+        Operators::assemble(&p.model)
+    }
+
+    /// The jointed coarse plate: on a layout that cuts nothing (a continuous line) it is the
+    /// plain coarse plate, weights and matrix; on a cut one the weights of each pressure node
+    /// (copies included) sum to its area, each copy loads only its own side's coarse nodes, and
+    /// the Woodbury solve inverts the dense preconditioner.
+    #[test]
+    fn jointed_coarse_plate() {
+        let plain = ops(16);
+        let uncut = jointed_ops(
+            "[[joint]]\nx = 0.5\nkind = \"continuous\"\n[[joint]]\nx = -0.5\nkind = \"continuous\"",
+            16,
+        );
+        let (a, b) = (
+            SpringPlate::new(&plain, true).expect("springs"),
+            SpringPlate::new(&uncut, true).expect("springs"),
+        );
+        assert_eq!(b.kind, "coarse");
+        assert_eq!(a.k.indices(), b.k.indices());
+        for (x, y) in a.k.data().iter().zip(b.k.data()) {
+            assert!((x - y).abs() <= 1e-14 * x.abs().max(1.0));
+        }
+        for (sa, sb) in a.spread.iter().zip(&b.spread) {
+            let mut sa = sa.clone();
+            let mut sb = sb.clone();
+            sa.sort_by_key(|p| p.0);
+            sb.sort_by_key(|p| p.0);
+            assert_eq!(sa.len(), sb.len());
+            for (p, q) in sa.iter().zip(&sb) {
+                assert_eq!(p.0, q.0);
+                assert!((p.1 - q.1).abs() <= 1e-15 * p.1.abs().max(1e-3));
+            }
+        }
+        let cut = jointed_ops("[[joint]]\nx = 0.5\nkind = \"aggregate\"\nstiffness = 10.0\n[[joint]]\nx = -0.5\nkind = \"aggregate\"\nstiffness = 10.0\n[[joint]]\ny = 0.5\nkind = \"free\"\n[[joint]]\ny = -0.5\nkind = \"free\"", 16);
+        assert!(cut.mesh.is_jointed());
+        let sp = SpringPlate::new(&cut, true).expect("springs");
+        assert_eq!(sp.kind, "coarse");
+        let areas = crate::foundation::nodal_areas(&cut.mesh);
+        let inside = |j: usize| {
+            let (x, y) = cut.mesh.node_xy(j);
+            x.abs() < 0.99 && y.abs() < 0.99
+        };
+        for (j, s) in sp.spread.iter().enumerate() {
+            let sum: f64 = s.iter().map(|&(_, w)| w).sum();
+            // Equal to the area, or less next to a fixed coarse equation, whose share drops.
+            assert!(sum <= areas[j] * (1.0 + 1e-14), "node {j}");
+            if inside(j) && s.len() == 4 {
+                assert!(
+                    (sum - areas[j]).abs() < 1e-14,
+                    "node {j}: {sum} vs {}",
+                    areas[j]
+                );
+            }
+        }
+        woodbury_check(&cut, &sp);
     }
 
     /// The coarse plate has a quarter of the elements and the coarse weights of each pressure

@@ -502,7 +502,8 @@ fn primal_gauss(ops: &Operators, t: &[f64]) -> QpData {
 }
 
 /// Rigid amplitudes α with u = K⁻(f − Bσ) + Rα, read on the fixed equations where K⁻ is zero:
-/// R[fixed, :] α = v[fixed] (a square system: one fixed equation per mode, non-collinear).
+/// R[fixed, :] α = v[fixed] (a square system: one fixed equation per mode, chosen so that it is
+/// nonsingular — non-collinear corners of a plate of one piece, pivoted rows of a jointed one).
 fn rigid_amplitudes(ops: &Operators, v: &[f64]) -> Result<Vec<f64>> {
     let m = ops.rigid.len();
     let r = nalgebra::DMatrix::from_fn(m, m, |i, k| ops.rigid[k][ops.fixed[i]]);

@@ -40,15 +40,14 @@
 //!
 //! **The projection** onto {σ ≥ 0, Cᵀσ = b} ([`project`]) is σ = max(0, y + Cλ) with λ (one value per rigid
 //! mode) the maximiser of the concave dual −½|max(0, y + Cλ)|² + bᵀλ; Newton on λ with a line
-//! search, m ≤ 3 unknowns.
+//! search, m unknowns (three for a plate of one piece, the zero-energy modes of a jointed one).
 
 mod point;
 mod primal_dual;
-mod projection;
 mod run;
 mod safeguard;
 
-pub use projection::project;
+pub use crate::solve::projection::project;
 
 use std::time::Instant;
 

@@ -65,8 +65,9 @@ pub(super) fn reduced_gradient(sys: &IterativeSchur, p: &Point) -> (Vec<f64>, Ve
 /// The multiplier of Sσ − h ≈ Cα on the points in contact: least squares where they fix every
 /// rigid mode. Where they do not (a plate resting on one node, or on one line of nodes, can
 /// turn about it) the free part β of α (α = α₀ + Nβ) is the smallest turn that keeps every
-/// lifted point above the soil, min |β|² subject to gᵢ(β) ≥ 0 where σᵢ = 0: a QP in at most
-/// two unknowns, solved by clarabel. If no turn does, the least-squares α₀ is returned and
+/// lifted point above the soil, min |β|² subject to gᵢ(β) ≥ 0 where σᵢ = 0: a QP in as many
+/// unknowns as the contact leaves free (at most two on a plate of one piece; a jointed plate's
+/// hanging panels add theirs), solved by clarabel. If no turn does, the least-squares α₀ is returned and
 /// the iteration frees the points that penetrate.
 fn support_multiplier(sys: &IterativeSchur, p: &Point, grad: &[f64]) -> Vec<f64> {
     let m = sys.c.len();

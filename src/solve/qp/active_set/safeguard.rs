@@ -2,11 +2,11 @@
 //! primal–dual sets cycle.
 
 use super::point::{gap_scale, kkt, reduced_gradient, Point};
-use super::projection::project;
 use super::run::{infeasible, End, Run};
 use crate::error::{Error, Result};
 use crate::operators::Operators;
 use crate::solve::iterative::IterativeSchur;
+use crate::solve::projection::project;
 use crate::solve::solution::Status;
 
 impl Run<'_> {

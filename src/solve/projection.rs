@@ -1,7 +1,7 @@
 //! The Euclidean projection onto the feasible set {σ ≥ 0, Cᵀσ = b}: where both phases start,
 //! and what takes a face solve's specks of tension away.
 
-use crate::solve::linalg::{dot, SmallSpd};
+use super::linalg::{dot, SmallSpd};
 
 /// The Euclidean projection of `y` onto {σ ≥ 0, Cᵀσ = b}: σ = max(0, y + Cλ), with λ the
 /// minimiser of the convex ψ(λ) = ½|max(0, y + Cλ)|² − bᵀλ (whose gradient is Cᵀσ − b), by

@@ -8,6 +8,8 @@
 //!
 //! Nothing here depends on the solution method; methods only read this value.
 
+pub mod modes;
+
 use std::sync::Arc;
 
 use crate::foundation::kernel::Kernel;
@@ -17,6 +19,7 @@ use crate::mesh::{Dof, DofMap, Mesh};
 use crate::model::{ConstraintPoints, Load, Model, Void, Zone};
 use crate::plate::{self, Section};
 use crate::quadrature::GaussRule;
+pub use modes::{jointed_rigid_modes, rigid_modes};
 
 /// Where σ ≥ 0 is imposed: rows of G (interpolation of nodal σ) and their area weights.
 #[derive(Debug, Clone)]
@@ -79,8 +82,11 @@ pub struct Operators {
     pub mesh: Mesh,
     /// Dof numbering.
     pub dofs: DofMap,
-    /// Plate section in the unit system.
+    /// Plate section in the unit system (the reference plate's).
     pub section: Section,
+    /// The section of every whole-plate panel ([`crate::system::panel_sections`]; one entry,
+    /// the reference, without a layout).
+    pub sections: Vec<Section>,
     /// Foundation model.
     pub foundation: FoundationKind,
     /// Its surface kernel (None for the local Winkler soil).
@@ -103,6 +109,9 @@ pub struct Operators {
     pub rigid: Vec<Vec<f64>>,
     /// Equations fixed to zero to define the generalised inverse K⁻ (one per rigid mode).
     pub fixed: Vec<usize>,
+    /// The cluster of each rigid mode: pieces of a jointed plate joined by transferring joints
+    /// (all 0 on a plate of one piece).
+    pub rigid_clusters: Vec<usize>,
     /// Foundation constant c in the unit system (μΓ): scales the penalty compliance.
     pub foundation_constant: f64,
     /// Notes on modelling decisions (symmetry fall-backs …).
@@ -245,7 +254,11 @@ impl Operators {
         toeplitz: bool,
     ) -> Self {
         let dofs = DofMap::new(&mesh);
-        let k = plate::assemble_stiffness(&mesh, &dofs, &section);
+        let sections = crate::system::panel_sections(&mesh, &section);
+        let k = match mesh.topo {
+            Some(_) => crate::system::assemble_system(&mesh, &dofs, &sections),
+            None => plate::assemble_stiffness(&mesh, &dofs, &section),
+        };
         let f = load_vector_with(&mesh, &dofs, &section, loads);
         let kernel = foundation.kernel(shape);
         let (b, t) = match &kernel {
@@ -271,12 +284,13 @@ impl Operators {
             ),
         };
         let constraints = constraint_points(&mesh, constraint);
-        let (rigid, fixed) = rigid_modes(&mesh, &dofs);
+        let (rigid, fixed, rigid_clusters) = jointed_rigid_modes(&mesh, &dofs);
         let gap0 = vec![0.0; mesh.n_nodes()];
         Self {
             mesh,
             dofs,
             section,
+            sections,
             foundation,
             kernel,
             k: Arc::new(k),
@@ -287,10 +301,17 @@ impl Operators {
             constraints,
             rigid,
             fixed,
+            rigid_clusters,
             foundation_constant,
             notes,
             cache: SharedCache::default(),
         }
+    }
+
+    /// The section of model element e (its panel's).
+    pub fn section_of(&self, e: usize) -> Section {
+        let p = self.mesh.panel_of(e);
+        self.sections.get(p).copied().unwrap_or(self.section)
     }
 
     /// Number of equations.
@@ -361,7 +382,8 @@ pub fn load_vector(mesh: &Mesh, dofs: &DofMap, loads: &[Load]) -> Vec<f64> {
 ///
 /// A temperature load is the initial curvature κ₀ = κ (1, 1, 0): its nodal vector is
 /// ∫ B_bᵀ D_b κ₀ dA element by element, the consistent equivalent of the thermal moment
-/// m_T = D (1 + ν) κ along the free edges.
+/// m_T = D (1 + ν) κ along the free edges. On a plate with panels of their own section each
+/// panel takes its D_p and the free curvature κ H/H_p of its thickness.
 pub fn load_vector_with(mesh: &Mesh, dofs: &DofMap, section: &Section, loads: &[Load]) -> Vec<f64> {
     let mut f = vec![0.0; dofs.n_eq()];
     let tol = 1e-9;
@@ -415,18 +437,31 @@ pub fn load_vector_with(mesh: &Mesh, dofs: &DofMap, section: &Section, loads: &[
             // A face stress bends nothing: it has no nodal load.
             Load::FaceStress { .. } => {}
             Load::Temperature { curvature } => {
-                let m = plate::bending_constitutive(section)
-                    * nalgebra::Vector3::new(curvature, curvature, 0.0);
+                // Per panel: its bending section and its free curvature κ H/H_p (the same
+                // ΔT curls a thinner panel more); one entry without a layout.
+                let sections = crate::system::panel_sections(mesh, section);
+                let ratios = mesh.topo.as_ref().map(|t| t.layout.sections());
                 let rule = GaussRule::new(2);
                 let det = 0.25 * mesh.hx * mesh.hy;
-                let mut fe = plate::ElementVector::zeros();
-                for (&xi, &wx) in rule.points.iter().zip(&rule.weights) {
-                    for (&eta, &wy) in rule.points.iter().zip(&rule.weights) {
-                        let b = plate::bending_strain(xi, eta, mesh.hx, mesh.hy);
-                        fe += b.transpose() * m * (wx * wy * det);
-                    }
-                }
+                let fes: Vec<plate::ElementVector> = sections
+                    .iter()
+                    .enumerate()
+                    .map(|(p, sec)| {
+                        let kappa = curvature / ratios.as_ref().map_or(1.0, |r| r[p].thickness);
+                        let m = plate::bending_constitutive(sec)
+                            * nalgebra::Vector3::new(kappa, kappa, 0.0);
+                        let mut fe = plate::ElementVector::zeros();
+                        for (&xi, &wx) in rule.points.iter().zip(&rule.weights) {
+                            for (&eta, &wy) in rule.points.iter().zip(&rule.weights) {
+                                let b = plate::bending_strain(xi, eta, mesh.hx, mesh.hy);
+                                fe += b.transpose() * m * (wx * wy * det);
+                            }
+                        }
+                        fe
+                    })
+                    .collect();
                 for e in 0..mesh.n_elements() {
+                    let fe = &fes[mesh.panel_of(e).min(fes.len() - 1)];
                     for (a, node) in mesh.element_nodes(e).into_iter().enumerate() {
                         for (k, dof) in [Dof::W, Dof::PsiX, Dof::PsiY].into_iter().enumerate() {
                             if let Some(q) = dofs.eq(node, dof) {
@@ -497,49 +532,4 @@ pub fn constraint_points(mesh: &Mesh, kind: ConstraintPoints) -> Constraints {
             }
         }
     }
-}
-
-/// Rigid-body modes of the (reduced) free plate and the w-equations to fix for a generalised
-/// inverse: translation w = 1 always; rotation w = x, ψx = 1 unless the model is reduced about
-/// x = 0; rotation w = y, ψy = 1 unless reduced about y = 0.
-pub fn rigid_modes(mesh: &Mesh, dofs: &DofMap) -> (Vec<Vec<f64>>, Vec<usize>) {
-    let n_eq = dofs.n_eq();
-    let mut modes = Vec::new();
-    let mut translation = vec![0.0; n_eq];
-    let mut rot_x = vec![0.0; n_eq];
-    let mut rot_y = vec![0.0; n_eq];
-    for n in 0..mesh.n_nodes() {
-        let (x, y) = mesh.node_xy(n);
-        if let Some(e) = dofs.eq(n, Dof::W) {
-            translation[e] = 1.0;
-            rot_x[e] = x;
-            rot_y[e] = y;
-        }
-        if let Some(e) = dofs.eq(n, Dof::PsiX) {
-            rot_x[e] = 1.0;
-        }
-        if let Some(e) = dofs.eq(n, Dof::PsiY) {
-            rot_y[e] = 1.0;
-        }
-    }
-    modes.push(translation);
-    if !mesh.sym_x {
-        modes.push(rot_x);
-    }
-    if !mesh.sym_y {
-        modes.push(rot_y);
-    }
-    // Fixed nodes: corners far from the symmetry lines, non-collinear.
-    let (i_max, j_max) = (mesh.nx, mesh.ny);
-    let corners: Vec<(usize, usize)> = match (mesh.sym_x, mesh.sym_y) {
-        (false, false) => vec![(0, 0), (i_max, 0), (0, j_max)],
-        (true, false) => vec![(i_max, 0), (i_max, j_max)],
-        (false, true) => vec![(0, j_max), (i_max, j_max)],
-        (true, true) => vec![(i_max, j_max)],
-    };
-    let fixed = corners
-        .into_iter()
-        .filter_map(|(i, j)| dofs.eq(mesh.node(i, j), Dof::W))
-        .collect();
-    (modes, fixed)
 }

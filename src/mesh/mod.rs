@@ -4,6 +4,18 @@
 //! along x), so the whole plate is [−1, 1] × [−μ, μ]. A model reduced by symmetry about x = 0
 //! keeps x ≥ 0, one reduced about y = 0 keeps y ≥ 0; the symmetry lines are grid lines, so the
 //! element counts of the whole plate must be even in the reduced directions.
+//!
+//! A jointed plate keeps the same grid and gains a [`Topology`] ([`Mesh::with_layout`]): node
+//! copies along the joint lines that cut it and a corner table, read through the same methods
+//! ([`Mesh::n_nodes`], [`Mesh::element_nodes`], [`Mesh::node_xy`]). Without joints the
+//! topology is `None` and every method is the plain grid's.
+
+pub mod topology;
+
+use std::sync::Arc;
+
+use crate::layout::Layout;
+pub use topology::{DowelSpring, Grid, Segment, Topology};
 
 /// The three degrees of freedom of a plate node (Mindlin kinematics, eq. 2.1 of the paper).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -38,6 +50,8 @@ pub struct Mesh {
     pub sym_x: bool,
     /// The model keeps y ≥ 0 and mirrors about y = 0.
     pub sym_y: bool,
+    /// Node copies and corner table of a jointed plate; `None` for a plate of one piece.
+    pub topo: Option<Arc<Topology>>,
 }
 
 impl Mesh {
@@ -58,7 +72,104 @@ impl Mesh {
             hy,
             sym_x,
             sym_y,
+            topo: None,
         }
+    }
+
+    /// The same grid with a whole-plate layout: node copies along the joint lines that cut
+    /// the model, panels, segments and dowels ([`Topology::build`]). Each joint line is taken
+    /// at its nearest grid line (validation puts every line on one); an empty layout leaves
+    /// the plain grid.
+    pub fn with_layout(mut self, layout: &Layout) -> Self {
+        self.topo = (!layout.is_empty())
+            .then(|| Arc::new(Topology::build(self.grid(), Arc::new(layout.clone()))));
+        self
+    }
+
+    /// The plain numbers of the grid.
+    pub fn grid(&self) -> Grid {
+        Grid {
+            nx: self.nx,
+            ny: self.ny,
+            x0: self.x0,
+            y0: self.y0,
+            hx: self.hx,
+            hy: self.hy,
+            sym_x: self.sym_x,
+            sym_y: self.sym_y,
+        }
+    }
+
+    /// True when a joint cuts the model (node copies exist).
+    pub fn is_jointed(&self) -> bool {
+        self.topo.as_ref().is_some_and(|t| t.cuts())
+    }
+
+    /// Size of the whole plate along x and y.
+    pub fn plate_size(&self) -> [f64; 2] {
+        let full = self.full_elements();
+        [self.hx * full[0] as f64, self.hy * full[1] as f64]
+    }
+
+    /// The same plate and layout on a grid twice as coarse, with the same symmetry reduction,
+    /// when the model's element counts and the grid lines of every joint are even (the joints
+    /// stay on grid lines); `None` otherwise.
+    pub fn coarsened(&self) -> Option<Mesh> {
+        if !(self.nx.is_multiple_of(2) && self.ny.is_multiple_of(2) && self.nx >= 2 && self.ny >= 2)
+        {
+            return None;
+        }
+        let full = self.full_elements();
+        let [a, b] = self.plate_size();
+        let coarse = Mesh::new(a, b, [full[0] / 2, full[1] / 2], self.sym_x, self.sym_y);
+        if coarse.sym_x != self.sym_x || coarse.sym_y != self.sym_y {
+            return None;
+        }
+        let Some(topo) = &self.topo else {
+            return Some(coarse);
+        };
+        let even = |lines: &[(usize, usize)]| lines.iter().all(|&(i, _)| i.is_multiple_of(2));
+        if !(even(&topo.lines_x) && even(&topo.lines_y)) {
+            return None;
+        }
+        Some(coarse.with_layout(&topo.layout))
+    }
+
+    /// The whole plate's grid with the same layout (no symmetry reduction).
+    pub fn whole(&self) -> Mesh {
+        let [a, b] = self.plate_size();
+        let whole = Mesh::new(a, b, self.full_elements(), false, false);
+        match &self.topo {
+            Some(t) => whole.with_layout(&t.layout),
+            None => whole,
+        }
+    }
+
+    /// The grid node of node copy `n` (itself without joints).
+    pub fn grid_of(&self, n: usize) -> usize {
+        match &self.topo {
+            Some(t) => t.grid_of(n),
+            None => n,
+        }
+    }
+
+    /// Grid position (i, j) of node copy `n`.
+    pub fn node_ij(&self, n: usize) -> (usize, usize) {
+        let g = self.grid_of(n);
+        (g % self.nodes_x(), g / self.nodes_x())
+    }
+
+    /// The extra copies of grid node `g` across the joints through it (empty without joints).
+    pub fn extra_copies(&self, g: usize) -> &[usize] {
+        match &self.topo {
+            Some(t) => t.extras(g),
+            None => &[],
+        }
+    }
+
+    /// The whole-plate panel (column + row · columns) of element e; 0 without a layout.
+    pub fn panel_of(&self, e: usize) -> usize {
+        self.topo.as_ref().map_or(0, |t| t.panel[e] as usize)
     }
 
     /// Element counts of the whole plate.
@@ -94,9 +205,13 @@ impl Mesh {
         self.ny + 1
     }
 
-    /// Number of nodes in the model.
+    /// Number of nodes in the model: the grid's, and the extra copies along cutting joints
+    /// (each one pressure unknown).
     pub fn n_nodes(&self) -> usize {
-        self.nodes_x() * self.nodes_y()
+        match &self.topo {
+            Some(t) => t.n_nodes(),
+            None => self.nodes_x() * self.nodes_y(),
+        }
     }
 
     /// Number of elements in the model.
@@ -109,15 +224,20 @@ impl Mesh {
         i + j * self.nodes_x()
     }
 
-    /// Coordinates of node n.
+    /// Coordinates of node n (the copies of a grid node share them).
     pub fn node_xy(&self, n: usize) -> (f64, f64) {
+        let n = self.grid_of(n);
         let i = n % self.nodes_x();
         let j = n / self.nodes_x();
         (self.x0 + i as f64 * self.hx, self.y0 + j as f64 * self.hy)
     }
 
-    /// The four nodes of element e, counter-clockwise from the lower-left corner.
+    /// The four nodes of element e, counter-clockwise from the lower-left corner (on a jointed
+    /// plate, the copies on the element's own side).
     pub fn element_nodes(&self, e: usize) -> [usize; 4] {
+        if let Some(t) = &self.topo {
+            return t.corners[e];
+        }
         let ie = e % self.nx;
         let je = e / self.nx;
         [
@@ -161,8 +281,39 @@ impl Mesh {
 
     /// Nodal values of `other`'s grid (same plate, any element counts and reduction) at this
     /// grid's nodes by bilinear interpolation; a node outside a reduced `other` takes the value
-    /// of its mirror image (a reduced model's fields are symmetric).
+    /// of its mirror image (a reduced model's fields are symmetric). On jointed grids (the same
+    /// layout) each node copy reads the field on its own side of the joints: it is located from
+    /// a point nudged towards the centre of one of its elements, and interpolated at its own
+    /// position in the element found.
     pub fn interpolate_from(&self, other: &Mesh, values: &[f64]) -> Vec<f64> {
+        if self.topo.is_none() && other.topo.is_none() {
+            return self.interpolate_plain(other, values);
+        }
+        (0..self.n_nodes())
+            .map(|n| {
+                let (x, y) = self.node_xy(n);
+                let (mut xs, mut ys) = (x, y);
+                if let Some(&(e, _)) = self.topo.as_ref().and_then(|t| t.incident(n).first()) {
+                    let (xc, yc) = self.element_centre(e);
+                    xs += 1e-6 * (xc - x);
+                    ys += 1e-6 * (yc - y);
+                }
+                let fold = |v: f64, sym: bool| if sym { v.abs() } else { v };
+                let (x, y) = (fold(x, other.sym_x), fold(y, other.sym_y));
+                let (xs, ys) = (fold(xs, other.sym_x), fold(ys, other.sym_y));
+                other.locate(xs, ys).map_or(0.0, |(e, _, _)| {
+                    let (ie, je) = other.element_ij(e);
+                    let xi = (2.0 * ((x - other.x0) / other.hx - ie as f64) - 1.0).clamp(-1.0, 1.0);
+                    let eta =
+                        (2.0 * ((y - other.y0) / other.hy - je as f64) - 1.0).clamp(-1.0, 1.0);
+                    bilinear(&other.element_nodes(e), xi, eta, values)
+                })
+            })
+            .collect()
+    }
+
+    /// [`Self::interpolate_from`] between plain grids.
+    fn interpolate_plain(&self, other: &Mesh, values: &[f64]) -> Vec<f64> {
         (0..self.n_nodes())
             .map(|n| {
                 let (mut x, mut y) = self.node_xy(n);
@@ -173,19 +324,7 @@ impl Mesh {
                     y = y.abs();
                 }
                 other.locate(x, y).map_or(0.0, |(e, xi, eta)| {
-                    let nodes = other.element_nodes(e);
-                    // Corner order of `element_nodes`: (−,−), (+,−), (+,+), (−,+).
-                    let w = [
-                        (1.0 - xi) * (1.0 - eta),
-                        (1.0 + xi) * (1.0 - eta),
-                        (1.0 + xi) * (1.0 + eta),
-                        (1.0 - xi) * (1.0 + eta),
-                    ];
-                    nodes
-                        .iter()
-                        .zip(w)
-                        .map(|(&k, w)| 0.25 * w * values[k])
-                        .sum()
+                    bilinear(&other.element_nodes(e), xi, eta, values)
                 })
             })
             .collect()
@@ -197,8 +336,25 @@ impl Mesh {
     }
 }
 
+/// The bilinear interpolant of nodal `values` at (ξ, η) of an element with these nodes (corner
+/// order of [`Mesh::element_nodes`]: (−,−), (+,−), (+,+), (−,+)).
+fn bilinear(nodes: &[usize; 4], xi: f64, eta: f64, values: &[f64]) -> f64 {
+    let w = [
+        (1.0 - xi) * (1.0 - eta),
+        (1.0 + xi) * (1.0 - eta),
+        (1.0 + xi) * (1.0 + eta),
+        (1.0 - xi) * (1.0 + eta),
+    ];
+    nodes
+        .iter()
+        .zip(w)
+        .map(|(&k, w)| 0.25 * w * values[k])
+        .sum()
+}
+
 /// Map from node degrees of freedom to equation numbers; symmetry conditions remove the rotation
-/// normal to a symmetry line (ψx = 0 on x = 0, ψy = 0 on y = 0).
+/// normal to a symmetry line (ψx = 0 on x = 0, ψy = 0 on y = 0) — of every copy there, such as
+/// the two sides of a joint y = const where it meets the line x = 0.
 #[derive(Debug, Clone)]
 pub struct DofMap {
     eq: Vec<Option<usize>>,
@@ -211,8 +367,7 @@ impl DofMap {
         let mut eq = Vec::with_capacity(mesh.n_nodes() * DOFS_PER_NODE);
         let mut n_eq = 0;
         for n in 0..mesh.n_nodes() {
-            let i = n % mesh.nodes_x();
-            let j = n / mesh.nodes_x();
+            let (i, j) = mesh.node_ij(n);
             for d in [Dof::W, Dof::PsiX, Dof::PsiY] {
                 let fixed = (mesh.sym_x && i == 0 && d == Dof::PsiX)
                     || (mesh.sym_y && j == 0 && d == Dof::PsiY);
@@ -251,8 +406,13 @@ impl DofMap {
 
 /// Nested-dissection order of the grid's nodes: split the node rectangle across its longer
 /// side by a grid line, order both halves recursively, the separating line last. For a 2-D grid
-/// this is the optimal fill-reducing order (George 1973): O(n log n) fill, O(n^1.5) work.
+/// this is the optimal fill-reducing order (George 1973): O(n log n) fill, O(n^1.5) work. On a
+/// jointed grid each grid node is followed by its extra copies.
 pub fn nested_dissection(mesh: &Mesh) -> Vec<usize> {
+    fn push(mesh: &Mesh, g: usize, out: &mut Vec<usize>) {
+        out.push(g);
+        out.extend_from_slice(mesh.extra_copies(g));
+    }
     fn recurse(mesh: &Mesh, i0: usize, i1: usize, j0: usize, j1: usize, out: &mut Vec<usize>) {
         if i0 > i1 || j0 > j1 {
             return;
@@ -261,7 +421,7 @@ pub fn nested_dissection(mesh: &Mesh) -> Vec<usize> {
         if w * h <= 16 {
             for j in j0..=j1 {
                 for i in i0..=i1 {
-                    out.push(mesh.node(i, j));
+                    push(mesh, mesh.node(i, j), out);
                 }
             }
             return;
@@ -273,7 +433,7 @@ pub fn nested_dissection(mesh: &Mesh) -> Vec<usize> {
             }
             recurse(mesh, m + 1, i1, j0, j1, out);
             for j in j0..=j1 {
-                out.push(mesh.node(m, j));
+                push(mesh, mesh.node(m, j), out);
             }
         } else {
             let m = j0 + h / 2;
@@ -282,7 +442,7 @@ pub fn nested_dissection(mesh: &Mesh) -> Vec<usize> {
             }
             recurse(mesh, i0, i1, m + 1, j1, out);
             for i in i0..=i1 {
-                out.push(mesh.node(i, m));
+                push(mesh, mesh.node(i, m), out);
             }
         }
     }
@@ -314,102 +474,4 @@ pub fn equation_order(mesh: &Mesh, dofs: &DofMap, keep: impl Fn(usize) -> bool) 
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn quarter_mesh_of_an_even_grid_has_half_the_elements_each_way() {
-        let m = Mesh::new(2.0, 1.0, [8, 6], true, true);
-        assert_eq!((m.nx, m.ny), (4, 3));
-        assert_eq!(m.full_elements(), [8, 6]);
-        assert_eq!(m.copies(), 4);
-        assert_eq!(m.node_xy(m.node(4, 3)), (1.0, 0.5));
-    }
-
-    #[test]
-    fn odd_counts_are_not_reduced() {
-        let m = Mesh::new(2.0, 2.0, [7, 8], true, true);
-        assert!(!m.sym_x && m.sym_y);
-        assert_eq!(m.symmetry_name(), "half-y");
-    }
-
-    #[test]
-    fn locate_finds_element_and_local_coordinates() {
-        let m = Mesh::new(2.0, 2.0, [4, 4], false, false);
-        let (e, xi, eta) = m.locate(-0.75, 0.25).unwrap();
-        assert_eq!(m.element_ij(e), (0, 2));
-        assert!(
-            xi.abs() < 1e-12 && eta.abs() < 1e-12,
-            "centre of element (0, 2)"
-        );
-        assert!(m.locate(1.0 + 1e-3, 0.0).is_none());
-        assert!(
-            m.locate(1.0, 1.0).is_some(),
-            "corner on the boundary is inside"
-        );
-    }
-
-    #[test]
-    fn nested_dissection_is_a_permutation() {
-        for (nx, ny) in [(1, 1), (7, 3), (40, 25)] {
-            let m = Mesh::new(2.0, 1.0, [nx, ny], false, false);
-            let mut order = nested_dissection(&m);
-            assert_eq!(order.len(), m.n_nodes(), "{nx} × {ny}");
-            order.sort_unstable();
-            assert!(
-                order.iter().enumerate().all(|(i, &n)| i == n),
-                "{nx} × {ny}: every node once"
-            );
-        }
-    }
-
-    #[test]
-    fn symmetry_lines_lose_their_normal_rotation() {
-        let m = Mesh::new(2.0, 2.0, [4, 4], true, true);
-        let d = DofMap::new(&m);
-        // 9 nodes × 3 dofs, minus ψx on the 3 nodes of x = 0 and ψy on the 3 nodes of y = 0.
-        assert_eq!(d.n_eq(), 27 - 6);
-        assert!(d.eq(m.node(0, 1), Dof::PsiX).is_none());
-        assert!(d.eq(m.node(0, 1), Dof::PsiY).is_some());
-        assert!(d.eq(m.node(1, 0), Dof::PsiY).is_none());
-    }
-
-    /// Bilinear interpolation reproduces a bilinear field exactly on any finer or coarser
-    /// grid, and a reduced grid's field is read through its mirror images.
-    #[test]
-    fn interpolation_is_exact_for_bilinear_fields_and_mirrors_reduced_grids() {
-        let f = |x: f64, y: f64| 1.0 + 2.0 * x - 3.0 * y + 0.5 * x * y;
-        let coarse = Mesh::new(2.0, 1.5, [6, 4], false, false);
-        let values: Vec<f64> = (0..coarse.n_nodes())
-            .map(|n| {
-                let (x, y) = coarse.node_xy(n);
-                f(x, y)
-            })
-            .collect();
-        let fine = Mesh::new(2.0, 1.5, [14, 10], false, false);
-        let got = fine.interpolate_from(&coarse, &values);
-        for (n, v) in got.iter().enumerate() {
-            let (x, y) = fine.node_xy(n);
-            // Linear in each direction within a coarse element: exact to round-off.
-            assert!(
-                (v - f(x, y)).abs() < 1e-13,
-                "at ({x}, {y}): {v} vs {}",
-                f(x, y)
-            );
-        }
-        // A field even in x and y held on a quarter grid, read on the whole plate.
-        let g = |x: f64, y: f64| 2.0 + x.abs() + 0.25 * y.abs();
-        let quarter = Mesh::new(2.0, 1.5, [8, 6], true, true);
-        let q: Vec<f64> = (0..quarter.n_nodes())
-            .map(|n| {
-                let (x, y) = quarter.node_xy(n);
-                g(x, y)
-            })
-            .collect();
-        let whole = Mesh::new(2.0, 1.5, [8, 6], false, false);
-        for (n, v) in whole.interpolate_from(&quarter, &q).iter().enumerate() {
-            let (x, y) = whole.node_xy(n);
-            assert!((v - g(x, y)).abs() < 1e-13);
-        }
-    }
-}
+mod tests;

@@ -20,6 +20,12 @@
 //! extended by mirroring, σ(x) = σ(|x|) across each symmetry line. Only the model's own elements
 //! are read back, so the padding needs to cover the offsets from the model to the whole plate:
 //! N_d + n_d − 1 along a direction with n_d model and N_d whole-plate elements.
+//!
+//! On a jointed plate each node copy is one pressure unknown: the pressure is bilinear per
+//! element from the element's own corner copies (the cell-corner form), so the four element
+//! fields gather w_b[e'] = σ(copy at corner b of e') and the outputs scatter to the copies —
+//! the same pair table, padded grid and 8 FFTs per product; only the gather and scatter maps
+//! change (a gather map of 4 entries per whole-plate element).
 
 use std::sync::{Arc, Mutex};
 
@@ -79,6 +85,9 @@ pub struct ToeplitzCompliance {
     shift: [usize; 2],
     /// Kernel spectra, 16 of H2 × M1 (H2 = M2/2 + 1), index a·4 + b.
     kernels: Vec<Vec<Complex<f64>>>,
+    /// On a jointed mesh, the unknown read at corner b of whole-plate element (I, J), at
+    /// (b · N1 + I) · N2 + J; `None` on a plain grid (the node |I + b_x − shift| …).
+    gather: Option<Vec<u32>>,
     diag: Vec<f64>,
     r2c: Arc<dyn RealToComplex<f64>>,
     c2r: Arc<dyn ComplexToReal<f64>>,
@@ -106,6 +115,7 @@ impl Clone for ToeplitzCompliance {
             m: self.m,
             shift: self.shift,
             kernels: self.kernels.clone(),
+            gather: self.gather.clone(),
             diag: self.diag.clone(),
             r2c: self.r2c.clone(),
             c2r: self.c2r.clone(),
@@ -182,6 +192,7 @@ impl ToeplitzCompliance {
             m,
             shift,
             kernels: Vec::new(),
+            gather: gather_map(mesh, shift),
             diag: Vec::new(),
             r2c,
             c2r,
@@ -358,6 +369,15 @@ impl ToeplitzCompliance {
         let mut out = std::mem::take(&mut s.out);
         for (b, field) in real.iter_mut().enumerate() {
             field.iter_mut().for_each(|v| *v = 0.0);
+            if let Some(gather) = &self.gather {
+                let at = &gather[b * full[0] * full[1]..(b + 1) * full[0] * full[1]];
+                for ie in 0..full[0] {
+                    for je in 0..full[1] {
+                        field[ie * m2 + je] = x[at[ie * full[1] + je] as usize];
+                    }
+                }
+                continue;
+            }
             let (bx, by) = LOCAL[b];
             for ie in 0..full[0] {
                 let i = model(ie + bx, shift[0]);
@@ -386,12 +406,17 @@ impl ToeplitzCompliance {
         }
         // Scatter: node i collects y_a of each model element having it as local node a.
         y.iter_mut().for_each(|v| *v = 0.0);
+        let nx = self.mesh.nx;
         for (a, field) in real.iter().enumerate() {
             let (ax, ay) = LOCAL[a];
-            for ie in 0..self.mesh.nx {
+            for ie in 0..nx {
                 let row = (ie + shift[0]) * m2;
                 for je in 0..self.mesh.ny {
-                    y[(ie + ax) + (je + ay) * nx1] += field[row + je + shift[1]];
+                    let node = match self.gather {
+                        Some(_) => self.mesh.element_nodes(ie + je * nx)[a],
+                        None => (ie + ax) + (je + ay) * nx1,
+                    };
+                    y[node] += field[row + je + shift[1]];
                 }
             }
         }
@@ -431,8 +456,75 @@ impl ToeplitzCompliance {
     }
 
     fn diagonal(&self, table: &PairTable) -> Vec<f64> {
-        (0..self.len()).map(|i| self.entry(table, i, i)).collect()
+        match &self.gather {
+            Some(gather) => self.jointed_diagonal(table, gather),
+            None => (0..self.len()).map(|i| self.entry(table, i, i)).collect(),
+        }
     }
+
+    /// T_ii of a jointed mesh from the pair table: c Σ over the model elements e0 holding copy
+    /// i (at corner a) and the whole-plate elements e1 reading it (at corner b, through the
+    /// gather map: the copy itself and its mirror images) of I_ab(e1 − e0).
+    fn jointed_diagonal(&self, table: &PairTable, gather: &[u32]) -> Vec<f64> {
+        let full = self.mesh.full_elements();
+        let per = full[0] * full[1];
+        let mut readers: Vec<Vec<(isize, isize, usize)>> = vec![Vec::new(); self.len()];
+        for (k, &node) in gather.iter().enumerate() {
+            let (b, cell) = (k / per, k % per);
+            readers[node as usize].push(((cell / full[1]) as isize, (cell % full[1]) as isize, b));
+        }
+        let nx = self.mesh.nx;
+        let topo = self.mesh.topo.as_ref();
+        (0..self.len())
+            .map(|i| {
+                let mut sum = 0.0;
+                for &(e0, a) in topo.map_or(&[][..], |t| t.incident(i)) {
+                    let p0 = (
+                        (e0 % nx + self.shift[0]) as isize,
+                        (e0 / nx + self.shift[1]) as isize,
+                    );
+                    for &(p1x, p1y, b) in &readers[i] {
+                        sum += symmetric(table, p1x - p0.0, p1y - p0.1, a, b);
+                    }
+                }
+                self.constant * sum
+            })
+            .collect()
+    }
+}
+
+/// The gather map of a jointed mesh (see [`ToeplitzCompliance`]'s `gather`): whole-plate element
+/// (I, J) is the model element at |I − shift| (mirrored: shift − 1 − I) with its corners
+/// reflected; `None` on a plain grid.
+fn gather_map(mesh: &Mesh, shift: [usize; 2]) -> Option<Vec<u32>> {
+    mesh.topo.as_ref()?;
+    let full = mesh.full_elements();
+    let mut gather = vec![0u32; 4 * full[0] * full[1]];
+    let fold = |p: usize, s: usize| {
+        if p >= s {
+            (p - s, false)
+        } else {
+            (s - 1 - p, true)
+        }
+    };
+    for b in 0..4 {
+        for ie in 0..full[0] {
+            let (mi, fx) = fold(ie, shift[0]);
+            for je in 0..full[1] {
+                let (mj, fy) = fold(je, shift[1]);
+                let mut corner = b;
+                if fx {
+                    corner = pairs::MIRROR_X[corner];
+                }
+                if fy {
+                    corner = pairs::MIRROR_Y[corner];
+                }
+                let node = mesh.element_nodes(mi + mj * mesh.nx)[corner];
+                gather[(b * full[0] + ie) * full[1] + je] = node as u32;
+            }
+        }
+    }
+    Some(gather)
 }
 
 /// Bytes a [`ToeplitzCompliance`] of `mesh` holds: 16 kernel spectra and 8 work arrays of the
@@ -448,123 +540,13 @@ pub fn toeplitz_bytes(mesh: &Mesh) -> usize {
     let spectra = (16 + 4 + 4 + 1) * h2 * m[0] * 16;
     let real = 4 * m[0] * m[1] * 8;
     let table = full[0] * full[1] * 16 * 8;
-    spectra + real + table + mesh.n_nodes() * 8
+    let gather = if mesh.topo.is_some() {
+        full[0] * full[1] * 4 * 4
+    } else {
+        0
+    };
+    spectra + real + table + gather + mesh.n_nodes() * 8
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn dense(mesh: &Mesh, c: f64, kernel: &Kernel) -> faer::Mat<f64> {
-        pairs::dense_matrix(mesh, c, kernel)
-    }
-
-    /// A reproducible field with both signs and no symmetry.
-    fn field(n: usize, seed: u64) -> Vec<f64> {
-        let mut s = seed;
-        (0..n)
-            .map(|_| {
-                s = s
-                    .wrapping_mul(6364136223846793005)
-                    .wrapping_add(1442695040888963407);
-                ((s >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
-            })
-            .collect()
-    }
-
-    /// The FFT product equals the dense product of `pairs::dense_matrix` (an independent
-    /// scatter of the same pair table), for the half-space, Pasternak and elastic-layer kernels, to round-off: the FFT's error is ~1e-16 × log N × max|T|·|x|.
-    fn check(a: f64, b: f64, full: [usize; 2], sym_x: bool, sym_y: bool) {
-        check_kernel(a, b, full, sym_x, sym_y, &Kernel::Boussinesq);
-        // A Pasternak kernel decaying within the plate (λ = 0.3) and one reaching beyond it.
-        for lambda in [0.3, 3.0] {
-            check_kernel(a, b, full, sym_x, sym_y, &Kernel::Pasternak { lambda });
-        }
-        // A layer whose kernel is cut within the plate (40 h = 0.8) and a deep one.
-        for depth in [0.02, 0.7] {
-            let table =
-                super::super::layer::LayerTable::shared(0.3, super::super::layer::Base::Rough);
-            check_kernel(
-                a,
-                b,
-                full,
-                sym_x,
-                sym_y,
-                &Kernel::ElasticLayer { depth, table },
-            );
-        }
-    }
-
-    fn check_kernel(a: f64, b: f64, full: [usize; 2], sym_x: bool, sym_y: bool, kernel: &Kernel) {
-        let mesh = Mesh::new(a, b, full, sym_x, sym_y);
-        let c = 0.37;
-        let t = dense(&mesh, c, kernel);
-        let op = ToeplitzCompliance::with_kernel(&mesh, c, kernel);
-        let n = mesh.n_nodes();
-        let name = format!(
-            "{kernel:?} {full:?} {} (μ = {})",
-            mesh.symmetry_name(),
-            b / a
-        );
-        for seed in [1, 2] {
-            let x = field(n, seed);
-            let y = op.apply(&x);
-            let mut worst = 0.0_f64;
-            let mut scale = 0.0_f64;
-            for i in 0..n {
-                let d: f64 = (0..n).map(|j| t[(i, j)] * x[j]).sum();
-                worst = worst.max((d - y[i]).abs());
-                scale = scale.max(d.abs());
-            }
-            assert!(
-                worst < 1e-12 * scale,
-                "{name}: FFT product differs from dense by {worst:e} (scale {scale:e})"
-            );
-        }
-        for i in 0..n {
-            assert!(
-                (op.diag()[i] - t[(i, i)]).abs() < 1e-13 * t[(i, i)],
-                "{name}: diagonal {i}: {} vs {}",
-                op.diag()[i],
-                t[(i, i)]
-            );
-        }
-    }
-
-    #[test]
-    fn fft_product_equals_dense_full_plate() {
-        check(2.0, 2.0, [6, 6], false, false);
-        check(2.0, 1.0, [7, 4], false, false);
-        check(2.0, 3.0, [5, 9], false, false);
-    }
-
-    #[test]
-    fn fft_product_equals_dense_half_models() {
-        check(2.0, 2.0, [8, 5], true, false);
-        check(2.0, 1.0, [5, 8], false, true);
-        check(2.0, 0.6, [10, 7], true, false);
-    }
-
-    #[test]
-    fn fft_product_equals_dense_quarter_models() {
-        check(2.0, 2.0, [8, 8], true, true);
-        check(2.0, 1.0, [10, 6], true, true);
-        check(2.0, 2.0, [2, 2], true, true);
-    }
-
-    #[test]
-    fn fft_sizes_are_smooth_and_large_enough() {
-        for n in [1, 2, 7, 17, 97, 383, 769] {
-            let m = fft_size(n);
-            assert!(m >= n && m.is_multiple_of(2), "{n} → {m}");
-            let mut r = m;
-            for p in [2, 3, 5] {
-                while r.is_multiple_of(p) {
-                    r /= p;
-                }
-            }
-            assert_eq!(r, 1, "{n} → {m} has a factor other than 2, 3, 5");
-        }
-        assert_eq!(fft_size(767), 768);
-    }
-}
+mod tests;

@@ -1,0 +1,402 @@
+//! The topology of a jointed grid: node copies along the joint lines that cut the plate, the
+//! corner table of the elements, the panels, the rigid pieces and their clusters, the joint
+//! segments and the dowel springs.
+//!
+//! The grid stays the uniform one of the whole outline; a joint line that cuts the plate (any
+//! kind but continuous) doubles the nodes on it, one copy per side (four at a crossing of two
+//! such lines). Node ids 0..N_g are the grid nodes i + j(nx + 1) — at a joint the copy of the
+//! lower / left side — and N_g.. the extra copies, in the order (grid node, side). Each copy is
+//! one plate node (w, ψx, ψy) and one pressure unknown.
+//!
+//! This file knows nothing of [`super::Mesh`]: it works on the plain numbers of a [`Grid`].
+
+use std::sync::Arc;
+
+use crate::layout::{Axis, JointKind, Layout};
+
+/// The plain numbers of a model grid (possibly reduced by symmetry).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Grid {
+    /// Elements along x.
+    pub nx: usize,
+    /// Elements along y.
+    pub ny: usize,
+    /// Lower-left corner x.
+    pub x0: f64,
+    /// Lower-left corner y.
+    pub y0: f64,
+    /// Element size along x.
+    pub hx: f64,
+    /// Element size along y.
+    pub hy: f64,
+    /// Reduced about x = 0 (the model keeps x ≥ 0).
+    pub sym_x: bool,
+    /// Reduced about y = 0.
+    pub sym_y: bool,
+}
+
+/// One element edge of a joint line in the model: the node copies on its two sides, each pair
+/// ordered along the joint (increasing y for a line x = const, increasing x for y = const).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Segment {
+    /// Index of the joint in the layout.
+    pub joint: usize,
+    /// The copies on the − side (x < x_j or y < y_j) at the two ends.
+    pub a: [usize; 2],
+    /// The copies on the + side.
+    pub b: [usize; 2],
+    /// The element on the − side.
+    pub minus: usize,
+    /// The element on the + side.
+    pub plus: usize,
+    /// Family of the joint line (the rotation normal to it is ψx for Axis::X, ψy for Axis::Y).
+    pub axis: Axis,
+    /// Length of the edge.
+    pub length: f64,
+}
+
+/// A dowel bar of the model as a point spring on one joint segment.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DowelSpring {
+    /// The segment it sits on.
+    pub segment: usize,
+    /// Its position on the segment, t ∈ [0, 1] from the segment's first end.
+    pub t: f64,
+    /// Its spring k̄_d, halved for a bar on a symmetry line of the model.
+    pub k: f64,
+    /// Index of the bar in its joint's positions.
+    pub bar: usize,
+}
+
+/// Node copies, corner table, panels, pieces, clusters, joint segments and dowels of a model
+/// grid with a layout.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Topology {
+    /// The whole-plate layout the topology was built from.
+    pub layout: Arc<Layout>,
+    /// Grid columns that carry a joint line inside the model, with the joint's index (every
+    /// kind), sorted by column.
+    pub lines_x: Vec<(usize, usize)>,
+    /// Grid rows that carry a joint line inside the model, with the joint's index.
+    pub lines_y: Vec<(usize, usize)>,
+    /// The grid node of each extra copy (node id N_g + k).
+    pub extra_grid: Vec<usize>,
+    /// The node copy at each corner of each element (counter-clockwise from the lower left).
+    pub corners: Vec<[usize; 4]>,
+    /// The whole-plate panel (column + row · columns) of each model element.
+    pub panel: Vec<u32>,
+    /// The rigid piece of each model element: elements joined through edges that no joint cuts.
+    pub piece: Vec<u32>,
+    /// The cluster of each piece: pieces joined through joints that transfer load.
+    pub cluster: Vec<u32>,
+    /// Joint segments of every cutting joint (free ones included, whose springs are zero).
+    pub segments: Vec<Segment>,
+    /// Dowel springs of the model.
+    pub dowels: Vec<DowelSpring>,
+    /// Extra copies of each grid node: `extra_of[g]..extra_of[g + 1]` indexes `extra_list`.
+    extra_of: Vec<usize>,
+    extra_list: Vec<usize>,
+    /// Elements and local corners of each node copy: `incident_of[n]..incident_of[n + 1]`.
+    incident_of: Vec<usize>,
+    incident: Vec<(usize, usize)>,
+}
+
+/// Tolerance on positions, in element sizes, for lines and bars that fall on grid lines.
+const ON_LINE: f64 = 1e-6;
+
+/// Union–find root with path halving.
+fn root(parent: &mut [usize], mut i: usize) -> usize {
+    while parent[i] != i {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    i
+}
+
+impl Topology {
+    /// Build the topology of `grid` with a whole-plate `layout`. A joint line is taken at the
+    /// nearest grid line of the model (validation guarantees that it lies on one, see
+    /// [`crate::scene`]); lines outside the model or on its boundary (the mirrored half of a
+    /// reduced model, a continuous joint on a symmetry line) do not enter it.
+    pub fn build(grid: Grid, layout: Arc<Layout>) -> Self {
+        let Grid { nx, ny, .. } = grid;
+        let (nx1, ny1) = (nx + 1, ny + 1);
+        let n_grid = nx1 * ny1;
+        let line = |at: f64, origin: f64, h: f64, n: usize| -> Option<usize> {
+            let f = (at - origin) / h;
+            let i = f.round();
+            (i >= 1.0 && i <= n as f64 - 1.0).then_some(i as usize)
+        };
+        let mut lines_x = Vec::new();
+        let mut lines_y = Vec::new();
+        for (k, j) in layout.joints.iter().enumerate() {
+            let (list, at) = match j.axis {
+                Axis::X => (&mut lines_x, line(j.at, grid.x0, grid.hx, nx)),
+                Axis::Y => (&mut lines_y, line(j.at, grid.y0, grid.hy, ny)),
+            };
+            if let Some(i) = at {
+                // Two joints on one line: the first one counts (validation refuses it).
+                if !list.iter().any(|&(c, _)| c == i) {
+                    list.push((i, k));
+                }
+            }
+        }
+        lines_x.sort_unstable();
+        lines_y.sort_unstable();
+        let cut = |lines: &[(usize, usize)], n: usize| -> Vec<bool> {
+            let mut v = vec![false; n + 1];
+            for &(i, k) in lines {
+                v[i] = layout.joints[k].kind.doubles();
+            }
+            v
+        };
+        let cut_x = cut(&lines_x, nx);
+        let cut_y = cut(&lines_y, ny);
+
+        // Node copies: per grid node, its ≤ 4 elements (LL, LR, UL, UR) joined across edges no
+        // joint cuts; each group of elements is one copy, the first group keeps the grid id.
+        let mut corners = vec![[usize::MAX; 4]; nx * ny];
+        let mut extra_grid = Vec::new();
+        let mut extra_of = Vec::with_capacity(n_grid + 1);
+        extra_of.push(0);
+        let mut extra_list = Vec::new();
+        for j in 0..ny1 {
+            for i in 0..nx1 {
+                let g = i + j * nx1;
+                // (element, the node's corner in it), in the order LL, LR, UL, UR.
+                let slots: [Option<(usize, usize)>; 4] = [
+                    (i > 0 && j > 0).then(|| ((i - 1) + (j - 1) * nx, 2)),
+                    (i < nx && j > 0).then(|| (i + (j - 1) * nx, 3)),
+                    (i > 0 && j < ny).then(|| ((i - 1) + j * nx, 1)),
+                    (i < nx && j < ny).then(|| (i + j * nx, 0)),
+                ];
+                let mut parent = [0, 1, 2, 3];
+                let mut join = |a: usize, b: usize| {
+                    if slots[a].is_some() && slots[b].is_some() {
+                        let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
+                        parent[ra.max(rb)] = ra.min(rb);
+                    }
+                };
+                if !cut_x[i] {
+                    join(0, 1);
+                    join(2, 3);
+                }
+                if !cut_y[j] {
+                    join(0, 2);
+                    join(1, 3);
+                }
+                let mut id_of_root = [usize::MAX; 4];
+                let mut first = true;
+                for s in 0..4 {
+                    let Some((e, c)) = slots[s] else { continue };
+                    let r = root(&mut parent, s);
+                    if id_of_root[r] == usize::MAX {
+                        id_of_root[r] = if first {
+                            g
+                        } else {
+                            extra_grid.push(g);
+                            extra_list.push(n_grid + extra_grid.len() - 1);
+                            n_grid + extra_grid.len() - 1
+                        };
+                        first = false;
+                    }
+                    corners[e][c] = id_of_root[r];
+                }
+                extra_of.push(extra_list.len());
+            }
+        }
+        let n_nodes = n_grid + extra_grid.len();
+        let mut counts = vec![0usize; n_nodes + 1];
+        for c in &corners {
+            for &n in c {
+                counts[n + 1] += 1;
+            }
+        }
+        for k in 0..n_nodes {
+            counts[k + 1] += counts[k];
+        }
+        let incident_of = counts.clone();
+        let mut incident = vec![(0, 0); incident_of[n_nodes]];
+        let mut next = counts;
+        for (e, c) in corners.iter().enumerate() {
+            for (a, &n) in c.iter().enumerate() {
+                incident[next[n]] = (e, a);
+                next[n] += 1;
+            }
+        }
+
+        // Panels by every line of the whole plate; pieces by the model's cutting lines.
+        let [pcols, _] = layout.panel_counts();
+        let mut panel = Vec::with_capacity(nx * ny);
+        let band = |cut: &[bool], k: usize| cut[..=k].iter().filter(|&&c| c).count();
+        let pieces_x = band(&cut_x, nx) + 1;
+        let mut piece = Vec::with_capacity(nx * ny);
+        for je in 0..ny {
+            for ie in 0..nx {
+                let xc = grid.x0 + (ie as f64 + 0.5) * grid.hx;
+                let yc = grid.y0 + (je as f64 + 0.5) * grid.hy;
+                let [c, r] = layout.panel_at(xc, yc);
+                panel.push((c + r * pcols) as u32);
+                piece.push((band(&cut_x, ie) + band(&cut_y, je) * pieces_x) as u32);
+            }
+        }
+        let n_pieces = pieces_x * (band(&cut_y, ny) + 1);
+
+        // Segments of every cutting joint, then the bars on them.
+        let mut segments = Vec::new();
+        for &(i, k) in &lines_x {
+            if !cut_x[i] {
+                continue;
+            }
+            for je in 0..ny {
+                let (m, p) = ((i - 1) + je * nx, i + je * nx);
+                segments.push(Segment {
+                    joint: k,
+                    a: [corners[m][1], corners[m][2]],
+                    b: [corners[p][0], corners[p][3]],
+                    minus: m,
+                    plus: p,
+                    axis: Axis::X,
+                    length: grid.hy,
+                });
+            }
+        }
+        for &(j, k) in &lines_y {
+            if !cut_y[j] {
+                continue;
+            }
+            for ie in 0..nx {
+                let (m, p) = (ie + (j - 1) * nx, ie + j * nx);
+                segments.push(Segment {
+                    joint: k,
+                    a: [corners[m][3], corners[m][2]],
+                    b: [corners[p][0], corners[p][1]],
+                    minus: m,
+                    plus: p,
+                    axis: Axis::Y,
+                    length: grid.hx,
+                });
+            }
+        }
+        let mut dowels = Vec::new();
+        for (s0, seg) in segments.iter().enumerate() {
+            // Bars are placed once per joint, from its first segment.
+            if s0 > 0 && segments[s0 - 1].joint == seg.joint {
+                continue;
+            }
+            let JointKind::Dowels { k, positions, .. } = &layout.joints[seg.joint].kind else {
+                continue;
+            };
+            let (origin, h, n, sym) = match seg.axis {
+                Axis::X => (grid.y0, grid.hy, ny, grid.sym_y),
+                Axis::Y => (grid.x0, grid.hx, nx, grid.sym_x),
+            };
+            for (bar, &p) in positions.iter().enumerate() {
+                let f = (p - origin) / h;
+                if f < -ON_LINE || f > n as f64 + ON_LINE {
+                    continue; // on the mirrored half of a reduced model
+                }
+                let f = f.clamp(0.0, n as f64);
+                let cell = (f.floor() as usize).min(n - 1);
+                let on_mirror = sym && p.abs() <= ON_LINE * h;
+                dowels.push(DowelSpring {
+                    segment: s0 + cell,
+                    t: (f - cell as f64).clamp(0.0, 1.0),
+                    k: if on_mirror { 0.5 * k } else { *k },
+                    bar,
+                });
+            }
+        }
+
+        // Clusters: pieces joined by the springs of transferring joints.
+        let mut parent: Vec<usize> = (0..n_pieces).collect();
+        let mut join = |a: usize, b: usize| {
+            let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
+            parent[ra.max(rb)] = ra.min(rb);
+        };
+        for seg in &segments {
+            if matches!(
+                layout.joints[seg.joint].kind,
+                JointKind::Aggregate { .. } | JointKind::Tied { .. }
+            ) {
+                join(piece[seg.minus] as usize, piece[seg.plus] as usize);
+            }
+        }
+        for d in &dowels {
+            let seg = &segments[d.segment];
+            join(piece[seg.minus] as usize, piece[seg.plus] as usize);
+        }
+        let mut label = vec![u32::MAX; n_pieces];
+        let mut cluster = Vec::with_capacity(n_pieces);
+        let mut next_label = 0;
+        for p in 0..n_pieces {
+            let r = root(&mut parent, p);
+            if label[r] == u32::MAX {
+                label[r] = next_label;
+                next_label += 1;
+            }
+            cluster.push(label[r]);
+        }
+
+        Self {
+            layout,
+            lines_x,
+            lines_y,
+            extra_grid,
+            corners,
+            panel,
+            piece,
+            cluster,
+            segments,
+            dowels,
+            extra_of,
+            extra_list,
+            incident_of,
+            incident,
+        }
+    }
+
+    /// Number of node copies (grid nodes and extras).
+    pub fn n_nodes(&self) -> usize {
+        self.extra_of.len() - 1 + self.extra_grid.len()
+    }
+
+    /// The grid node of node copy `n`.
+    pub fn grid_of(&self, n: usize) -> usize {
+        let n_grid = self.extra_of.len() - 1;
+        if n < n_grid {
+            n
+        } else {
+            self.extra_grid[n - n_grid]
+        }
+    }
+
+    /// The extra copies of grid node `g` (its own id not included).
+    pub fn extras(&self, g: usize) -> &[usize] {
+        &self.extra_list[self.extra_of[g]..self.extra_of[g + 1]]
+    }
+
+    /// The elements holding node copy `n`, with its local corner in each.
+    pub fn incident(&self, n: usize) -> &[(usize, usize)] {
+        &self.incident[self.incident_of[n]..self.incident_of[n + 1]]
+    }
+
+    /// Number of rigid pieces.
+    pub fn n_pieces(&self) -> usize {
+        self.cluster.len()
+    }
+
+    /// Number of clusters.
+    pub fn n_clusters(&self) -> usize {
+        self.cluster
+            .iter()
+            .map(|&c| c as usize + 1)
+            .max()
+            .unwrap_or(0)
+    }
+
+    /// True when some joint line cuts the model (node copies exist).
+    pub fn cuts(&self) -> bool {
+        !self.extra_grid.is_empty()
+    }
+}
