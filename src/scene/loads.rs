@@ -464,10 +464,8 @@ pub(super) fn voids_for(
     let settlement = match groups.foundation {
         // Pasternak: its springs' settlement, an upper bound (the shear layer spreads the load).
         FoundationKind::Winkler | FoundationKind::Pasternak => 4.0 * c / area,
-        // Kerr: both spring layers in series, the upper's Γ_c beside the lower's Γ_w.
-        FoundationKind::Kerr => {
-            4.0 * groups.mu * (groups.gamma + groups.upper.unwrap_or(0.0)) / area
-        }
+        // Kerr: both spring layers in series (Γ_c beside Γ_w).
+        FoundationKind::Kerr => 4.0 * (c + groups.mu * groups.upper.unwrap_or(0.0)) / area,
         FoundationKind::HalfSpace | FoundationKind::ElasticLayer => 3.0 * c * 4.0 / area.sqrt(),
     };
     raw.iter()
