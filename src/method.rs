@@ -45,6 +45,22 @@ pub enum SolvedBy {
 crate::names!(SolvedBy, Direct => "direct", Penalty => "penalty", Qp => "qp");
 crate::names!(MethodKind, Penalty => "penalty", Qp => "qp");
 
+/// Where an iterative method starts on a large grid (the scene's `[solver] start`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum Start {
+    /// From the same plate solved on a grid twice as coarse (recursively), from
+    /// [`crate::solve::NESTED_MIN_NODES`] pressure nodes: the penalty's first lifted set (and
+    /// its ε̄, where the automatic choice lowered it there), the active-set QP's first iterate.
+    #[default]
+    Nested,
+    /// From nothing: the penalty from the bonded solve, the active-set QP from the feasible
+    /// point nearest σ = 0.
+    Cold,
+}
+
+crate::names!(Start, Nested => "nested", Cold => "cold");
+
 /// Settings of the penalty iteration.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PenaltySettings {
@@ -57,6 +73,8 @@ pub struct PenaltySettings {
     pub max_iterations: usize,
     /// The conjugate-gradient solves of the iterative route (half-space with a Toeplitz T).
     pub cg: CgSettings,
+    /// Where a large grid starts.
+    pub start: Start,
 }
 
 /// Settings of the conjugate-gradient solves of the iterative route
@@ -148,6 +166,7 @@ impl Default for PenaltySettings {
             auto: true,
             max_iterations: 50,
             cg: CgSettings::default(),
+            start: Start::Nested,
         }
     }
 }
@@ -356,6 +375,8 @@ pub struct QpSettings {
     pub solver: QpSolver,
     /// The matrix-free solver's settings.
     pub active_set: ActiveSetSettings,
+    /// Where a large grid starts (the matrix-free solver; clarabel has no start).
+    pub start: Start,
 }
 
 impl Default for QpSettings {
@@ -369,6 +390,7 @@ impl Default for QpSettings {
             form: QpForm::Auto,
             solver: QpSolver::Auto,
             active_set: ActiveSetSettings::default(),
+            start: Start::Nested,
         }
     }
 }

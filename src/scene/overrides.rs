@@ -6,7 +6,7 @@
 use serde::Deserialize;
 
 use crate::error::{Error, Result};
-use crate::method::{Contact, MethodKind, QpForm, QpSolver, Route};
+use crate::method::{Contact, MethodKind, QpForm, QpSolver, Route, Start};
 use crate::model::{ConstraintPoints, SymmetryMode};
 use crate::scene::spec::{PenaltySpec, SceneFile};
 
@@ -24,6 +24,7 @@ pub const OPTIONS: &[(&str, &str)] = &[
     ("qp_solver", "solver.qp_solver"),
     ("solver", "solver.route"),
     ("symmetry", "mesh.symmetry"),
+    ("start", "solver.start"),
 ];
 
 /// Overrides of a scene's settings; `None` keeps the scene's value. One field per entry of
@@ -50,6 +51,8 @@ pub struct Overrides {
     pub solver: Option<Route>,
     /// `[mesh] symmetry`.
     pub symmetry: Option<SymmetryMode>,
+    /// `[solver] start`.
+    pub start: Option<Start>,
 }
 
 impl Overrides {
@@ -90,6 +93,9 @@ impl Overrides {
         }
         if let Some(s) = self.symmetry {
             file.mesh.symmetry = s;
+        }
+        if let Some(s) = self.start {
+            file.solver.start = s;
         }
     }
 }
@@ -139,6 +145,7 @@ mod tests {
             qp_solver: Some(QpSolver::ActiveSet),
             solver: Some(Route::Iterative),
             symmetry: Some(SymmetryMode::None),
+            start: Some(Start::Cold),
         };
         let mut keys: Vec<String> = match serde_json::to_value(&full) {
             Ok(serde_json::Value::Object(m)) => m.keys().cloned().collect(),

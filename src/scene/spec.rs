@@ -4,7 +4,7 @@ use serde::Deserialize;
 
 use crate::foundation::FoundationKind;
 use crate::layout::{Axis, JointType};
-use crate::method::{Contact, MethodKind, QpForm, QpSolver, Route};
+use crate::method::{Contact, MethodKind, QpForm, QpSolver, Route, Start};
 use crate::model::{ConstraintPoints, SymmetryMode};
 
 /// `[plate]` in SI units.
@@ -443,6 +443,10 @@ pub struct SolverSpec {
     /// gradients).
     #[serde(default = "default_route")]
     pub route: Route,
+    /// Where a large grid starts: "nested" (default: from the same plate on a coarser grid)
+    /// or "cold".
+    #[serde(default)]
+    pub start: Start,
 }
 
 fn default_qp_solver() -> QpSolver {
@@ -482,6 +486,7 @@ impl Default for SolverSpec {
             qp_form: default_qp_form(),
             qp_solver: default_qp_solver(),
             route: default_route(),
+            start: Start::Nested,
         }
     }
 }

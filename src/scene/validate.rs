@@ -169,6 +169,7 @@ fn solver(s: &SolverSpec) -> Result<(Method, f64)> {
     }
     let penalty = PenaltySettings {
         max_iterations: s.max_iterations as usize,
+        start: s.start,
         ..penalty
     };
     let method = match s.contact {
@@ -178,6 +179,7 @@ fn solver(s: &SolverSpec) -> Result<(Method, f64)> {
             crate::method::MethodKind::Qp => Method::Qp(QpSettings {
                 form: s.qp_form,
                 solver: s.qp_solver,
+                start: s.start,
                 ..QpSettings::default()
             }),
         },

@@ -18,16 +18,18 @@ pub fn solve(ops: &Operators, method: &Method) -> Result<Solution> {
     solve_from(ops, method, None)
 }
 
-/// Whether `method` on `ops` runs the matrix-free active-set QP, the one method that takes a
-/// start ([`solve_from`]).
+/// Whether `method` on `ops` takes a start ([`solve_from`]): the penalty iteration (its first
+/// penalised set) and the matrix-free active-set QP (its first iterate); clarabel and bonded
+/// contact do not.
 pub fn takes_start(ops: &Operators, method: &Method) -> bool {
     match method {
+        Method::Penalty(_) => true,
         Method::Qp(s) => {
             let toeplitz = matches!(ops.t.as_ref(), Compliance::Toeplitz(_));
             s.resolve(ops.foundation, ops.constraints.kind, toeplitz) == QpSolver::ActiveSet
                 && ops.constraints.kind == ConstraintPoints::Nodal
         }
-        _ => false,
+        Method::Bonded => false,
     }
 }
 

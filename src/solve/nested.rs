@@ -1,24 +1,27 @@
-//! The nested start of the matrix-free active-set QP: on a large grid, the same model solved
-//! first on a grid twice as coarse, its pressures the fine solve's first iterate.
+//! The nested start of the iterative methods: on a large grid, the same model solved first on
+//! a grid twice as coarse (recursively), its pressures the fine solve's start — the penalty's
+//! first lifted set (and its ε̄ where the automatic choice lowered it on the coarse grid), the
+//! active-set QP's first iterate.
 
 use super::dispatch::{solve_with, takes_start};
 use super::solution::Solution;
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
-use crate::method::Method;
+use crate::method::{Method, Start};
 use crate::model::Model;
 use crate::monitor::Monitor;
 use crate::operators::Operators;
 
-/// Pressure nodes from which the matrix-free active-set QP starts from a coarser grid's
-/// answer: below, a cold start takes few face solves and a coarse assembly would not pay.
+/// Pressure nodes from which the penalty and the matrix-free active-set QP start from a coarser
+/// grid's answer: below, a cold start takes few steps and a coarse assembly would not pay.
 pub const NESTED_MIN_NODES: usize = 4096;
 
-/// Solve; where the matrix-free active-set QP runs on a large grid, first solve the same model
-/// on a grid twice as coarse (the same way, recursively) and start from its pressures. From a
-/// cold start the contact edge moves by a ring of nodes per face solve, so the face solves grow
-/// with the grid; from the coarse answer only the rings near the edge remain to be settled.
-/// The answer is the same (the QP's solution is unique); a coarse solve that fails or does
+/// Solve; where the penalty or the matrix-free active-set QP runs on a large grid with
+/// `start = "nested"`, first solve the same model on a grid twice as coarse (the same way,
+/// recursively) and start from its pressures. From a cold start the contact edge moves by a
+/// ring of nodes per step, so the steps grow with the grid; from the coarse answer only the
+/// rings near the edge remain to be settled. The answer is the same (the QP's solution is
+/// unique, the penalised problem strictly convex); a coarse solve that fails or does
 /// not converge is dropped for a cold start, and so is a jointed plate whose joints would not
 /// lie on the coarse grid's lines.
 pub fn solve_nested(
@@ -27,7 +30,12 @@ pub fn solve_nested(
     method: &Method,
     monitor: &Monitor<'_>,
 ) -> Result<Solution> {
-    if !takes_start(ops, method) || ops.n_sigma() < NESTED_MIN_NODES {
+    let nested = match method {
+        Method::Penalty(s) => s.start == Start::Nested,
+        Method::Qp(s) => s.start == Start::Nested,
+        Method::Bonded => false,
+    };
+    if !nested || !takes_start(ops, method) || ops.n_sigma() < NESTED_MIN_NODES {
         return solve_with(ops, method, None, monitor);
     }
     let mut coarse = model.clone();
@@ -42,17 +50,33 @@ pub fn solve_nested(
     let coarse_ops = Operators::assemble_with(&coarse, toeplitz);
     monitor.check("the coarse-grid start")?;
     // The coarse solves' steps are not the fine solve's: only the flag reaches them.
-    let start = match solve_nested(&coarse, &coarse_ops, method, &monitor.quiet()) {
+    let (start, fine) = match solve_nested(&coarse, &coarse_ops, method, &monitor.quiet()) {
         Err(e @ Error::Cancelled(_)) => return Err(e),
         Ok(c) if c.status.converged() => {
-            Some(ops.mesh.interpolate_from(&coarse_ops.mesh, &c.sigma))
+            let start = ops.mesh.interpolate_from(&coarse_ops.mesh, &c.sigma);
+            // The penalty continues at the ε̄ the coarse grid ended at (the automatic choice
+            // lowers it where a stage leaves tension; the fine grid needs the same).
+            let fine = match (method, &c.method) {
+                (Method::Penalty(s), Method::Penalty(reached)) if s.auto => {
+                    Method::Penalty(crate::method::PenaltySettings {
+                        epsilon: reached.epsilon.min(s.epsilon),
+                        ..*s
+                    })
+                }
+                _ => method.clone(),
+            };
+            (Some(start), fine)
         }
-        _ => None,
+        _ => (None, method.clone()),
     };
-    let mut sol = solve_with(ops, method, start.as_deref(), monitor)?;
+    let mut sol = solve_with(ops, &fine, start.as_deref(), monitor)?;
     if start.is_some() {
+        let what = match method {
+            Method::Penalty(_) => "penalty iteration started from the lifted set",
+            _ => "active-set QP started from the pressures",
+        };
         sol.info.notes.push(format!(
-            "active-set QP started from the pressures of the same plate on {} × {} elements (solved the same way; its time is in the solve's)",
+            "{what} of the same plate on {} × {} elements (solved the same way; its time is in the solve's)",
             coarse.elements[0], coarse.elements[1]
         ));
     }

@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::{Parser, Subcommand};
 use liftoff::choice::Choice;
-use liftoff::method::{Contact, MethodKind, QpForm, QpSolver, Route};
+use liftoff::method::{Contact, MethodKind, QpForm, QpSolver, Route, Start};
 use liftoff::model::{ConstraintPoints, SymmetryMode};
 use liftoff::scene::PenaltySpec;
 use liftoff::study::{ConstraintVariants, EpsSweepOptions};
@@ -72,6 +72,10 @@ pub(crate) struct Overrides {
     /// gradients) (overrides [solver] route).
     #[arg(long, value_parser = choice::<Route>())]
     pub(crate) solver: Option<Route>,
+    /// Where a large grid starts: nested (from the same plate on a grid twice as coarse) or
+    /// cold (overrides [solver] start).
+    #[arg(long, value_parser = choice::<Start>())]
+    pub(crate) start: Option<Start>,
 }
 
 impl Overrides {
@@ -84,6 +88,7 @@ impl Overrides {
             qp_form: self.qp_form,
             qp_solver: self.qp_solver,
             solver: self.solver,
+            start: self.start,
             ..Default::default()
         }
     }
