@@ -114,24 +114,50 @@ pub fn analyse(problem: &Problem, monitor: &Monitor<'_>) -> Result<Combinations>
     let assemble_s = t0.elapsed().as_secs_f64();
     let cases = Cases::new(monitor, problem.combinations.len());
     let inner = cases.inner();
+    // Contiguous runs of the scene's order, one per core, side by side; in each, a combination
+    // starts from the answer of the one before it (the same operators: the penalty's first
+    // lifted set, the active-set QP's first iterate; the answer does not depend on it).
+    let per = problem
+        .combinations
+        .len()
+        .div_ceil(rayon::current_num_threads().max(1))
+        .max(1);
     let runs: Vec<CombinationRun> = problem
         .combinations
-        .par_iter()
-        .map(|c: &Combination| {
-            let t = Instant::now();
-            let ops = base.loaded(&c.model);
-            let outcome = inner
-                .check("load combinations")
-                .and_then(|()| analysis::run_with(&c.model, &ops, &problem.method, 0.0, &inner));
-            // A cancelled run is caught below, once every worker has stopped.
-            let _ = cases.finish(&c.name);
-            CombinationRun {
-                name: c.name.clone(),
-                factors: c.factors.clone(),
-                model: c.model.clone(),
-                outcome,
-                seconds: t.elapsed().as_secs_f64(),
-            }
+        .par_chunks(per)
+        .flat_map_iter(|chunk| {
+            let mut warm: Option<Vec<f64>> = None;
+            chunk
+                .iter()
+                .map(|c: &Combination| {
+                    let t = Instant::now();
+                    let ops = base.loaded(&c.model);
+                    let outcome = inner.check("load combinations").and_then(|()| {
+                        analysis::run_from(
+                            &c.model,
+                            &ops,
+                            &problem.method,
+                            0.0,
+                            warm.as_deref(),
+                            &inner,
+                        )
+                    });
+                    if let Ok(o) = &outcome {
+                        if o.solution.status.converged() {
+                            warm = Some(o.solution.sigma.clone());
+                        }
+                    }
+                    // A cancelled run is caught below, once every worker has stopped.
+                    let _ = cases.finish(&c.name);
+                    CombinationRun {
+                        name: c.name.clone(),
+                        factors: c.factors.clone(),
+                        model: c.model.clone(),
+                        outcome,
+                        seconds: t.elapsed().as_secs_f64(),
+                    }
+                })
+                .collect::<Vec<_>>()
         })
         .collect();
     // A cancelled run is not a set of combinations that did not converge: say it was cancelled.

@@ -29,7 +29,10 @@ fn nested_and_cold_starts_give_the_same_answer() {
         ("paper-halfspace", [128, 128], 1e-8),
         ("slab-on-grade", [180, 120], 1e-10),
     ] {
-        for method in [liftoff::method::MethodKind::Penalty, liftoff::method::MethodKind::Qp] {
+        for method in [
+            liftoff::method::MethodKind::Penalty,
+            liftoff::method::MethodKind::Qp,
+        ] {
             let with = |start| Overrides {
                 mesh: Some([mesh[0] as i64, mesh[1] as i64]),
                 method: Some(method),
@@ -39,9 +42,16 @@ fn nested_and_cold_starts_give_the_same_answer() {
             let nested = solve(&Source::Example(name), with(Start::Nested));
             let cold = solve(&Source::Example(name), with(Start::Cold));
             let what = format!("{name} {method} at {mesh:?}");
-            assert!(nested.summary.converged && cold.summary.converged, "{what}: both converged");
             assert!(
-                nested.summary.notes.iter().any(|n| n.contains("started from")),
+                nested.summary.converged && cold.summary.converged,
+                "{what}: both converged"
+            );
+            assert!(
+                nested
+                    .summary
+                    .notes
+                    .iter()
+                    .any(|n| n.contains("started from")),
                 "{what}: the nested start ran: {:?}",
                 nested.summary.notes
             );

@@ -4,6 +4,12 @@ two builds can be compared digit for digit (`diff -r BEFORE AFTER`): a restructu
 changes no mechanics must leave every file equal.
 
 usage: tools/example-summaries.py OUT_DIR [LIFTOFF_BIN]   (default: target/release/liftoff)
+       tools/example-summaries.py --compare BEFORE AFTER [REL_TOL]
+
+The second form compares two such folders on the answers only: every number of every file to
+REL_TOL (default 1e-9) relative to the larger magnitude of its kind, keys that only one side has
+listed once, and the path of a solver's own account skipped (the steps it took, its residuals,
+its notes — a different start changes those, never the answer).
 """
 import json
 import pathlib
@@ -24,7 +30,50 @@ def strip(value):
     return value
 
 
+ACCOUNT = ("history", "iterations", "solver_info", "penalty_stages", "notes", "status")
+
+
+def compare(before, after, tol):
+    """Differences of the answers in two folders of summaries."""
+    problems, added = [], set()
+
+    def walk(a, b, path):
+        if isinstance(a, dict) and isinstance(b, dict):
+            for k in sorted(set(a) | set(b)):
+                if k in ACCOUNT:
+                    continue
+                if k not in a or k not in b:
+                    added.add(k)
+                    continue
+                walk(a[k], b[k], f"{path}.{k}")
+        elif isinstance(a, list) and isinstance(b, list):
+            if len(a) != len(b):
+                problems.append(f"{path}: {len(a)} against {len(b)} entries")
+            for i, (x, y) in enumerate(zip(a, b)):
+                walk(x, y, f"{path}[{i}]")
+        elif isinstance(a, (int, float)) and isinstance(b, (int, float)) and not isinstance(a, bool):
+            scale = max(abs(a), abs(b), 1e-300)
+            if abs(a - b) > tol * scale and abs(a - b) > 1e-12:
+                problems.append(f"{path}: {a!r} against {b!r}")
+        elif a != b:
+            problems.append(f"{path}: {a!r} against {b!r}")
+
+    for f in sorted(pathlib.Path(before).glob("*.json")):
+        g = pathlib.Path(after) / f.name
+        if not g.exists():
+            problems.append(f"{f.name}: missing after")
+            continue
+        walk(json.loads(f.read_text()), json.loads(g.read_text()), f.name)
+    for p in problems:
+        print(p)
+    print(f"{len(problems)} difference(s) beyond {tol:g}; keys only one side has: {sorted(added)}")
+    return not problems
+
+
 def main():
+    if sys.argv[1] == "--compare":
+        tol = float(sys.argv[4]) if len(sys.argv) > 4 else 1e-9
+        sys.exit(0 if compare(sys.argv[2], sys.argv[3], tol) else 1)
     out = pathlib.Path(sys.argv[1])
     binary = sys.argv[2] if len(sys.argv) > 2 else "target/release/liftoff"
     out.mkdir(parents=True, exist_ok=True)

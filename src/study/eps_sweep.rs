@@ -103,6 +103,9 @@ pub fn eps_sweep(
             return Err(Error::numerical("QP reference", q.status.describe()));
         }
         let (vq, sq) = fields(&ops, &model, &q);
+        // Each ε̄ starts from the last converged one's lifted set: the same operators, a nearby
+        // answer (the penalised problem has one solution whatever the start).
+        let mut warm: Option<Vec<f64>> = None;
         for &eps in epsilons {
             cases.start(&format!("{}: penalty ε̄ = {eps:.1e}", kind.name()))?;
             let t = Instant::now();
@@ -112,11 +115,16 @@ pub fn eps_sweep(
                     max_iterations,
                     ..PenaltySettings::fixed(eps)
                 }),
-                None,
+                warm.as_deref(),
                 &cases.inner(),
             );
             if let Err(e @ Error::Cancelled(_)) = r {
                 return Err(e);
+            }
+            if let Ok(sol) = &r {
+                if sol.status.converged() {
+                    warm = Some(sol.sigma.clone());
+                }
             }
             let time_s = t.elapsed().as_secs_f64();
             let row = match r {
