@@ -13,6 +13,11 @@ pub const SCENES: &[(&str, &str, &str)] = &[
         include_str!("../examples/slab-pasternak.toml"),
     ),
     (
+        "slab-kerr",
+        "the slab-on-grade bay on Reissner's 3 m clay layer, a Kerr soil: E_s = 20 MPa, ν_s = 0.3 (SI units)",
+        include_str!("../examples/slab-kerr.toml"),
+    ),
+    (
         "slab-clay-layer",
         "the slab-on-grade bay on a 3 m clay layer over rock: E_s = 20 MPa, ν_s = 0.3, rough base (SI units)",
         include_str!("../examples/slab-clay-layer.toml"),

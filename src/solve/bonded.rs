@@ -18,51 +18,16 @@ use faer::Mat;
 
 use super::checks::discrete_gap;
 use super::linalg::{
-    dense_cholesky, displacements, dot, finite, schur_complement, sparse_solve, PlateInverse,
-    SparseCholesky, SpdSolve,
+    dense_cholesky, diagonal_positions, displacements, dot, finite, lumped_coupling,
+    schur_complement, sparse_solve, PlateInverse, SparseCholesky, SpdSolve,
 };
+use super::rigid_split::{spring_total, RigidSplit, NEAR_RIGID};
 use super::solution::{Solution, SolveInfo, Status, Timings};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::foundation::Compliance;
 use crate::method::Method;
 use crate::monitor::Monitor;
 use crate::operators::Operators;
-
-/// Position of each diagonal entry in the data array of a CSC matrix.
-pub fn diagonal_positions(m: &sprs::CsMat<f64>) -> Result<Vec<usize>> {
-    let indptr = m.indptr();
-    let ptr = indptr.raw_storage();
-    (0..m.cols())
-        .map(|j| {
-            (ptr[j]..ptr[j + 1])
-                .find(|&p| m.indices()[p] == j)
-                .ok_or_else(|| {
-                    Error::numerical(
-                        "assembly",
-                        format!("stiffness has no diagonal entry in column {j}"),
-                    )
-                })
-        })
-        .collect()
-}
-
-/// The diagonal coupling of a Winkler model: for each pressure node, its w equation and ∫ f_j.
-pub fn lumped_coupling(ops: &Operators) -> Result<Vec<(usize, f64)>> {
-    ops.b
-        .outer_iterator()
-        .enumerate()
-        .map(|(j, col)| {
-            let mut it = col.iter();
-            match (it.next(), it.next()) {
-                (Some((i, &v)), None) => Ok((i, v)),
-                _ => Err(Error::numerical(
-                    "coupling",
-                    format!("pressure node {j} is not lumped"),
-                )),
-            }
-        })
-        .collect()
-}
 
 /// Bonded solve.
 pub fn solve(ops: &Operators) -> Result<Solution> {
@@ -82,10 +47,34 @@ pub fn solve_with(ops: &Operators, monitor: &Monitor<'_>) -> Result<Solution> {
 fn solve_springs(ops: &Operators, t: &[f64]) -> Result<Solution> {
     let t0 = Instant::now();
     let coupling = lumped_coupling(ops)?;
+    let springs: Vec<(usize, f64)> = coupling
+        .iter()
+        .zip(t)
+        .map(|(&(eq, b), &tj)| (eq, b * b / tj))
+        .collect();
+    if spring_total(&springs) < NEAR_RIGID {
+        // A nearly rigid plate: its rigid part split off and solved exactly.
+        let u = RigidSplit::new(ops)?.solve(ops, &springs, &ops.f)?;
+        let sigma: Vec<f64> = coupling
+            .iter()
+            .zip(t)
+            .map(|(&(eq, b), &tj)| b * u[eq] / tj)
+            .collect();
+        finite(&u, "bonded Winkler solve")?;
+        let info = SolveInfo {
+            timings: Timings {
+                total: t0.elapsed().as_secs_f64(),
+                ..Timings::default()
+            },
+            notes: vec!["a nearly rigid plate on its springs: the rigid-body part solved apart (exact equilibrium)".into()],
+            ..SolveInfo::default()
+        };
+        return Ok(bonded_solution(ops, u, sigma, Vec::new(), info));
+    }
     let mut k = (*ops.k).clone();
     let diag = diagonal_positions(&k)?;
-    for (j, &(eq, b)) in coupling.iter().enumerate() {
-        k.data_mut()[diag[eq]] += b * b / t[j];
+    for &(eq, s) in &springs {
+        k.data_mut()[diag[eq]] += s;
     }
     let order = crate::mesh::equation_order(&ops.mesh, &ops.dofs, |_| true);
     let chol = SparseCholesky::analyse_ordered(&k, Some(&order))?;

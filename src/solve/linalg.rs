@@ -137,6 +137,42 @@ pub fn sparse_solve(llt: &SparseFactor, rhs: &mut [f64]) {
     llt.solve_in_place(MatMut::from_column_major_slice_mut(rhs, n, 1));
 }
 
+/// Position of each diagonal entry in the data array of a CSC matrix.
+pub fn diagonal_positions(m: &sprs::CsMat<f64>) -> Result<Vec<usize>> {
+    let indptr = m.indptr();
+    let ptr = indptr.raw_storage();
+    (0..m.cols())
+        .map(|j| {
+            (ptr[j]..ptr[j + 1])
+                .find(|&p| m.indices()[p] == j)
+                .ok_or_else(|| {
+                    Error::numerical(
+                        "assembly",
+                        format!("stiffness has no diagonal entry in column {j}"),
+                    )
+                })
+        })
+        .collect()
+}
+
+/// The diagonal coupling of a Winkler model: for each pressure node, its w equation and ∫ f_j.
+pub fn lumped_coupling(ops: &Operators) -> Result<Vec<(usize, f64)>> {
+    ops.b
+        .outer_iterator()
+        .enumerate()
+        .map(|(j, col)| {
+            let mut it = col.iter();
+            match (it.next(), it.next()) {
+                (Some((i, &v)), None) => Ok((i, v)),
+                _ => Err(Error::numerical(
+                    "coupling",
+                    format!("pressure node {j} is not lumped"),
+                )),
+            }
+        })
+        .collect()
+}
+
 /// K with the equations `fixed` removed, and the reduced index of each equation.
 pub(crate) fn reduce(
     k: &sprs::CsMat<f64>,

@@ -26,6 +26,7 @@ pub mod penalty;
 mod penalty_step;
 mod projection;
 pub mod qp;
+pub mod rigid_split;
 mod solution;
 
 pub use checks::{check_equilibrium, check_feasible, discrete_gap, EQUILIBRIUM_TOLERANCE};

@@ -13,11 +13,13 @@ use faer::linalg::solvers::Solve;
 use faer::sparse::linalg::solvers::{Lu, SymbolicLu};
 use faer::Mat;
 
-use super::bonded::{diagonal_positions, lumped_coupling, saddle_solve, SchurSystem};
+use super::bonded::{saddle_solve, SchurSystem};
 use super::diagnostics::CgReport;
 use super::iterative::{CgSettings, IterativeSchur};
+use super::linalg::{diagonal_positions, lumped_coupling};
 use super::linalg::{faer_view, sparse_solve, SparseCholesky, SparseFactor};
 use super::low_rank::LowRankSchur;
+use super::rigid_split::{spring_total, RigidSplit, NEAR_RIGID};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
 use crate::model::ConstraintPoints;
@@ -43,6 +45,8 @@ pub(super) enum Backend {
         chol: SparseCholesky,
         /// The last numeric factor and the spring stiffness per pressure node it was made with.
         factored: Option<(Arc<SparseFactor>, Vec<f64>)>,
+        /// The split solve of a nearly rigid plate ([`RigidSplit`]), made when first needed.
+        split: Option<Box<RigidSplit>>,
     },
     Saddle {
         m: sprs::CsMat<f64>,
@@ -64,6 +68,25 @@ impl Backend {
                 let diag = diagonal_positions(&k)?;
                 let base = k.data().to_vec();
                 let coupling = lumped_coupling(ops)?;
+                let bonded_springs: Vec<(usize, f64)> = coupling
+                    .iter()
+                    .zip(t)
+                    .map(|(&(eq, b), &c)| (eq, b * b / c))
+                    .collect();
+                if spring_total(&bonded_springs) < NEAR_RIGID {
+                    // A nearly rigid plate: every step by the split solve, no plain factor.
+                    let order = crate::mesh::equation_order(&ops.mesh, &ops.dofs, |_| true);
+                    return Ok(Backend::Springs {
+                        chol: SparseCholesky::analyse_ordered(&k, Some(&order))?,
+                        k,
+                        diag,
+                        base,
+                        coupling,
+                        t: t.clone(),
+                        factored: None,
+                        split: Some(Box::new(RigidSplit::new(ops)?)),
+                    });
+                }
                 // The bonded system of step 1 does not depend on the loads: analysed and
                 // factored once per assembly, shared by every load combination.
                 let (start, _) = ops.cache.get_or_try_init(|| -> Result<SpringsStart> {
@@ -93,6 +116,7 @@ impl Backend {
                     t: t.clone(),
                     chol: start.chol.clone(),
                     factored: Some((start.factor.clone(), start.springs.clone())),
+                    split: None,
                 })
             }
             (Compliance::Diagonal(t), ConstraintPoints::Gauss) => {
@@ -183,6 +207,7 @@ impl Backend {
                 t,
                 chol,
                 factored,
+                split,
             } => {
                 let mut comp = t.clone();
                 for &(i, j, v) in extra {
@@ -201,27 +226,44 @@ impl Backend {
                 for ((&(eq, b), &c), &g0) in coupling.iter().zip(&comp).zip(&ops.gap0) {
                     rhs[eq] += b * g0 / c;
                 }
-                let u = match factored {
-                    Some((factor, old)) if changed(old, &springs).len() <= WOODBURY_MAX_RANK => {
-                        let idx = changed(old, &springs);
-                        woodbury_solve(
-                            factor,
-                            &rhs,
-                            &idx.iter()
-                                .map(|&j| (coupling[j].0, springs[j] - old[j]))
-                                .collect::<Vec<_>>(),
-                        )?
+                let on_eqs: Vec<(usize, f64)> = coupling
+                    .iter()
+                    .zip(&springs)
+                    .map(|(&(eq, _), &s)| (eq, s))
+                    .collect();
+                let u = if spring_total(&on_eqs) < NEAR_RIGID {
+                    if split.is_none() {
+                        *split = Some(Box::new(RigidSplit::new(ops)?));
                     }
-                    _ => {
-                        k.data_mut().copy_from_slice(base);
-                        for (j, &(eq, _)) in coupling.iter().enumerate() {
-                            k.data_mut()[diag[eq]] += springs[j];
+                    match split {
+                        Some(sp) => sp.solve(ops, &on_eqs, &rhs)?,
+                        None => return Err(Error::numerical("penalty", "no split solver")),
+                    }
+                } else {
+                    match factored {
+                        Some((factor, old))
+                            if changed(old, &springs).len() <= WOODBURY_MAX_RANK =>
+                        {
+                            let idx = changed(old, &springs);
+                            woodbury_solve(
+                                factor,
+                                &rhs,
+                                &idx.iter()
+                                    .map(|&j| (coupling[j].0, springs[j] - old[j]))
+                                    .collect::<Vec<_>>(),
+                            )?
                         }
-                        let llt = chol.factor(k, "penalised Winkler system")?;
-                        let mut u = rhs;
-                        sparse_solve(&llt, &mut u);
-                        *factored = Some((Arc::new(llt), springs.clone()));
-                        u
+                        _ => {
+                            k.data_mut().copy_from_slice(base);
+                            for (j, &(eq, _)) in coupling.iter().enumerate() {
+                                k.data_mut()[diag[eq]] += springs[j];
+                            }
+                            let llt = chol.factor(k, "penalised Winkler system")?;
+                            let mut u = rhs;
+                            sparse_solve(&llt, &mut u);
+                            *factored = Some((Arc::new(llt), springs.clone()));
+                            u
+                        }
                     }
                 };
                 let sigma = coupling

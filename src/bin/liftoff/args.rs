@@ -170,7 +170,9 @@ pub(crate) struct TradeoffArgs {
 
 #[derive(clap::Args)]
 pub(crate) struct StabilityArgs {
-    /// Base scenes (default: the paper's square plate on both foundations).
+    /// Base scenes (default: one per soil — the paper's plate on Winkler springs and the
+    /// half-space, the slab-on-grade bay on the Pasternak soil, the elastic layer and Reissner's
+    /// Kerr layer).
     pub(crate) scenes: Vec<String>,
     /// Directory for stability.csv and the maps.
     #[arg(long, default_value = ".")]

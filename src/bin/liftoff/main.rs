@@ -226,10 +226,18 @@ fn tradeoff(args: TradeoffArgs) -> Result<(), Failure> {
 
 fn stability(args: StabilityArgs) -> Result<(), Failure> {
     let scenes = if args.scenes.is_empty() {
-        vec![
-            "example:paper-winkler".into(),
-            "example:paper-halfspace".into(),
+        // Every soil: the paper's plate on Winkler springs and the half-space, the slab-on-grade
+        // bay on the Pasternak soil, the elastic layer and Reissner's (Kerr) layer.
+        [
+            "paper-winkler",
+            "paper-halfspace",
+            "slab-pasternak",
+            "slab-clay-layer",
+            "slab-kerr",
         ]
+        .iter()
+        .map(|n| format!("example:{n}"))
+        .collect()
     } else {
         args.scenes
     };

@@ -1,0 +1,98 @@
+//! A nearly rigid plate on soft springs (a base plate on grout, a stiff mat on soft clay):
+//! Γ_w from 1e4 to 1e12, where the plain factorisation of K + springs lost the reaction to
+//! round-off (1e-6 at Γ_w = 1e6, 1e-2 at 1e10) and the penalty was refused. The rigid-body
+//! part is now split off and solved exactly (src/solve/rigid_split.rs).
+
+use liftoff::model::Load;
+
+mod common;
+
+fn scene(gamma: f64, s: f64, method: &str) -> String {
+    common::point_scene(
+        "winkler",
+        gamma,
+        0.002857,
+        1.0,
+        (s, 0.0),
+        [24, 24],
+        &format!("[solver]\nmethod = \"{method}\""),
+    )
+}
+
+/// In full contact (the load inside the kern, e = 0.2 L < L/3) a rigid plate on springs
+/// presses them linearly: σ(s) = 1 + c s in the paper's units, mean 1 and c from the moment of
+/// the load, 4e = c Σ a_j s_j² over the lumped springs (the trapezoidal rule's Σ a_j s_j², which
+/// is 4/3 + O(h²): c = 3e in the continuum). The lumped springs see the nodal deflections, which
+/// a rigid plate makes exactly linear, so the nodes carry that law up to the plate's own bending
+/// under the point load, which falls as 1/Γ_w: within 50/Γ_w. Every solve balances the load to
+/// 1e-12.
+#[test]
+fn a_rigid_plate_in_full_contact_presses_the_springs_linearly() {
+    for gamma in [1e4, 1e6, 1e8, 1e10, 1e12] {
+        for method in ["penalty", "qp"] {
+            let a = common::run(&scene(gamma, 0.2, method));
+            let what = format!("Γ_w = {gamma:e}, {method}");
+            assert!(a.summary.converged, "{what}: {}", a.summary.status);
+            assert!(
+                a.summary.resultant.relative_error < 1e-12,
+                "{what}: reaction misses the load by {:.1e}",
+                a.summary.resultant.relative_error
+            );
+            let f = &a.report.field;
+            // Lumped areas of the 24 × 24 grid on [−1, 1]²: h² at interior nodes, halved on
+            // an edge, quartered at a corner.
+            let h = 2.0 / 24.0;
+            let weight = |i: usize| if i == 0 || i == 24 { 0.5 } else { 1.0 };
+            let mut second = 0.0;
+            for j in 0..=24 {
+                for i in 0..=24 {
+                    let s = -1.0 + h * i as f64;
+                    second += h * h * weight(i) * weight(j) * s * s;
+                }
+            }
+            let c = 4.0 * 0.2 / second;
+            let worst =
+                f.s.iter()
+                    .zip(&f.sigma)
+                    .map(|(&s, &sigma)| (sigma - (1.0 + c * s)).abs())
+                    .fold(0.0, f64::max);
+            let tol = 50.0 / gamma + 1e-9;
+            assert!(worst < tol, "{what}: σ off the linear law by {worst:.2e}");
+        }
+    }
+}
+
+/// Beyond the kern (e = 0.5 L) the rigid plate lifts off over a third of its length; the penalty
+/// and the QP agree on the pressures to the penalty's O(ε̄) error (ε̄ = 1e-5 of the springs'
+/// compliance: 1e-4 of the peak), and balance the load to 1e-12.
+#[test]
+fn a_rigid_plate_tipping_off_its_springs_penalty_and_qp_agree() {
+    for gamma in [1e6, 1e10] {
+        let p = common::run(&scene(gamma, 0.5, "penalty"));
+        let q = common::run(&scene(gamma, 0.5, "qp"));
+        assert!(
+            p.summary.converged && q.summary.converged,
+            "Γ_w = {gamma:e}"
+        );
+        assert!(
+            p.summary.resultant.relative_error < 1e-12,
+            "Γ_w = {gamma:e}: penalty equilibrium"
+        );
+        let peak = common::max_abs(&q.report.field.sigma);
+        let d = common::max_abs_diff(&p.report.field.sigma, &q.report.field.sigma) / peak;
+        assert!(
+            d < 1e-4,
+            "Γ_w = {gamma:e}: penalty against QP, max |Δσ| / peak {d:.1e}"
+        );
+        assert!(
+            (0.2..0.45).contains(&(1.0 - p.summary.contact_fraction)),
+            "Γ_w = {gamma:e}: lifted share {}",
+            1.0 - p.summary.contact_fraction
+        );
+    }
+    // The load itself, as the scene gives it: a point at (0.5, 0).
+    let m = liftoff::Problem::from_toml(&scene(1e6, 0.5, "penalty"))
+        .expect("scene")
+        .model;
+    assert!(matches!(m.loads[0], Load::Point { x, .. } if (x - 0.5).abs() < 1e-12));
+}
