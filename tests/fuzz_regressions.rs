@@ -1,11 +1,13 @@
 //! Regression inputs for the scene fuzz target (`fuzz/fuzz_targets/scene.rs`, run by
 //! `fuzz/run.sh`; results in `fuzz/RESULTS.md`).
 //!
-//! Each case goes through the same pipeline as the fuzz target: `SceneFile::parse` → `validate`
-//! → (for meshes of at most 8 elements per side) `Operators::assemble` → `solve::solve`. None of
-//! them may panic, and each pins where it stops: a parse error, a validation error naming its
-//! field, a solve error of a given kind, or a solution with a given status. Meshes larger than
-//! 8 × 8 are validated but never solved, so the file stays fast.
+//! Each case goes through `SceneFile::parse` → `validate` → (for meshes of at most 8 elements
+//! per side) `Operators::assemble` → `solve::solve`, and pins where it stops: a parse error, a
+//! validation error naming its field, a solve error of a given kind, or a solution with a given
+//! status. Every case also goes through the fuzz target's own pipeline (since issue 25 the
+//! front ends' seam, `liftoff::load` → `liftoff::run`, with combinations, routes and the JSON
+//! of the outcome), where it must not panic. Meshes larger than 8 × 8 are validated but never
+//! solved, so the file stays fast.
 
 use liftoff::scene::SceneFile;
 use liftoff::{Error, ErrorKind};
@@ -61,6 +63,24 @@ fn run(text: &str) -> Outcome {
     }
 }
 
+/// The fuzz target's pipeline (`fuzz/fuzz_targets/scene.rs`): the seam every front end uses,
+/// solving only meshes of at most 8 elements per side (every combination's too). Errors are
+/// fine; a panic fails the test that calls it.
+fn through_the_seam(text: &str) {
+    use liftoff::scene::Overrides;
+    use liftoff::{Monitor, Source};
+    let Ok(problem) = liftoff::load(&Source::Toml(text), &Overrides::default()) else {
+        return;
+    };
+    let small = |m: &liftoff::Model| m.elements.iter().all(|&n| n <= MAX_SOLVED_ELEMENTS);
+    if !small(&problem.model) || !problem.combinations.iter().all(|c| small(&c.model)) {
+        return;
+    }
+    if let Ok(outcome) = liftoff::run(&problem, &Monitor::NONE) {
+        let _ = outcome.to_json();
+    }
+}
+
 /// What a case must do.
 #[derive(Debug, Clone, Copy)]
 enum Expect<'a> {
@@ -81,6 +101,7 @@ enum Expect<'a> {
 fn check(cases: &[(&str, String, Expect)]) {
     let mut failures = Vec::new();
     for (case, text, expect) in cases {
+        through_the_seam(text);
         let got = run(text);
         if std::env::var_os("FUZZ_REGRESSIONS_VERBOSE").is_some() {
             eprintln!("{case}: {got:?}");
