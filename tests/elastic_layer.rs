@@ -343,8 +343,8 @@ const REF_HB_2: f64 = 0.907_128_142_578_457;
 /// symbol K = (cosh 2t − 1)/(sinh 2t + 2t) written out there; 12- and 24-point θ rules equal to
 /// all 17 digits). Larger than the rough base's: the layer can spread on its base. Its
 /// thin-layer limit, the bed k = E/((1 − ν²)h), is I = h/B (0.5 at h/B = 0.5).
-const REF_SMOOTH_HB_05: f64 = 0.508_101_153_222_652_74;
-const REF_SMOOTH_HB_1: f64 = 0.770_050_789_199_383_42;
+const REF_SMOOTH_HB_05: f64 = 0.508_101_153_222_652_7;
+const REF_SMOOTH_HB_1: f64 = 0.770_050_789_199_383_4;
 const REF_SMOOTH_HB_2: f64 = 0.938_947_262_395_559_9;
 
 /// Dense and FFT routes on the same layer scene: the solves differ only by the CG tolerance

@@ -114,9 +114,7 @@ mod tests {
         let p = paper("paper-winkler");
         let mut ops = Operators::assemble(&p.model);
         ops.k = std::sync::Arc::new(ops.k.map(|v| -v));
-        let e = liftoff::solve(&ops, &Method::Bonded)
-            .err()
-            .expect("E27: the factorisation fails");
+        let e = liftoff::solve(&ops, &Method::Bonded).expect_err("E27: the factorisation fails");
         let f = Failure::solving(e, &Method::Bonded);
         assert_eq!(f.code, exit::SOLVER, "E27: exit code ({})", f.message);
         assert!(
@@ -139,9 +137,7 @@ mod tests {
         let p = paper("paper-winkler");
         let mut ops = Operators::assemble(&p.model);
         ops.f[0] = f64::NAN;
-        let e = liftoff::solve(&ops, &Method::Bonded)
-            .err()
-            .expect("E28: the solve fails");
+        let e = liftoff::solve(&ops, &Method::Bonded).expect_err("E28: the solve fails");
         let f = Failure::solving(e, &Method::Bonded);
         assert_eq!(f.code, exit::SOLVER, "E28: exit code ({})", f.message);
         assert!(
@@ -157,9 +153,7 @@ mod tests {
             f.message
         );
         // The same failure in a QP names the QP's way out.
-        let e = liftoff::solve(&ops, &Method::qp())
-            .err()
-            .expect("E28 in the QP");
+        let e = liftoff::solve(&ops, &Method::qp()).expect_err("E28 in the QP");
         let f = Failure::solving(e, &Method::qp());
         assert!(
             f.code == exit::SOLVER
