@@ -60,6 +60,22 @@ fn ten(c: &mut Criterion) {
     ] {
         let (combined, separate) = slab(foundation, elements);
         assert_eq!(combined.combinations.len(), 10);
+        // Time only runs that give answers: one run of each, outside the timing, converged.
+        let once = liftoff::combination::analyse(&combined, &liftoff::Monitor::NONE)
+            .expect("combinations");
+        assert!(
+            once.all_converged(),
+            "{name}: combinations not converged, nothing to time: {:?}",
+            once.missing()
+        );
+        for p in &separate {
+            let a = liftoff::analyse(p).expect("analysis");
+            assert!(
+                a.solution.status.converged(),
+                "{name}: separate analysis not converged: {}",
+                a.solution.status.describe()
+            );
+        }
         g.bench_function(format!("{name}/one-assembly"), |b| {
             b.iter(|| {
                 liftoff::combination::analyse(&combined, &liftoff::Monitor::NONE).expect("run")

@@ -4,8 +4,19 @@
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use liftoff::method::{KktSolver, Method, QpSolver};
-use liftoff::solve::{self, qp::clarabel_dense};
+use liftoff::solve::{self, qp::clarabel_dense, Solution};
 use liftoff::{Operators, Problem};
+
+/// A bench times a solve only after one run of it, outside the timing, converged: a failed or
+/// capped solve would be timed as if it were an answer.
+fn converged(what: &str, s: liftoff::Result<Solution>) {
+    let s = s.unwrap_or_else(|e| panic!("{what}: {e}"));
+    assert!(
+        s.status.converged(),
+        "{what}: not converged, nothing to time: {}",
+        s.status.describe()
+    );
+}
 
 fn paper(foundation: &str, n: usize) -> Problem {
     let name = if foundation == "winkler" {
@@ -30,6 +41,12 @@ fn winkler(c: &mut Criterion) {
             b.iter(|| Operators::assemble(&p.model))
         });
         let ops = Operators::assemble(&p.model);
+        converged("winkler bonded", solve::bonded::solve(&ops));
+        converged("winkler penalty", solve::solve(&ops, &Method::penalty()));
+        converged(
+            "winkler active set",
+            solve::solve(&ops, &qp(QpSolver::ActiveSet)),
+        );
         g.bench_with_input(BenchmarkId::new("bonded-solve", n), &ops, |b, ops| {
             b.iter(|| solve::bonded::solve(ops).expect("solve"))
         });
@@ -61,11 +78,20 @@ fn half_space(c: &mut Criterion) {
             b.iter(|| Operators::assemble(&p.model))
         });
         let ops = Operators::assemble(&p.model);
+        converged("half-space penalty", solve::solve(&ops, &Method::penalty()));
         g.bench_with_input(BenchmarkId::new("penalty-solve", n), &ops, |b, ops| {
             b.iter(|| solve::solve(ops, &Method::penalty()).expect("solve"))
         });
         // The same penalty on the iterative route (T by FFT, conjugate gradients).
         let iterative = Operators::assemble_with(&p.model, true);
+        converged(
+            "half-space penalty, iterative",
+            solve::solve(&iterative, &Method::penalty()),
+        );
+        converged(
+            "half-space active set, iterative",
+            solve::solve(&iterative, &qp(QpSolver::ActiveSet)),
+        );
         g.bench_with_input(
             BenchmarkId::new("penalty-solve-iterative", n),
             &iterative,
@@ -82,6 +108,7 @@ fn half_space(c: &mut Criterion) {
                 kkt,
                 ..Default::default()
             };
+            converged("half-space clarabel", clarabel_dense::solve(&ops, &s));
             g.bench_with_input(
                 BenchmarkId::new(format!("qp-{}", kkt.name()), n),
                 &ops,

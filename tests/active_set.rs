@@ -49,8 +49,9 @@ fn w(ops: &Operators, s: &Solution) -> Vec<f64> {
     ops.node_w(&s.u)
 }
 
-/// Solve with both solvers on `ops` and assert the agreement; returns (Δσ, ΔV).
-fn agree(what: &str, ops: &Operators, clarabel: &Method, active: &Method) -> (f64, f64) {
+/// Solve with both solvers on `ops` and assert the agreement; returns the clarabel and
+/// active-set solutions.
+fn agree(what: &str, ops: &Operators, clarabel: &Method, active: &Method) -> (Solution, Solution) {
     let a = solve(ops, clarabel).unwrap_or_else(|e| panic!("{what}: clarabel: {e}"));
     let b = solve(ops, active).unwrap_or_else(|e| panic!("{what}: active set: {e}"));
     assert!(a.status.converged(), "{what}: clarabel {:?}", a.status);
@@ -83,7 +84,105 @@ fn agree(what: &str, ops: &Operators, clarabel: &Method, active: &Method) -> (f6
         }
     }
     eprintln!("{what}: Δσ {ds:.1e} of the peak, ΔV {dv:.1e} of its peak");
-    (ds, dv)
+    (a, b)
+}
+
+/// The discrete unilateral conditions on `s` itself, each relative to its scale: min σ ≥ −tol
+/// σ_peak, min g ≥ −tol g_scale (g = Tσ − Bᵀu recomputed from the solution's u and σ), and
+/// max |σ g| ≤ tol σ_peak g_scale, with g_scale = max(|Tσ|, |Bᵀu|, |g|). `tol`: the active set
+/// stops at KKT 1e−10 of its own scales (allowed 1e−9 against this scale); clarabel at 1e−13
+/// on its scaled problem (allowed 1e−8; tests/exactness.rs measures both).
+fn exact(what: &str, ops: &Operators, s: &Solution, tol: f64) {
+    let ts = ops.t.apply(&s.sigma);
+    let btu = ops.bt_times(&s.u);
+    let gap: Vec<f64> = ts.iter().zip(&btu).map(|(a, b)| a - b).collect();
+    let peak = max_abs(&s.sigma);
+    let scale = max_abs(&ts).max(max_abs(&btu)).max(max_abs(&gap));
+    let min_s = s.sigma.iter().cloned().fold(f64::INFINITY, f64::min) / peak;
+    let min_g = gap.iter().cloned().fold(f64::INFINITY, f64::min) / scale;
+    let comp = s
+        .sigma
+        .iter()
+        .zip(&gap)
+        .map(|(a, b)| (a * b).abs())
+        .fold(0.0, f64::max)
+        / (peak * scale);
+    eprintln!("{what}: min σ {min_s:.1e}, min g {min_g:.1e}, max |σ g| {comp:.1e}");
+    assert!(
+        min_s >= -tol,
+        "{what}: tension, min σ = {min_s:.2e} of the peak"
+    );
+    assert!(
+        min_g >= -tol,
+        "{what}: penetration, min g = {min_g:.2e} of its scale"
+    );
+    assert!(
+        comp <= tol,
+        "{what}: complementarity, max |σ g| = {comp:.2e}"
+    );
+}
+
+/// Tolerances of [`exact`] per solver.
+const EXACT_ACTIVE_SET: f64 = 1e-9;
+const EXACT_CLARABEL: f64 = 1e-8;
+
+/// [`agree`], and each solution exact on its own.
+fn agree_and_exact(what: &str, ops: &Operators, clarabel: &Method, active: &Method) {
+    let (a, b) = agree(what, ops, clarabel, active);
+    exact(&format!("{what}, clarabel"), ops, &a, EXACT_CLARABEL);
+    exact(&format!("{what}, active set"), ops, &b, EXACT_ACTIVE_SET);
+}
+
+/// The paper's point load on the other soils: Pasternak (Γ_g = 40) and the elastic layer on
+/// a rough and on a smooth base (h = L, ν_s = 0.3), 32², whole plate and quarter — the active
+/// set against clarabel on the dense Schur form (the agreement), each exact on its
+/// own, and the active set on the FFT route exact too.
+#[test]
+fn equals_clarabel_on_pasternak_and_the_elastic_layer() {
+    let clarabel = qp(QpSolver::Clarabel);
+    let active = qp(QpSolver::ActiveSet);
+    for (name, soil) in [
+        ("Pasternak", "foundation = \"pasternak\"\nshear = 40.0"),
+        (
+            "rough layer",
+            "foundation = \"elastic-layer\"\ndepth = 1.0\nsoil_nu = 0.3\nbase = \"rough\"",
+        ),
+        (
+            "smooth layer",
+            "foundation = \"elastic-layer\"\ndepth = 1.0\nsoil_nu = 0.3\nbase = \"smooth\"",
+        ),
+    ] {
+        let text = paper_halfspace().replace("foundation = \"half-space\"", soil);
+        for symmetry in ["none", "auto"] {
+            let p = problem(&text, 32, symmetry);
+            assert_eq!(
+                p.model.groups.foundation.name(),
+                if name == "Pasternak" {
+                    "pasternak"
+                } else {
+                    "elastic-layer"
+                },
+                "{name}: the soil was set"
+            );
+            let ops = Operators::assemble(&p.model);
+            agree_and_exact(
+                &format!("{name}, 32², {symmetry}"),
+                &ops,
+                &clarabel,
+                &active,
+            );
+        }
+        let p = problem(&text, 32, "auto");
+        let fft = Operators::assemble_with(&p.model, true);
+        let s = solve(&fft, &active).expect("active set on the FFT route");
+        assert!(s.status.converged(), "{name}, FFT route: {:?}", s.status);
+        exact(
+            &format!("{name}, FFT route, active set"),
+            &fft,
+            &s,
+            EXACT_ACTIVE_SET,
+        );
+    }
 }
 
 #[test]
@@ -95,7 +194,7 @@ fn equals_clarabel_on_the_paper_halfspace_case() {
         let p = problem(&text, mesh, symmetry);
         let ops = Operators::assemble(&p.model);
         let what = format!("half-space {mesh} per side, {symmetry}");
-        agree(&what, &ops, &clarabel, &active);
+        agree_and_exact(&what, &ops, &clarabel, &active);
     }
 }
 
@@ -268,7 +367,16 @@ elements = [24, 24]
     let ops = Operators::assemble(&Problem::from_toml(corner).expect("corner").model);
     let a = solve(&ops, &schur).expect("clarabel");
     let b = solve(&ops, &active).expect("active set");
-    assert!(b.status.converged(), "balanced plate: {:?}", b.status);
+    assert!(
+        a.status.converged(),
+        "balanced plate, clarabel: {:?}",
+        a.status
+    );
+    assert!(
+        b.status.converged(),
+        "balanced plate, active set: {:?}",
+        b.status
+    );
     let ds = max_abs_diff(&a.sigma, &b.sigma) / max_abs(&a.sigma);
     assert!(ds <= SIGMA, "balanced plate: σ differs by {ds:.1e}");
     // The load sits on the corner node: every other node lifts, its gap non-negative. The

@@ -47,6 +47,17 @@ fn both(problem: &Problem, method: &Method) -> (Solution, Solution, Operators) {
 /// issue asks for 1e-6), the same status and number of penalty steps or one more (the route
 /// confirms the set with a tight solve after its loose ones).
 fn assert_same(name: &str, ops: &Operators, dense: &Solution, iterative: &Solution) {
+    // Two failed solves would agree too: each side must have converged.
+    assert!(
+        dense.status.converged(),
+        "{name}: dense route: {}",
+        dense.status.describe()
+    );
+    assert!(
+        iterative.status.converged(),
+        "{name}: iterative route: {}",
+        iterative.status.describe()
+    );
     assert_eq!(dense.status, iterative.status, "{name}: status");
     let dv = rel_diff(&ops.node_w(&iterative.u), &ops.node_w(&dense.u));
     let ds = rel_diff(&iterative.sigma, &dense.sigma);

@@ -46,9 +46,19 @@ fn rel_diff(a: &[f64], b: &[f64]) -> f64 {
     d / max_abs(b)
 }
 
+/// Assemble and solve; every solve here must converge (two failed solves would otherwise
+/// "agree"), so the helper asserts it for each side of every comparison.
 fn solve(p: &Problem, method: &Method, toeplitz: bool) -> (Operators, Solution) {
     let ops = Operators::assemble_with(&p.model, toeplitz);
     let sol = liftoff::solve(&ops, method).unwrap_or_else(|e| panic!("solve: {e}"));
+    assert!(
+        sol.status.converged(),
+        "{} solve of {:?} (Γ = {:e}, toeplitz {toeplitz}): {}",
+        method.name(),
+        p.model.groups.foundation,
+        p.model.groups.gamma,
+        sol.status.describe()
+    );
     (ops, sol)
 }
 
@@ -173,13 +183,17 @@ fn large_bonded_plate_matches_the_infinite_plate() {
         let p = scene("pasternak", gamma, Some(shear), delta, n, &patch, "auto");
         let (ops, sol) = solve(&p, &Method::Bonded, n > 64);
         assert!(ops.mesh.sym_x && ops.mesh.sym_y, "a quarter model");
-        // The quarter model carries a quarter of the patch, area a².
-        let q0 = ops.total_load() / (a * a);
-        let k = 1.0 / ops.foundation_constant;
-        let g_p = k * lambda * lambda;
+        // The reference's numbers from the scene's own groups (unit system L = P = D = 1, μ = 1),
+        // not from the operators under test: the loads are scaled to a resultant of 4P, so the
+        // patch of area (2a)² carries q0 = 4/(2a)²; k = 1/(μ Γ_w); G_p = Γ_g (Γ_g = G_p L²/D);
+        // the shear stiffness S = κGH = D/(μ Δ L²) (Δ = H²/(6κ(1 − ν)μL²), D = EH³/(12(1 − ν²))).
+        let q0 = 4.0 / (4.0 * a * a);
+        let k = 1.0 / gamma;
+        let g_p = shear;
+        let s = 1.0 / delta;
         let r = *reference.get_or_insert_with(|| {
-            let w1 = infinite_plate_centre(q0, a, ops.section.shear, k, g_p, 2000.0 / a);
-            let w2 = infinite_plate_centre(q0, a, ops.section.shear, k, g_p, 4000.0 / a);
+            let w1 = infinite_plate_centre(q0, a, s, k, g_p, 2000.0 / a);
+            let w2 = infinite_plate_centre(q0, a, s, k, g_p, 4000.0 / a);
             println!("reference {w1:e}, {w2:e}");
             assert!(
                 (w1 - w2).abs() < 1e-6 * w2,

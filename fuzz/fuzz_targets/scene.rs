@@ -1,31 +1,35 @@
-//! Fuzz target for the scene parser and validator.
+//! Fuzz target for the scene parser, validator and solver.
 //!
-//! Feeds arbitrary bytes through `SceneFile::parse` → `validate`, and for small valid meshes
-//! (≤ 8 elements per side) on through `budget::check`, `Operators::assemble` and `solve`. Errors are
-//! expected and ignored: the target looks for panics, aborts, hangs and memory blow-ups.
+//! Feeds arbitrary bytes through the seam every front end uses, `liftoff::load` (parse →
+//! validate → the options), and for small valid meshes (≤ 8 elements per side, every
+//! combination's too) on through `liftoff::run`: the memory budget with the scene's limit,
+//! assembly on the scene's route, the method (penalty, either QP solver, bonded), every
+//! combination and the envelope, the report and summary, and their JSON. Errors are expected
+//! and ignored: the target looks for panics, aborts, hangs and memory blow-ups.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use liftoff::scene::SceneFile;
+use liftoff::scene::Overrides;
+use liftoff::{Model, Monitor, Source};
 
 /// Largest mesh (elements per side) that is also assembled and solved.
 const MAX_SOLVED_ELEMENTS: usize = 8;
+
+fn small(model: &Model) -> bool {
+    model.elements.iter().all(|&n| n <= MAX_SOLVED_ELEMENTS)
+}
 
 fuzz_target!(|data: &[u8]| {
     let Ok(text) = std::str::from_utf8(data) else {
         return;
     };
-    let Ok(scene) = SceneFile::parse(text) else {
+    let Ok(problem) = liftoff::load(&Source::Toml(text), &Overrides::default()) else {
         return;
     };
-    let Ok(problem) = scene.validate() else {
-        return;
-    };
-    if problem.model.elements.iter().any(|&n| n > MAX_SOLVED_ELEMENTS) {
+    if !small(&problem.model) || !problem.combinations.iter().all(|c| small(&c.model)) {
         return;
     }
-    if liftoff::budget::check(&problem.model, &problem.method, problem.memory_limit).is_ok() {
-        let ops = liftoff::Operators::assemble(&problem.model);
-        let _ = liftoff::solve(&ops, &problem.method);
+    if let Ok(outcome) = liftoff::run(&problem, &Monitor::NONE) {
+        let _ = outcome.to_json();
     }
 });

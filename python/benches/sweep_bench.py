@@ -37,6 +37,9 @@ def main() -> None:
         dask = liftoff.sweep(grid, client=client, **opts)
         t_dask = time.perf_counter() - t0
     assert dask == serial == pool, "the sweeps differ"
+    # Timings of failed or unconverged solves would not be timings of answers.
+    failed = [r for r in serial if not (r["ok"] and r["converged"])]
+    assert not failed, f"{len(failed)} scenes gave no solution, nothing to time: {failed[:3]}"
     print(f"{len(grid)} scenes ({scene}, {mesh[0]} × {mesh[1]} elements), "
           f"{sum(not r['ok'] for r in serial)} failed")
     print(f"serial        {t_serial:7.2f} s  1.00")

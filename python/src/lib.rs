@@ -463,6 +463,17 @@ fn stability_rows(
     json(&rows)
 }
 
+/// Test-only, not part of the API: panics inside the runner every library call goes through, so
+/// that the tests can show a panic (a bug) reaching Python as `liftoff.NumericalError` with the
+/// panic's message — the library itself has no input known to panic. Used by
+/// `python/tests/test_errors.py` only; the leading underscore keeps it out of the public names.
+#[pyfunction]
+fn _panic_for_tests(py: Python<'_>, message: &str) -> PyResult<()> {
+    run(py, None, |_| -> liftoff::Result<()> {
+        panic!("{message}");
+    })
+}
+
 /// The compiled core of `liftoff` (use the `liftoff` package, not this module).
 #[pymodule]
 fn _liftoff(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -482,6 +493,7 @@ fn _liftoff(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(critical, m)?)?;
     m.add_function(wrap_pyfunction!(critical_len, m)?)?;
     m.add_function(wrap_pyfunction!(stability_rows, m)?)?;
+    m.add_function(wrap_pyfunction!(_panic_for_tests, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -115,6 +115,15 @@ impl ModelBuilder {
         self
     }
 
+    /// The elastic layer's rigid base of a dimensionless scene, rough (the default) or smooth
+    /// (after [`Self::layer`]).
+    pub fn base(mut self, base: crate::foundation::layer::Base) -> Self {
+        if let Some(d) = self.file.dimensionless.as_mut() {
+            d.base = Some(base.name().to_string());
+        }
+        self
+    }
+
     fn load(
         mut self,
         kind: LoadKind,

@@ -39,11 +39,21 @@ elements = [{}, {}]
     )
 }
 
-/// Parse, validate and solve scene text, panicking with the scene's error (tests only).
+/// Parse, validate and solve scene text, panicking with the scene's error or when the method
+/// did not converge (tests only): every comparison in the suite needs each of its sides to
+/// have converged, since two failed solves can agree. A test that studies a failure calls
+/// `analyse` itself.
 pub fn run(text: &str) -> Analysis {
     let problem =
         Problem::from_toml(text).unwrap_or_else(|e| panic!("scene rejected: {e}\n{text}"));
-    analyse(&problem).unwrap_or_else(|e| panic!("solve failed: {e}\n{text}"))
+    let a = analyse(&problem).unwrap_or_else(|e| panic!("solve failed: {e}\n{text}"));
+    assert!(
+        a.solution.status.converged(),
+        "{} solve did not converge: {}\n{text}",
+        a.solution.method.name(),
+        a.solution.status.describe()
+    );
+    a
 }
 
 /// Largest absolute difference of two equally long slices.
@@ -109,6 +119,11 @@ pub fn node_at(r: &Report, x: f64, y: f64) -> usize {
 /// Penalty → QP at first order in ε̄ on `p`: the fitted log–log slope of the relative L2
 /// error of σ against the QP on the same operators lies within 0.1 of 1 over at least three
 /// decades, and the error is below 100 ε̄ from the fit's lower end to ε̄ = 1e−5.
+///
+/// Both sides of the comparison converge: `eps_sweep` refuses a QP reference that did not
+/// (`Error::Numerical`, so `expect` fails here), and every penalty row from ε̄ = 1e−5 down is
+/// asserted converged below; above it a too-weak penalty still gives a point of the ε̄ → 0
+/// curve, and the fit uses only settled sets.
 pub fn assert_first_order_in_eps(p: &Problem) {
     let eps = log_space(1e-2, 1e-9, 15);
     let sweep = eps_sweep(

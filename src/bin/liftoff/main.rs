@@ -11,7 +11,7 @@ use std::process::ExitCode;
 use clap::Parser;
 use liftoff::output::{self, study_tables, tables};
 use liftoff::study::{self, EpsSweepOptions, TradeoffOptions};
-use liftoff::{Error, ErrorKind, Method, Outcome, Problem, Source};
+use liftoff::{Error, ErrorKind, Outcome, Problem, Source};
 
 use args::{
     Cli, Command, CompareArgs, CriticalArgs, EpsSweepArgs, PaperArgs, SolveArgs, StabilityArgs,
@@ -130,17 +130,7 @@ fn solve(args: SolveArgs) -> Result<(), Failure> {
     }
     match &outcome {
         Outcome::Single(a) if !a.summary.converged => {
-            let hint = match (&a.solution.status, &problem.method) {
-                (liftoff::Status::PenaltyTooWeak { suggested_penalty, .. }, _) => format!(
-                    "\nhint: rerun with --penalty {suggested_penalty:.0e} or --method qp"
-                ),
-                (_, Method::Qp(_)) => "\nhint: --method penalty solves the same operators by the paper's iteration, or try the other --qp-solver where it applies".into(),
-                _ => "\nhint: --method qp solves the same operators as a convex QP".into(),
-            };
-            Err(Failure::new(exit::SOLVER, format!(
-                "the {} method did not converge ({}); the numbers above are not a solution and no files were written{hint}",
-                a.summary.method, a.summary.status
-            )))
+            Err(Failure::not_converged(a, &problem.method))
         }
         Outcome::Combinations(c) if !c.all_converged() => {
             let infeasible = c
