@@ -454,3 +454,69 @@ fn the_solve_table_has_a_line_per_joint() {
         .expect("json")
         .contains("\"joints\""));
 }
+
+/// A reduced model reports the whole plate: with a layout mirror-symmetric about both axes
+/// (doweled joints x = ±1.5 m, a bar on the symmetry line y = 0 that the quarter model holds
+/// with half its spring, aggregate joints y = ±0.75 m) and a load symmetric about both, the
+/// quarter model's report — every node copy mirrored from the model's, every element, every
+/// joint — equals the whole plate solved without symmetry, to round-off (two direct solves of
+/// different systems: 1e-9 of each field's largest value).
+#[test]
+fn a_reduced_model_reports_the_whole_jointed_plate() {
+    let layout = "[[joint]]\nx = -1.5\nkind = \"dowels\"\nname = \"W\"\npositions = [-1.0, 0.0, 1.0]\ndiameter = 0.032\nyoungs_modulus = 200e9\nopening = 0.006\nsupport_modulus = 4.07e11\n[[joint]]\nx = 1.5\nkind = \"dowels\"\nname = \"E\"\npositions = [-1.0, 0.0, 1.0]\ndiameter = 0.032\nyoungs_modulus = 200e9\nopening = 0.006\nsupport_modulus = 4.07e11\n[[joint]]\ny = -0.75\nkind = \"aggregate\"\nname = \"S\"\nstiffness = 2e8\n[[joint]]\ny = 0.75\nkind = \"aggregate\"\nname = \"N\"\nstiffness = 2e8\n";
+    let loads = "[[load]]\nkind = \"uniform\"\npressure = 6e3\n[[load]]\nkind = \"patch\"\nx = [-1.75, -1.25]\ny = [-0.25, 0.25]\npressure = 4e5\n[[load]]\nkind = \"patch\"\nx = [1.25, 1.75]\ny = [-0.25, 0.25]\npressure = 4e5\n";
+    let full = solve(&slab([24, 12], &format!("{layout}{loads}{BONDED}")));
+    let quarter = solve(
+        &slab([24, 12], &format!("{layout}{loads}{BONDED}"))
+            .replace("symmetry = \"none\"", "symmetry = \"auto\""),
+    );
+    assert_eq!(quarter.summary.symmetry, "quarter");
+    let (a, b) = (&full.report, &quarter.report);
+    assert_eq!(a.field.n_nodes(), b.field.n_nodes());
+    for (name, x, y) in [
+        ("w", &a.field.w, &b.field.w),
+        ("psi_x", &a.field.psi_x, &b.field.psi_x),
+        ("psi_y", &a.field.psi_y, &b.field.psi_y),
+        ("pressure", &a.field.pressure, &b.field.pressure),
+        ("mx", &a.elements.mx, &b.elements.mx),
+        ("my", &a.elements.my, &b.elements.my),
+        ("qx", &a.elements.qx, &b.elements.qx),
+    ] {
+        let d = common::max_abs_diff(x, y);
+        assert!(d <= 1e-9 * common::max_abs(x), "{name}: {d:e}");
+    }
+    assert_eq!(a.joints.len(), 4);
+    let force = 4e5 * 0.5 * 0.5 * 2.0 + 6e3 * 18.0;
+    for (p, q) in a.joints.iter().zip(&b.joints) {
+        assert_eq!(p.name, q.name);
+        assert!(
+            (p.transferred_force - q.transferred_force).abs() <= 1e-9 * force,
+            "{}",
+            p.name
+        );
+        assert!(
+            (p.lte_deflection - q.lte_deflection).abs() <= 1e-9,
+            "{}",
+            p.name
+        );
+        assert_eq!(p.dowels.len(), q.dowels.len());
+        for (d, e) in p.dowels.iter().zip(&q.dowels) {
+            assert!(
+                (d.force - e.force).abs() <= 1e-9 * force,
+                "{} bar {}",
+                p.name,
+                d.bar
+            );
+        }
+    }
+    // The mirror images: W's bars carry E's forces, S's transfer is −N's (N hands from the
+    // − side, inside, to the + side, outside; S the other way).
+    let (w, e) = (joint(b, "W"), joint(b, "E"));
+    assert!((w.transferred_force + e.transferred_force).abs() <= 1e-9 * force);
+    let (s, n) = (joint(b, "S"), joint(b, "N"));
+    assert!((s.transferred_force + n.transferred_force).abs() <= 1e-9 * force);
+    assert!(
+        e.transferred_force.abs() > 1e-3 * force,
+        "the bars carry load"
+    );
+}

@@ -321,7 +321,8 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
     }
 }
 
-/// V and σ along the paper's lines: 2 max(nx, ny) + 1 evenly spaced points (the nodes and
+/// V and σ along the paper's lines (read from the grid nodes: on a joint line, the lower / left
+/// copy, see [`FullField::interpolate`]): 2 max(nx, ny) + 1 evenly spaced points (the nodes and
 /// the element mid-points of a square grid) plus the points where each line crosses the contact
 /// boundary. σ is the pressure ending at the located boundary ([`FullField::pressure_at`]), so
 /// it falls to zero there rather than at the first lifted node.
