@@ -3,7 +3,8 @@
 //! the rest of its combination present, each position its own contact problem on operators
 //! assembled once (K, B, T shared; only the load vector changes), solved side by side on every
 //! core, each warm-started from the position before it; the positions that give the largest
-//! tension at the bottom and at the top face and the largest deflection.
+//! tension at the bottom and at the top face and the largest deflection — and on a jointed
+//! plate the largest joint shear per length and the largest dowel force.
 //!
 //! The grid runs, for each heading, from the position where the prints touch one edge of the
 //! plate to where they touch the other, so the edge positions of the classical critical cases
@@ -107,6 +108,13 @@ pub struct Position {
     pub w_max: f64,
     /// Contact area over plate area.
     pub contact_fraction: f64,
+    /// On a jointed plate: the largest shear per unit length along any joint with a
+    /// distributed spring (aggregate, tied), |c (w⁻ − w⁺)|, N/m (absent without such joints).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub joint_shear: Option<f64>,
+    /// On a jointed plate with dowels: the largest dowel force |k_d (w⁻ − w⁺)|, N.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dowel_force: Option<f64>,
     /// Seconds for this position.
     pub time_s: f64,
 }
@@ -130,6 +138,13 @@ pub struct Critical {
     pub top: Option<usize>,
     /// Index of the largest deflection.
     pub deflection: Option<usize>,
+    /// Index of the largest joint shear per length (jointed plates with aggregate or tied
+    /// joints).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub joint_shear: Option<usize>,
+    /// Index of the largest dowel force (jointed plates with dowels).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dowel_force: Option<usize>,
     /// Seconds to assemble the shared operators.
     pub assemble_s: f64,
     /// Wall-clock seconds of the whole search.
@@ -143,6 +158,24 @@ impl Critical {
             .filter(|&i| positions[i].outcome == RunOutcome::CONVERGED)
             .max_by(|&a, &b| value(&positions[a]).total_cmp(&value(&positions[b])))
     }
+
+    /// The index of the converged position with the largest `value`, among those that have
+    /// one (None when none has).
+    fn argmax_of(
+        positions: &[Position],
+        value: impl Fn(&Position) -> Option<f64>,
+    ) -> Option<usize> {
+        (0..positions.len())
+            .filter(|&i| positions[i].outcome == RunOutcome::CONVERGED)
+            .filter_map(|i| value(&positions[i]).map(|v| (i, v)))
+            .max_by(|a, b| a.1.total_cmp(&b.1))
+            .map(|(i, _)| i)
+    }
+}
+
+/// The largest of some optional values (None when none is present).
+fn largest(values: impl Iterator<Item = Option<f64>>) -> Option<f64> {
+    values.flatten().reduce(f64::max)
 }
 
 /// The reference points (x, y, heading) in grid order, the plate's sides and the spacing of the
@@ -394,6 +427,8 @@ pub fn critical(
                             top_at: [s.stresses.top.x, s.stresses.top.y],
                             w_max: s.w_max,
                             contact_fraction: s.contact_fraction,
+                            joint_shear: largest(s.joints.iter().map(|j| j.max_shear_per_length)),
+                            dowel_force: largest(s.joints.iter().map(|j| j.max_dowel_force)),
                             time_s: t.elapsed().as_secs_f64(),
                         }
                     }
@@ -409,6 +444,8 @@ pub fn critical(
                         top_at: [f64::NAN; 2],
                         w_max: f64::NAN,
                         contact_fraction: f64::NAN,
+                        joint_shear: None,
+                        dowel_force: None,
                         time_s: t.elapsed().as_secs_f64(),
                     },
                 };
@@ -430,6 +467,8 @@ pub fn critical(
         bottom: Critical::argmax(&positions, |p| p.bottom),
         top: Critical::argmax(&positions, |p| p.top),
         deflection: Critical::argmax(&positions, |p| p.w_max),
+        joint_shear: Critical::argmax_of(&positions, |p| p.joint_shear),
+        dowel_force: Critical::argmax_of(&positions, |p| p.dowel_force),
         positions,
         assemble_s,
         total_s: t0.elapsed().as_secs_f64(),

@@ -127,6 +127,11 @@ pub struct Summary {
     /// The largest tensile principal stress at the bottom and the top face, where and in which
     /// direction (Pa; P/L² in a dimensionless scene), and the thickness they were taken with.
     pub stresses: crate::post::stress::StressSummary,
+    /// What each joint that cuts the plate carries: its LTE by deflection and by stress and
+    /// where, the force it transfers, its largest shear and moment per length, dowel force
+    /// and bearing stress (absent without joints).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub joints: Vec<crate::post::JointReport>,
     /// Modelling notes.
     pub notes: Vec<String>,
 }
@@ -195,6 +200,7 @@ impl Summary {
             penalty_stages: sol.info.penalty_stages.clone(),
             bearing: report.bearing,
             stresses: report.stress,
+            joints: report.joints.clone(),
             notes: ops.notes.iter().chain(&sol.info.notes).cloned().collect(),
         }
     }

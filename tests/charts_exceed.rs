@@ -28,6 +28,7 @@ fn plate(lx: f64, ly: f64, nx: usize, ny: usize, f: impl Fn(f64, f64) -> f64) ->
         contact: vec![true; n],
         s1_bottom: vec![0.0; n],
         s1_top: vec![0.0; n],
+        ..FullField::default()
     };
     for j in 0..=ny {
         for i in 0..=nx {

@@ -171,3 +171,77 @@ fn the_moved_load_must_be_a_named_vehicle() {
         "a uniform load is no vehicle"
     );
 }
+
+/// On a jointed slab the search also finds the positions of the largest joint shear per
+/// length and the largest dowel force: the slab above cut by a doweled transverse joint at
+/// x = 0 (32 mm bars every 0.3 m) and an aggregate longitudinal joint at y = 0. Each is the
+/// largest over the converged positions, equals that position solved alone (1e-9, as above),
+/// and with the axle standing on the transverse joint (x = 0, the prints and the layout
+/// mirror-symmetric about it) the bars carry nothing but round-off (1e-6 of the largest
+/// force): the mirror maps the solution onto itself, so the jump across the joint vanishes.
+#[test]
+fn jointed_slabs_report_the_critical_joint_shear_and_dowel_force() {
+    let jointed = SLAB.replace(
+        "[mesh]",
+        "[[joint]]\nx = 0.0\nkind = \"dowels\"\nname = \"T\"\ndiameter = 0.032\nyoungs_modulus = 200e9\nopening = 0.006\nsupport_modulus = 4.07e11\nspacing = 0.3\n[[joint]]\ny = 0.0\nkind = \"aggregate\"\nname = \"L\"\nstiffness = 5e8\n[mesh]",
+    );
+    let file = SceneFile::parse(&jointed).expect("scene");
+    let c = critical(&file, &options([5, 3], true), &liftoff::Monitor::NONE).expect("search");
+    assert!(c
+        .positions
+        .iter()
+        .all(|p| p.outcome == RunOutcome::CONVERGED && p.joint_shear.is_some()));
+    let best = |f: fn(&liftoff::critical::Position) -> Option<f64>| {
+        c.positions
+            .iter()
+            .filter_map(f)
+            .fold(f64::NEG_INFINITY, f64::max)
+    };
+    let (Some(i), Some(k)) = (c.joint_shear, c.dowel_force) else {
+        panic!("no joint positions");
+    };
+    assert_eq!(c.positions[i].joint_shear, Some(best(|p| p.joint_shear)));
+    let f_max = best(|p| p.dowel_force);
+    assert_eq!(c.positions[k].dowel_force, Some(f_max));
+    for p in c.positions.iter().filter(|p| p.x.abs() < 1e-9) {
+        let f = p.dowel_force.expect("dowels");
+        assert!(f <= 1e-6 * f_max, "axle on the joint at y = {}: {f} N", p.y);
+    }
+    // The position of the largest dowel force alone, as `liftoff solve` would.
+    let p = &c.positions[k];
+    let alone = jointed
+        .replace("x = 0.0\ny = 0.0", &format!("x = {}\ny = {}", p.x, p.y))
+        .replace(
+            "elements = [60, 48]",
+            "elements = [60, 48]\nsymmetry = \"none\"",
+        );
+    let a = common::run(&alone);
+    let f = a
+        .summary
+        .joints
+        .iter()
+        .filter_map(|j| j.max_dowel_force)
+        .fold(0.0, f64::max);
+    assert!(
+        (f - f_max).abs() < 1e-9 * f_max,
+        "search {f_max} N vs alone {f} N"
+    );
+    // critical.csv carries both columns, critical.json both indices.
+    let dir = tempfile::tempdir().expect("tempdir");
+    liftoff::output::critical::write_critical(dir.path(), &c, "jointed").expect("files");
+    let csv = std::fs::read_to_string(dir.path().join("critical.csv")).expect("csv");
+    let header = csv.lines().next().expect("header");
+    assert!(
+        header.contains("joint_shear_N_per_m,dowel_force_N"),
+        "{header}"
+    );
+    let json = std::fs::read_to_string(dir.path().join("critical.json")).expect("json");
+    let doc: serde_json::Value = serde_json::from_str(&json).expect("json");
+    assert_eq!(doc["dowel_force"].as_u64(), Some(k as u64));
+    assert_eq!(doc["joint_shear"].as_u64(), Some(i as u64));
+    let table = liftoff::output::critical::critical_table("jointed", &c, None);
+    assert!(
+        table.contains("joint shear") && table.contains("dowel force"),
+        "{table}"
+    );
+}

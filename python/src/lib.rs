@@ -241,13 +241,84 @@ fn fields<'py>(py: Python<'py>, r: &liftoff::post::Report) -> PyResult<Bound<'py
             _ => (name, v),
         })
         .collect();
-    for (name, v) in nodal.iter().chain(element.iter()) {
-        let bytes: Vec<u8> = v.iter().flat_map(|x| x.to_le_bytes()).collect();
-        d.set_item(*name, PyBytes::new(py, &bytes))?;
+    let bytes = |v: &[f64]| v.iter().flat_map(|x| x.to_le_bytes()).collect::<Vec<u8>>();
+    // The (ny + 1, nx + 1) arrays are the grid nodes (on a joint, the lower / left copy); the
+    // extra copies follow in `joint_nodes`.
+    let n_grid = f.n_grid();
+    for (name, v) in nodal.iter() {
+        d.set_item(*name, PyBytes::new(py, &bytes(&v[..n_grid.min(v.len())])))?;
+    }
+    for (name, v) in element.iter() {
+        d.set_item(*name, PyBytes::new(py, &bytes(v)))?;
     }
     d.set_item("shape", (f.ny + 1, f.nx + 1))?;
     if e.x.len() == f.nx * f.ny {
         d.set_item("element_shape", (f.ny, f.nx))?;
+    }
+    d.set_item("joint_nodes", joint_nodes(py, f)?)?;
+    d.set_item("dowels", dowels(py, &r.joints)?)?;
+    Ok(d)
+}
+
+/// The extra node copies along the joints that cut a jointed plate, as 1-D f64 arrays (bytes)
+/// in the order of the report's arrays after the grid nodes: grid position `i`, `j`, `panel`
+/// (column + row · columns) and the nodal `w`, `psi_x`, `psi_y`, `pressure`, `gap`; empty
+/// arrays without joints.
+fn joint_nodes<'py>(py: Python<'py>, f: &liftoff::post::FullField) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    let bytes = |v: &[f64]| v.iter().flat_map(|x| x.to_le_bytes()).collect::<Vec<u8>>();
+    let n_grid = f.n_grid();
+    let (i, j): (Vec<f64>, Vec<f64>) = f
+        .extra_grid
+        .iter()
+        .map(|&g| ((g % f.nodes_x()) as f64, (g / f.nodes_x()) as f64))
+        .unzip();
+    let panel: Vec<f64> = f.extra_panels().iter().map(|&p| f64::from(p)).collect();
+    d.set_item("i", PyBytes::new(py, &bytes(&i)))?;
+    d.set_item("j", PyBytes::new(py, &bytes(&j)))?;
+    d.set_item("panel", PyBytes::new(py, &bytes(&panel)))?;
+    for (name, v) in [
+        ("w", &f.w),
+        ("psi_x", &f.psi_x),
+        ("psi_y", &f.psi_y),
+        ("pressure", &f.pressure),
+        ("gap", &f.gap),
+    ] {
+        d.set_item(
+            name,
+            PyBytes::new(py, &bytes(v.get(n_grid..).unwrap_or(&[]))),
+        )?;
+    }
+    Ok(d)
+}
+
+/// Every dowel bar of a jointed plate, as 1-D f64 arrays (bytes), the rows of dowels.csv:
+/// `joint` (index into the summary's `joints`), `bar`, `x`, `y`, `jump`, `force` and
+/// `bearing_stress` (NaN where the bar's properties are not given).
+fn dowels<'py>(
+    py: Python<'py>,
+    joints: &[liftoff::post::JointReport],
+) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    let bytes = |v: &[f64]| v.iter().flat_map(|x| x.to_le_bytes()).collect::<Vec<u8>>();
+    let rows: Vec<(usize, &liftoff::post::DowelForce)> = joints
+        .iter()
+        .enumerate()
+        .flat_map(|(k, j)| j.dowels.iter().map(move |b| (k, b)))
+        .collect();
+    type Pick = fn(&(usize, &liftoff::post::DowelForce)) -> f64;
+    let columns: [(&str, Pick); 7] = [
+        ("joint", |r| r.0 as f64),
+        ("bar", |r| r.1.bar as f64),
+        ("x", |r| r.1.x),
+        ("y", |r| r.1.y),
+        ("jump", |r| r.1.jump),
+        ("force", |r| r.1.force),
+        ("bearing_stress", |r| r.1.bearing_stress.unwrap_or(f64::NAN)),
+    ];
+    for (name, pick) in columns {
+        let v: Vec<f64> = rows.iter().map(pick).collect();
+        d.set_item(name, PyBytes::new(py, &bytes(&v)))?;
     }
     Ok(d)
 }

@@ -547,3 +547,94 @@ def test_critical_equals_the_cli_and_spreads_over_a_cluster(client, tmp_path):
         {k: local.meta[k] for k in ("bottom", "top", "deflection")}
     with pytest.raises(liftoff.SceneError, match="no load named"):
         liftoff.critical(scene, "bus")
+
+
+# -- jointed slabs ----------------------------------------------------------------------------
+
+JOINTED = """
+title = "two panels and a doweled joint"
+[plate]
+length = 6.0
+width = 3.0
+thickness = 0.25
+youngs_modulus = 30e9
+poissons_ratio = 0.2
+[foundation]
+model = "winkler"
+modulus = 5e7
+[[joint]]
+x = 0.0
+kind = "dowels"
+name = "T1"
+diameter = 0.032
+youngs_modulus = 200e9
+opening = 0.006
+support_modulus = 4.07e11
+spacing = 0.3
+[[joint]]
+y = 0.5
+kind = "tied"
+name = "L1"
+stiffness = 1e9
+rotational_stiffness = 1e7
+[[load]]
+kind = "uniform"
+pressure = 6e3
+[[load]]
+kind = "patch"
+x = [-0.3, 0.0]
+y = [-0.2, 0.2]
+pressure = 1.6e6
+[mesh]
+elements = [24, 12]
+"""
+
+
+def test_jointed_arrays_equal_the_cli_joints_csv(tmp_path):
+    """The Python arrays of a jointed slab are the CLI's files: the grid arrays and
+    ``joint_nodes`` are nodes.csv's rows (grid first, then the copies), joints.csv's
+    w_minus/w_plus are the copies its minus_node/plus_node name, ``dowels`` is dowels.csv and
+    ``joints`` the --json's list."""
+    scene = tmp_path / "jointed.toml"
+    scene.write_text(JOINTED)
+    s = liftoff.solve(scene)
+    r = cli("solve", str(scene), "--out", str(tmp_path / "out"))
+    assert r.returncode == 0, r.stderr
+    nodes = read_csv(tmp_path / "out" / "nodes.csv")
+    joints = read_rows(tmp_path / "out" / "joints.csv")
+    bars = read_rows(tmp_path / "out" / "dowels.csv")
+    # Numeric columns (the joint's name aside); an empty bearing stress is NaN.
+    dowels = {k: np.array([float(r[k]) if r[k] else math.nan for r in bars])
+              for k in bars[0] if k != "joint"}
+    ny, nx = s.w.shape
+    n_grid = nx * ny
+    extra = s.joint_nodes
+    # One x-joint (ny copies) and one y-joint (nx copies) crossing: one more copy at the crossing.
+    assert len(extra["w"]) == ny + nx + 1 == len(nodes["w"]) - n_grid
+    # The CSV prints 10 significant digits ({:.9e}): equal to that round-off.
+    close = lambda a, b: np.allclose(a, b, rtol=1e-9, atol=1e-12 * max(np.abs(b).max(), 1e-300))
+    for key in ("w", "psi_x", "psi_y", "pressure", "gap"):
+        assert close(getattr(s, key).ravel(), nodes[key][:n_grid]), key
+        assert close(extra[key], nodes[key][n_grid:]), key
+    assert np.array_equal(nodes["x"][n_grid:], nodes["x"][extra["j"] * nx + extra["i"]])
+    assert set(extra["panel"].tolist()) <= {0, 1, 2, 3}
+    every = np.concatenate([s.w.ravel(), extra["w"]])
+    for row in joints:
+        for side in ("minus", "plus"):
+            k = int(row[f"{side}_node"])
+            assert math.isclose(every[k], float(row[f"w_{side}"]), rel_tol=1e-9, abs_tol=1e-15)
+    assert {row["joint"] for row in joints} == {"T1", "L1"}
+    for key in ("x", "y", "jump", "force", "bearing_stress"):
+        assert close(s.dowels[key], dowels[key]), key
+    assert np.array_equal(s.dowels["bar"], dowels["bar"].astype(int))
+    assert [s.joints[k]["name"] for k in s.dowels["joint"]] == [r["joint"] for r in bars]
+    assert [j["name"] for j in s.joints] == ["T1", "L1"]
+    ref = cli_json(str(scene))
+    assert s.joints == ref["joints"]
+    t1 = s.joints[0]
+    assert math.isclose(s.dowels["force"].sum(), t1["transferred_force"], rel_tol=1e-9)
+    assert t1["max_dowel_force"] == max(abs(s.dowels["force"]))
+    # A plate without joints has empty joint arrays and no `joints` in its summary.
+    plain = liftoff.solve("example:slab-on-grade")
+    assert plain.joints == [] and plain.joint_nodes["w"].size == 0 and plain.dowels["force"].size == 0
+    assert "joints" not in plain.summary

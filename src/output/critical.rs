@@ -14,12 +14,14 @@ use crate::model::Physical;
 /// critical.csv: one row per position.
 fn csv(c: &Critical) -> String {
     let mut s = String::from(
-        "x_m,y_m,heading_deg,outcome,iterations,bottom_Pa,bottom_x_m,bottom_y_m,top_Pa,top_x_m,top_y_m,w_max_m,contact_fraction,time_s\n",
+        "x_m,y_m,heading_deg,outcome,iterations,bottom_Pa,bottom_x_m,bottom_y_m,top_Pa,top_x_m,top_y_m,w_max_m,contact_fraction,joint_shear_N_per_m,dowel_force_N,time_s\n",
     );
+    // Empty where the plate has no joint of that kind.
+    let opt = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v:e}"));
     for p in &c.positions {
         let _ = writeln!(
             s,
-            "{},{},{},{},{},{:e},{},{},{:e},{},{},{:e},{},{}",
+            "{},{},{},{},{},{:e},{},{},{:e},{},{},{:e},{},{},{},{}",
             p.x,
             p.y,
             p.heading,
@@ -33,6 +35,8 @@ fn csv(c: &Critical) -> String {
             p.top_at[1],
             p.w_max,
             p.contact_fraction,
+            opt(p.joint_shear),
+            opt(p.dowel_force),
             p.time_s
         );
     }
@@ -161,6 +165,26 @@ pub fn critical_table(title: &str, c: &Critical, files: Option<(usize, &Path)>) 
             p.w_max * 1e3
         ))
     );
+    if c.joint_shear.is_some() {
+        let _ = writeln!(
+            s,
+            "{}",
+            line("joint shear", c.joint_shear, &|p| format!(
+                "{:.3} kN/m",
+                p.joint_shear.unwrap_or(f64::NAN) * 1e-3
+            ))
+        );
+    }
+    if c.dowel_force.is_some() {
+        let _ = writeln!(
+            s,
+            "{}",
+            line("dowel force", c.dowel_force, &|p| format!(
+                "{:.3} kN",
+                p.dowel_force.unwrap_or(f64::NAN) * 1e-3
+            ))
+        );
+    }
     if converged < n {
         let _ = writeln!(
             s,

@@ -7,6 +7,7 @@
 pub mod chart;
 pub mod combinations;
 pub mod critical;
+pub mod joints;
 pub mod studies;
 
 pub mod study_tables;
@@ -108,7 +109,8 @@ impl Staged {
 }
 
 /// Write the standard result set of one solve into `dir`: summary.json, nodes.csv,
-/// elements.csv, profiles.csv, plate.vtu, profiles.svg, contact.svg, contact.png and the map of
+/// elements.csv, profiles.csv, on a jointed plate joints.csv (and dowels.csv with dowels),
+/// plate.vtu, profiles.svg, contact.svg, contact.png and the map of
 /// the bottom face's largest principal stress (stress-bottom.svg, .png); the contact map shows
 /// the model's voids, zones, line loads and bearing limit.
 pub fn write_all(
@@ -139,6 +141,14 @@ pub fn stage_all(
     tables::write_elements(&p, &report.elements)?;
     let p = st.path(&format!("{prefix}profiles.csv"));
     tables::write_profiles(&p, &report.profiles)?;
+    if !report.joints.is_empty() {
+        let p = st.path(&format!("{prefix}joints.csv"));
+        joints::write_joints(&p, &report.joints)?;
+        if report.joints.iter().any(|j| !j.dowels.is_empty()) {
+            let p = st.path(&format!("{prefix}dowels.csv"));
+            joints::write_dowels(&p, &report.joints)?;
+        }
+    }
     let p = st.path(&format!("{prefix}plate.vtu"));
     vtk::write_vtu(&p, &report.field, &report.elements)?;
     let title = format!("{} — {}", summary.title, summary.headline());

@@ -333,6 +333,7 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
             e.diagonal
         ));
     }
+    l.extend(crate::output::joints::joint_lines(&s.joints, &units));
     if let Some(b) = &s.bearing {
         // Dimensionless scenes show σ = μ r, as the contact map does.
         let (scale, unit, area) = if s.physical.is_some() {

@@ -57,7 +57,7 @@ use std::sync::OnceLock;
 
 use serde::Serialize;
 
-use super::FullField;
+use super::field::FullField;
 use crate::foundation::kernel::Kernel;
 use crate::foundation::{nodal_areas, pairs};
 use crate::operators::Operators;
@@ -211,24 +211,14 @@ pub fn negative_fraction(f: [f64; 4]) -> f64 {
 }
 
 impl FullField {
-    /// Corner node indices of whole-plate element (i, j), counter-clockwise from (i, j).
-    fn cell(&self, i: usize, j: usize) -> [usize; 4] {
-        let n = self.nodes_x();
-        [
-            i + j * n,
-            i + 1 + j * n,
-            i + 1 + (j + 1) * n,
-            i + (j + 1) * n,
-        ]
-    }
-
     /// Contact area / plate area: the exact area of {φ < 0} of the bilinear would-be gap,
-    /// element by element ([`negative_fraction`]). Exactly 1 when every node is in contact.
+    /// element by element ([`negative_fraction`]), each from its own corners (its own side of
+    /// a joint). Exactly 1 when every node is in contact.
     pub fn contact_fraction(&self) -> f64 {
         let mut sum = 0.0;
         for j in 0..self.ny {
             for i in 0..self.nx {
-                sum += negative_fraction(self.cell(i, j).map(|k| self.signed_gap[k]));
+                sum += negative_fraction(self.element_nodes(i, j).map(|k| self.signed_gap[k]));
             }
         }
         sum / (self.nx * self.ny) as f64
@@ -241,7 +231,7 @@ impl FullField {
         let mut out = Vec::new();
         for j in 0..self.ny {
             for i in 0..self.nx {
-                let c = self.cell(i, j);
+                let c = self.element_nodes(i, j);
                 let f = c.map(|k| self.signed_gap[k]);
                 let ins = f.map(inside);
                 // Crossing on edge e (corners e and e + 1), where φ is linear, with its local

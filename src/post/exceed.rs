@@ -3,7 +3,9 @@
 //! outline on the contact map.
 //!
 //! The field is the bilinear interpolant of nodal values on the whole-plate grid of a
-//! [`FullField`], in its physical coordinates x, y.
+//! [`FullField`], in its physical coordinates x, y, each element with its own corners: on a
+//! plate cut by joints the two sides of a joint line are two edges with their own values, and
+//! a contour ends on each side of the line.
 //!
 //! * **Area** ([`area_above`]): exact per element. {v > level} is the negative part of the
 //!   bilinear field level − v, whose area [`negative_fraction`] integrates in closed form; the
@@ -23,7 +25,7 @@
 //! contact; NaN values are never above.
 
 use super::boundary::negative_fraction;
-use super::FullField;
+use super::field::FullField;
 use crate::error::{Error, Result};
 
 /// A point of the plate, (x, y) in the field's physical coordinates.
@@ -44,22 +46,60 @@ struct Levelled<'a> {
     field: &'a FullField,
     values: &'a [f64],
     level: f64,
+    /// On a jointed field: the edge number of each element edge (element ie + je nx, edge e),
+    /// edges numbered by the pair of node copies they join, so that the two sides of a joint
+    /// are two edges; empty on a plain grid (grid edges by arithmetic).
+    edges: Vec<[usize; 4]>,
+    /// The number of edges.
+    n_edges: usize,
 }
 
 impl<'a> Levelled<'a> {
-    /// Check that `values` and the coordinates of `field` cover its (nx + 1)(ny + 1) nodes.
+    /// Check that `values` and the coordinates of `field` cover its node copies.
     fn new(field: &'a FullField, values: &'a [f64], level: f64) -> Result<Self> {
         let nodes = field
             .nx
             .checked_add(1)
             .zip(field.ny.checked_add(1))
-            .and_then(|(a, b)| a.checked_mul(b));
+            .and_then(|(a, b)| a.checked_mul(b))
+            .and_then(|g| g.checked_add(field.extra_grid.len()));
+        let cells = field.nx.checked_mul(field.ny);
+        let corners_ok = field
+            .corners
+            .as_ref()
+            .is_none_or(|c| Some(c.len()) == cells && c.iter().flatten().all(|&k| Some(k) < nodes));
         match nodes {
-            Some(n) if values.len() == n && field.x.len() == n && field.y.len() == n => Ok(Self {
-                field,
-                values,
-                level,
-            }),
+            Some(n)
+                if values.len() == n && field.x.len() == n && field.y.len() == n && corners_ok =>
+            {
+                let (edges, n_edges) = match &field.corners {
+                    None => (
+                        Vec::new(),
+                        field.nx * (field.ny + 1) + (field.nx + 1) * field.ny,
+                    ),
+                    Some(corners) => {
+                        let mut id = std::collections::HashMap::new();
+                        let edges: Vec<[usize; 4]> = corners
+                            .iter()
+                            .map(|c| {
+                                std::array::from_fn(|e| {
+                                    let (a, b) = (c[e], c[(e + 1) % 4]);
+                                    let next = id.len();
+                                    *id.entry((a.min(b), a.max(b))).or_insert(next)
+                                })
+                            })
+                            .collect();
+                        (edges, id.len())
+                    }
+                };
+                Ok(Self {
+                    field,
+                    values,
+                    level,
+                    edges,
+                    n_edges,
+                })
+            }
             _ => Err(Error::invalid(
                 "values",
                 format!(
@@ -79,27 +119,29 @@ impl<'a> Levelled<'a> {
         self.values[k] > self.level
     }
 
-    /// Corner nodes of element (i, j), counter-clockwise from (i, j).
+    /// Corner nodes of element (i, j), counter-clockwise from (i, j): its own copies.
     fn cell(&self, i: usize, j: usize) -> [usize; 4] {
-        let n = self.field.nx + 1;
-        [
-            i + j * n,
-            i + 1 + j * n,
-            i + 1 + (j + 1) * n,
-            i + (j + 1) * n,
-        ]
+        self.field.element_nodes(i, j)
     }
 
-    /// Number of grid edges: nx (ny + 1) along x, then (nx + 1) ny along y.
+    /// Number of edges: on a plain grid nx (ny + 1) along x, then (nx + 1) ny along y.
     fn n_edges(&self) -> usize {
-        let (nx, ny) = (self.field.nx, self.field.ny);
-        nx * (ny + 1) + (nx + 1) * ny
+        self.n_edges
     }
 
-    /// Grid edge `e` of element (i, j) (0 bottom, 1 right, 2 top, 3 left: edge e runs from
-    /// corner e to corner e + 1): its index and its end nodes in ascending order.
+    /// Edge `e` of element (i, j) (0 bottom, 1 right, 2 top, 3 left: edge e runs from corner e
+    /// to corner e + 1): its index and its end nodes in ascending order of the grid.
     fn edge(&self, i: usize, j: usize, e: usize) -> (usize, usize, usize) {
         let (nx, ny) = (self.field.nx, self.field.ny);
+        if !self.edges.is_empty() {
+            let c = self.cell(i, j);
+            let (a, b) = if e < 2 {
+                (c[e], c[e + 1])
+            } else {
+                (c[(e + 1) % 4], c[e])
+            };
+            return (self.edges[i + j * nx][e], a, b);
+        }
         let n = nx + 1;
         let along_x = |i: usize, j: usize| (i + j * nx, i + j * n, i + 1 + j * n);
         let along_y = |i: usize, j: usize| (nx * (ny + 1) + i + j * n, i + j * n, i + (j + 1) * n);
@@ -149,7 +191,7 @@ impl<'a> Levelled<'a> {
 /// `level` the allowable pressure in the same units.
 ///
 /// # Errors
-/// [`Error::Invalid`] if `values`, `field.x` or `field.y` do not have (nx + 1)(ny + 1) entries.
+/// [`Error::Invalid`] if `values`, `field.x` or `field.y` do not have one entry per node copy.
 pub fn area_above(field: &FullField, values: &[f64], level: f64) -> Result<f64> {
     let g = Levelled::new(field, values, level)?;
     let mut sum = 0.0;
@@ -171,7 +213,7 @@ pub fn area_above(field: &FullField, values: &[f64], level: f64) -> Result<f64> 
 /// element is resolved by its centre value, as for the contact boundary.
 ///
 /// # Errors
-/// [`Error::Invalid`] if `values`, `field.x` or `field.y` do not have (nx + 1)(ny + 1) entries.
+/// [`Error::Invalid`] if `values`, `field.x` or `field.y` do not have one entry per node copy.
 pub fn level_contour(field: &FullField, values: &[f64], level: f64) -> Result<Vec<Vec<Point>>> {
     let g = Levelled::new(field, values, level)?;
     let n_edges = g.n_edges();
@@ -256,7 +298,7 @@ pub fn level_contour(field: &FullField, values: &[f64], level: f64) -> Result<Ve
 /// [`level_contour`] (module docs): for tinting or hatching the area above the level.
 ///
 /// # Errors
-/// [`Error::Invalid`] if `values`, `field.x` or `field.y` do not have (nx + 1)(ny + 1) entries.
+/// [`Error::Invalid`] if `values`, `field.x` or `field.y` do not have one entry per node copy.
 pub fn pieces_above(field: &FullField, values: &[f64], level: f64) -> Result<Vec<Vec<Point>>> {
     let g = Levelled::new(field, values, level)?;
     let mut out = Vec::new();
@@ -411,5 +453,47 @@ mod tests {
         assert!(area_above(&f, &v[1..], 0.0).is_err());
         assert!(level_contour(&f, &v[1..], 0.0).is_err());
         assert!(pieces_above(&f, &[], 0.0).is_err());
+    }
+
+    /// A field that steps at a joint: s on the grid nodes, 1 on the + side's copies of the line
+    /// s = 0 (the jointed 4 × 2 fixture over x = 2s ∈ [−2, 2], y = t ∈ [−1, 1]). Above 0.75:
+    /// on the + side, element column 2 falls from 1 to 0.5 (above it for s < 0.25, x < 0.5)
+    /// and column 3 rises from 0.5 to 1 (above it for s > 0.75, x > 1.5): two strips 0.5 wide,
+    /// area 2, and two open contours at x = 0.5 and x = 1.5, each from edge to edge — where the
+    /// same values read through the grid alone (no joint) give one strip, area 1.
+    #[test]
+    fn a_jointed_field_is_read_element_by_element() {
+        let (mut f, _) = crate::post::test_fixtures::jointed();
+        let n_grid = f.n_grid();
+        let v: Vec<f64> = (0..f.n_nodes())
+            .map(|k| if k < n_grid { f.s[k] } else { 1.0 })
+            .collect();
+        // Linear along each element: exact to round-off.
+        let area = area_above(&f, &v, 0.75).expect("area");
+        assert!((area - 2.0).abs() < 1e-14, "jointed area {area}");
+        let mut lines = level_contour(&f, &v, 0.75).expect("contour");
+        lines.sort_by(|a, b| a[0].0.total_cmp(&b[0].0));
+        assert_eq!(lines.len(), 2, "{lines:?}");
+        for (line, x) in lines.iter().zip([0.5, 1.5]) {
+            assert!(line.iter().all(|p| (p.0 - x).abs() < 1e-14), "{line:?}");
+            let ys: Vec<f64> = line.iter().map(|p| p.1).collect();
+            assert!(
+                ys.contains(&-1.0) && ys.contains(&1.0),
+                "edge to edge: {ys:?}"
+            );
+        }
+        let pieces: f64 = pieces_above(&f, &v, 0.75)
+            .expect("pieces")
+            .iter()
+            .map(|p| polygon_area(p))
+            .sum();
+        assert!((pieces - 2.0).abs() < 1e-14, "pieces {pieces}");
+        // The grid alone.
+        f.corners = None;
+        f.extra_grid.clear();
+        f.x.truncate(n_grid);
+        f.y.truncate(n_grid);
+        let area = area_above(&f, &v[..n_grid], 0.75).expect("area");
+        assert!((area - 1.0).abs() < 1e-14, "plain area {area}");
     }
 }

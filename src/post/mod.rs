@@ -11,17 +11,20 @@
 
 pub mod boundary;
 pub mod exceed;
+pub mod field;
+pub mod joints;
 pub mod stress;
+mod whole;
 
 use serde::Serialize;
 
 pub use boundary::BoundarySegment;
+pub use field::{ElementField, FullField, JointLine};
+pub use joints::{DowelForce, JointNode, JointReport, Side};
 
 use crate::foundation::nodal_areas;
-use crate::mesh::{Dof, Mesh};
 use crate::model::{Model, Physical};
 use crate::operators::Operators;
-use crate::plate::{centre_resultants, ElementVector};
 use crate::solve::Solution;
 use stress::{FaceStress, StressSummary};
 
@@ -31,145 +34,6 @@ use stress::{FaceStress, StressSummary};
 /// decides [`FullField::contact`] node by node; areas and extents use the boundary located
 /// inside the elements ([`boundary`]).
 pub const CONTACT_THRESHOLD: f64 = 1e-6;
-
-/// Nodal fields over the whole plate on the (nx + 1) × (ny + 1) grid, node index i + j (nx + 1).
-#[derive(Debug, Clone)]
-pub struct FullField {
-    /// Elements along x over the whole plate.
-    pub nx: usize,
-    /// Elements along y over the whole plate.
-    pub ny: usize,
-    /// x, physical.
-    pub x: Vec<f64>,
-    /// y, physical.
-    pub y: Vec<f64>,
-    /// s = x / L.
-    pub s: Vec<f64>,
-    /// t = y / (μL).
-    pub t: Vec<f64>,
-    /// Deflection w, physical, downward.
-    pub w: Vec<f64>,
-    /// ψx, physical (rad).
-    pub psi_x: Vec<f64>,
-    /// ψy, physical (rad).
-    pub psi_y: Vec<f64>,
-    /// Contact pressure r, physical, compression positive.
-    pub pressure: Vec<f64>,
-    /// Gap (foundation settlement − w), physical length; ≥ 0 where the plate lifted.
-    pub gap: Vec<f64>,
-    /// Would-be gap φ = gap − c r, the gap with the node's own pressure released ([`boundary`]),
-    /// physical length: negative in contact, the gap where lifted; −w on Winkler. Its bilinear
-    /// zero level set is the contact boundary.
-    pub signed_gap: Vec<f64>,
-    /// c of the would-be gap, as physical length per unit of the paper's σ: −φ / c is a
-    /// pressure (σ in contact).
-    pub gap_per_sigma: f64,
-    /// V = D w / (P L²).
-    pub v: Vec<f64>,
-    /// σ = μ L² r / P.
-    pub sigma: Vec<f64>,
-    /// Pressure above [`CONTACT_THRESHOLD`] of the peak.
-    pub contact: Vec<bool>,
-    /// Largest principal stress at the bottom face, recovered at the nodes (the mean of the
-    /// stress components of the elements around a node, then its principal value).
-    pub s1_bottom: Vec<f64>,
-    /// Largest principal stress at the top face, recovered at the nodes.
-    pub s1_top: Vec<f64>,
-}
-
-impl FullField {
-    /// Nodes along x.
-    pub fn nodes_x(&self) -> usize {
-        self.nx + 1
-    }
-
-    /// The numeric per-node columns of nodes.csv in its order, by name (node i + j (nx + 1));
-    /// `contact` is the one boolean column beside them.
-    pub fn columns(&self) -> [(&'static str, &[f64]); 13] {
-        [
-            ("x", &self.x),
-            ("y", &self.y),
-            ("s", &self.s),
-            ("t", &self.t),
-            ("w", &self.w),
-            ("psi_x", &self.psi_x),
-            ("psi_y", &self.psi_y),
-            ("pressure", &self.pressure),
-            ("gap", &self.gap),
-            ("V", &self.v),
-            ("sigma", &self.sigma),
-            ("s1_bottom", &self.s1_bottom),
-            ("s1_top", &self.s1_top),
-        ]
-    }
-
-    /// Bilinear interpolation of a nodal field at (s, t) ∈ [−1, 1]².
-    pub fn interpolate(&self, field: &[f64], s: f64, t: f64) -> f64 {
-        let fx = ((s + 1.0) * 0.5 * self.nx as f64).clamp(0.0, self.nx as f64);
-        let fy = ((t + 1.0) * 0.5 * self.ny as f64).clamp(0.0, self.ny as f64);
-        let i = (fx.floor() as usize).min(self.nx - 1);
-        let j = (fy.floor() as usize).min(self.ny - 1);
-        let (a, b) = (fx - i as f64, fy - j as f64);
-        let n = self.nodes_x();
-        let v00 = field[i + j * n];
-        let v10 = field[i + 1 + j * n];
-        let v01 = field[i + (j + 1) * n];
-        let v11 = field[i + 1 + (j + 1) * n];
-        (1.0 - a) * (1.0 - b) * v00 + a * (1.0 - b) * v10 + (1.0 - a) * b * v01 + a * b * v11
-    }
-}
-
-/// Stress resultants per unit length at element centres over the whole plate, physical units,
-/// element index ie + je nx. Moments are positive when the soil-side face is in tension.
-#[derive(Debug, Clone, Default)]
-pub struct ElementField {
-    /// Centre x.
-    pub x: Vec<f64>,
-    /// Centre y.
-    pub y: Vec<f64>,
-    /// Bending moment about the y axis, per unit length.
-    pub mx: Vec<f64>,
-    /// Bending moment about the x axis, per unit length.
-    pub my: Vec<f64>,
-    /// Twisting moment, per unit length.
-    pub mxy: Vec<f64>,
-    /// Transverse shear force on x faces, per unit length.
-    pub qx: Vec<f64>,
-    /// Transverse shear force on y faces, per unit length.
-    pub qy: Vec<f64>,
-    /// Stresses at the bottom (soil-side) face.
-    pub bottom: FaceStress,
-    /// Stresses at the top face.
-    pub top: FaceStress,
-}
-
-impl ElementField {
-    /// The per-element columns of elements.csv in its order, by name (element ie + je nx).
-    pub fn columns(&self) -> Vec<(&'static str, &[f64])> {
-        let (b, t) = (&self.bottom, &self.top);
-        vec![
-            ("x", &self.x),
-            ("y", &self.y),
-            ("mx", &self.mx),
-            ("my", &self.my),
-            ("mxy", &self.mxy),
-            ("qx", &self.qx),
-            ("qy", &self.qy),
-            ("sx_bottom", &b.sx),
-            ("sy_bottom", &b.sy),
-            ("sxy_bottom", &b.sxy),
-            ("s1_bottom", &b.s1),
-            ("s2_bottom", &b.s2),
-            ("angle_bottom", &b.angle),
-            ("sx_top", &t.sx),
-            ("sy_top", &t.sy),
-            ("sxy_top", &t.sxy),
-            ("s1_top", &t.s1),
-            ("s2_top", &t.s2),
-            ("angle_top", &t.angle),
-        ]
-    }
-}
 
 /// One point of a profile.
 #[derive(Debug, Clone, Copy, Serialize)]
@@ -282,6 +146,8 @@ pub struct Report {
     pub bearing: Option<Bearing>,
     /// The largest tension at the bottom and top faces, and where.
     pub stress: StressSummary,
+    /// What each cutting joint carries (empty without joints).
+    pub joints: Vec<JointReport>,
 }
 
 /// The soil pressure against what the soil may take.
@@ -322,102 +188,32 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
     let mesh = &ops.mesh;
     let mu = model.groups.mu;
     let ph = scales(model);
-    let [nx, ny] = mesh.full_elements();
-    let nnx = nx + 1;
-    let n_full = nnx * (ny + 1);
     let areas = nodal_areas(mesh);
     let phi = boundary::would_be_gap(ops, sol);
     let peak = sol.sigma.iter().cloned().fold(0.0_f64, f64::max);
     let threshold = CONTACT_THRESHOLD * peak;
 
-    // Model node and rotation signs of every whole-plate node.
-    let mut field = FullField {
-        nx,
-        ny,
-        x: Vec::with_capacity(n_full),
-        y: Vec::with_capacity(n_full),
-        s: Vec::with_capacity(n_full),
-        t: Vec::with_capacity(n_full),
-        w: Vec::with_capacity(n_full),
-        psi_x: Vec::with_capacity(n_full),
-        psi_y: Vec::with_capacity(n_full),
-        pressure: Vec::with_capacity(n_full),
-        gap: Vec::with_capacity(n_full),
-        signed_gap: Vec::with_capacity(n_full),
-        gap_per_sigma: boundary::self_compliance(ops) * ph.deflection() / mu,
-        v: Vec::with_capacity(n_full),
-        sigma: Vec::with_capacity(n_full),
-        contact: Vec::with_capacity(n_full),
-        s1_bottom: Vec::new(),
-        s1_top: Vec::new(),
-    };
-    // Unit-system nodal dofs over the whole plate (for element resultants).
-    let mut full_u = vec![[0.0; 3]; n_full];
-    for jj in 0..=ny {
-        for ii in 0..=nx {
-            let (i, sx) = model_index(ii, mesh.nx, mesh.sym_x);
-            let (j, sy) = model_index(jj, mesh.ny, mesh.sym_y);
-            let n = mesh.node(i, j);
-            let get = |d: Dof| ops.dofs.eq(n, d).map_or(0.0, |e| sol.u[e]);
-            let w = get(Dof::W);
-            let px = sx * get(Dof::PsiX);
-            let py = sy * get(Dof::PsiY);
-            full_u[ii + jj * nnx] = [w, px, py];
-            let xu = -1.0 + ii as f64 * 2.0 / nx as f64;
-            let yu = mu * (-1.0 + jj as f64 * 2.0 / ny as f64);
-            let r = sol.sigma[n];
-            let g = sol.gap[n] / areas[n];
-            field.x.push(xu * ph.half_length);
-            field.y.push(yu * ph.half_length);
-            field.s.push(xu);
-            field.t.push(yu / mu);
-            field.w.push(w * ph.deflection());
-            field.psi_x.push(px * ph.rotation());
-            field.psi_y.push(py * ph.rotation());
-            field.pressure.push(r * ph.pressure());
-            field.gap.push(g * ph.deflection());
-            field.signed_gap.push(phi[n] * ph.deflection());
-            field.v.push(w);
-            field.sigma.push(mu * r);
-            field.contact.push(r > threshold);
-        }
-    }
-
-    // Element resultants on the whole plate; D_b κ₀ of the temperature loads (D = 1).
-    let thermal_moment = (1.0 + ops.section.poisson) * model.thermal_curvature();
-    // Surface stresses: ±6m/H² in the unit system (P/L²), then to the scene's units.
+    // Every node copy of the whole plate, and the elements, each from its own corners.
+    let whole = whole::whole_plate(mesh, mu);
+    let gap_per_sigma = boundary::self_compliance(ops) * ph.deflection() / mu;
+    let (field, elements, full_u) = whole::fields(
+        model,
+        ops,
+        sol,
+        &whole,
+        &phi,
+        (threshold, gap_per_sigma),
+        &ph,
+    );
+    let joints = joints::reports(
+        &whole.mesh,
+        &field,
+        &elements,
+        &full_u,
+        &ph,
+        model.physical.is_some(),
+    );
     let thickness = model.thickness_ratio();
-    let eigen = model.face_stress();
-    let stress_scale = ph.pressure();
-    let full_mesh = Mesh::new(2.0, 2.0 * mu, [nx, ny], false, false);
-    let mut elements = ElementField::default();
-    for e in 0..full_mesh.n_elements() {
-        let nodes = full_mesh.element_nodes(e);
-        let mut ue = ElementVector::zeros();
-        for (a, &n) in nodes.iter().enumerate() {
-            for d in 0..3 {
-                ue[3 * a + d] = full_u[n][d];
-            }
-        }
-        let mut r = centre_resultants(&ops.section, full_mesh.hx, full_mesh.hy, &ue);
-        // m = −D_b (κ − κ₀): the thermal initial curvature carries no moment of its own.
-        r[0] += thermal_moment;
-        r[1] += thermal_moment;
-        let (xc, yc) = full_mesh.element_centre(e);
-        elements.x.push(xc * ph.half_length);
-        elements.y.push(yc * ph.half_length);
-        elements.mx.push(r[0] * ph.moment());
-        elements.my.push(r[1] * ph.moment());
-        elements.mxy.push(r[2] * ph.moment());
-        elements.qx.push(r[3] * ph.shear());
-        elements.qy.push(r[4] * ph.shear());
-        let (b, t) = stress::face_states([r[0], r[1], r[2]], thickness, eigen);
-        let s = stress_scale;
-        elements.bottom.push(b[0] * s, b[1] * s, b[2] * s);
-        elements.top.push(t[0] * s, t[1] * s, t[2] * s);
-    }
-    field.s1_bottom = stress::recover_principal(&full_mesh, &elements.bottom);
-    field.s1_top = stress::recover_principal(&full_mesh, &elements.top);
     let peak_or_zero = |face: &FaceStress| {
         stress::peak(face, &elements.x, &elements.y).unwrap_or(stress::PeakTension {
             value: 0.0,
@@ -436,7 +232,8 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
     let v_max = field.v.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
     let w_max = field.w.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
     let v_center = field.interpolate(&field.v, 0.0, 0.0);
-    let v_corner = field.v[n_full - 1];
+    // The corner (+L, +μL) is the last grid node (one element: never doubled).
+    let v_corner = field.v[field.n_grid() - 1];
 
     // Contact measures from the boundary located inside the elements.
     let contact_fraction = field.contact_fraction();
@@ -487,7 +284,7 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
     };
     let bearing = model.allowable_pressure.map(|a| {
         let allowable = a * ph.pressure();
-        // The field's arrays all have (nx + 1)(ny + 1) entries: area_above cannot fail here.
+        // The field's arrays all have one entry per node copy: area_above cannot fail here.
         let area = exceed::area_above(&field, &field.pressure, allowable).unwrap_or(f64::NAN);
         let (lx, ly) = plate_sides(&field);
         Bearing {
@@ -499,6 +296,7 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
         }
     });
     Report {
+        joints,
         stress,
         bearing,
         pressure_max,
@@ -523,20 +321,8 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
     }
 }
 
-/// Model index of a whole-plate grid index and the sign a rotation normal to the symmetry
-/// line takes there (−1 on the mirrored side).
-fn model_index(full: usize, model_n: usize, sym: bool) -> (usize, f64) {
-    if !sym {
-        return (full, 1.0);
-    }
-    if full >= model_n {
-        (full - model_n, 1.0)
-    } else {
-        (model_n - full, -1.0)
-    }
-}
-
-/// V and σ along the paper's lines: 2 max(nx, ny) + 1 evenly spaced points (the nodes and
+/// V and σ along the paper's lines (read from the grid nodes: on a joint line, the lower / left
+/// copy, see [`FullField::interpolate`]): 2 max(nx, ny) + 1 evenly spaced points (the nodes and
 /// the element mid-points of a square grid) plus the points where each line crosses the contact
 /// boundary. σ is the pressure ending at the located boundary ([`FullField::pressure_at`]), so
 /// it falls to zero there rather than at the first lifted node.

@@ -1,6 +1,7 @@
 //! Surface stresses of the plate, what a pavement or floor designer reads: at the bottom (soil
 //! side) and top faces of each element, σ = ±6m/H² from the bending and twisting moments
-//! (positive moments put the bottom in tension), plus the self-equilibrating stress of a
+//! (positive moments put the bottom in tension; H the element's own panel's thickness H_p on a
+//! plate with panels of their own section), plus the self-equilibrating stress of a
 //! nonlinear temperature profile, which a plate whose sections stay plane cannot bend away
 //! (`Load::FaceStress`). From them the principal stresses and the direction of the larger one.
 //!
@@ -109,7 +110,8 @@ pub struct StressSummary {
     pub bottom: PeakTension,
     /// Top face: night curling, corner loads.
     pub top: PeakTension,
-    /// The plate's thickness the stresses were taken with (m, or H/L).
+    /// The plate's thickness (m, or H/L): the stresses' H, except in panels with a thickness
+    /// of their own, which take theirs ([`super::ElementField::thickness`]).
     pub thickness: f64,
 }
 

@@ -213,7 +213,9 @@ def critical(
 
     One record per position (``x``, ``y``, ``heading``, ``outcome``, ``bottom``/``top`` — the
     largest principal stress of that face, Pa — with ``bottom_at``/``top_at``, ``w_max``, …);
-    ``meta`` holds the indices of the critical positions (``bottom``, ``top``, ``deflection``)
+    ``meta`` holds the indices of the critical positions (``bottom``, ``top``, ``deflection``;
+    on a jointed plate also ``joint_shear`` and ``dowel_force``, the positions of the largest
+    joint shear per length and dowel force, whose values are the rows' keys of those names)
     and the search's facts. With a Dask ``client`` the positions are spread over the cluster in
     tasks of ``chunk`` positions (each task assembles the operators once); rows come back in
     grid order.
@@ -237,13 +239,19 @@ def critical(
     for part in run_all(critical_chunk, tasks, client):
         doc = json.loads(part)
         rows.extend(doc.pop("positions"))
-        meta = {k: v for k, v in doc.items() if k not in ("bottom", "top", "deflection")}
+        meta = {k: v for k, v in doc.items()
+                if k not in ("bottom", "top", "deflection", "joint_shear", "dowel_force")}
 
     def best(key: str) -> Optional[int]:
-        ok = [i for i, r in enumerate(rows) if r["outcome"] == "converged"]
+        ok = [i for i, r in enumerate(rows)
+              if r["outcome"] == "converged" and r.get(key) is not None]
         return max(ok, key=lambda i: rows[i][key]) if ok else None
 
     meta.update({"bottom": best("bottom"), "top": best("top"), "deflection": best("w_max")})
+    # A jointed plate's: the largest joint shear per length and dowel force, where present.
+    for key in ("joint_shear", "dowel_force"):
+        if best(key) is not None:
+            meta[key] = best(key)
     return Records(rows, meta)
 
 

@@ -16,9 +16,23 @@ ELEMENT = ("element_x", "element_y", "mx", "my", "mxy", "qx", "qy", "sx_bottom",
            "s1_top", "s2_top", "angle_top")
 
 
+#: The extra node copies along the joints that cut a jointed plate (1-D arrays, one entry each).
+JOINT_NODES = ("i", "j", "panel", "w", "psi_x", "psi_y", "pressure", "gap")
+#: The dowel bars of a jointed plate (1-D arrays, one entry per bar; the rows of dowels.csv).
+DOWELS = ("joint", "bar", "x", "y", "jump", "force", "bearing_stress")
+
+
 def _array(raw: bytes, shape: Optional[tuple]) -> np.ndarray:
     a = np.frombuffer(raw, dtype="<f8").copy()
     return a.reshape(shape) if shape is not None and a.size == shape[0] * shape[1] else a
+
+
+def _grid(raw: bytes, shape: tuple) -> np.ndarray:
+    """A per-node array over every node copy, cut to the grid nodes (the first
+    (ny + 1)(nx + 1) entries: on a joint, the lower / left copy) and shaped as the grid."""
+    a = np.frombuffer(raw, dtype="<f8").copy()
+    n = shape[0] * shape[1]
+    return a[:n].reshape(shape) if a.size >= n else a
 
 
 class Solution:
@@ -38,7 +52,23 @@ class Solution:
       and the surface stresses of the bottom and top faces (σ = ±6m/H² plus a nonlinear
       temperature profile's own stress; tension positive): ``sx_bottom``, ``sy_bottom``,
       ``sxy_bottom``, ``s1_bottom``, ``s2_bottom`` (principal), ``angle_bottom`` (direction of
-      σ₁ from x, degrees), and the same ``…_top``.
+      σ₁ from x, degrees), and the same ``…_top``. On a plate with panels each element's
+      moments and stresses are its own panel's (σ = ±6m/H_p²).
+
+    On a jointed plate (``[[joint]]``) the nodal arrays above hold one copy of each node: on a
+    joint line the copy of the lower / left side. The other copies are in
+
+    - ``joint_nodes``: a dict of 1-D arrays over the extra copies — grid position ``i``, ``j``
+      (column and row of the nodal arrays), ``panel`` (column + row · columns), ``w``,
+      ``psi_x``, ``psi_y``, ``pressure``, ``gap``; the same copies as nodes.csv's rows after the
+      grid's (empty arrays without joints);
+    - ``joints``: the summary's list of joints (dicts: ``name``, ``kind``, ``axis``, ``line``,
+      ``lte_deflection``, ``lte_stress``, ``at``, ``loaded_side``, ``transferred_force``,
+      ``max_shear_per_length``, ``max_moment_per_length``, ``max_dowel_force``,
+      ``max_bearing_stress``; empty without joints);
+    - ``dowels``: a dict of 1-D arrays, one entry per bar — ``joint`` (index into ``joints``),
+      ``bar``, ``x``, ``y``, ``jump``, ``force``, ``bearing_stress`` (NaN where the bar's
+      properties are not given): dowels.csv.
 
     Every key of the summary (``liftoff solve --json``; README "summary.json") is an attribute:
     ``V_max``, ``V_center``, ``V_corner``, ``w_max``, ``pressure_max``, ``contact_fraction``,
@@ -57,6 +87,17 @@ class Solution:
         self.contact = self.contact.astype(bool)
         for name in ELEMENT:
             setattr(self, name, _array(fields[name], eshape))
+        extra = fields.get("joint_nodes") or {}
+        self.joint_nodes: Dict[str, np.ndarray] = {
+            k: _array(extra[k], None) if k in extra else np.zeros(0) for k in JOINT_NODES}
+        for k in ("i", "j", "panel"):
+            self.joint_nodes[k] = self.joint_nodes[k].astype(int)
+        bars = fields.get("dowels") or {}
+        self.dowels: Dict[str, np.ndarray] = {
+            k: _array(bars[k], None) if k in bars else np.zeros(0) for k in DOWELS}
+        for k in ("joint", "bar"):
+            self.dowels[k] = self.dowels[k].astype(int)
+        self.joints: List[Dict[str, Any]] = list(summary.get("joints", []))
         self.contact_law = summary.get("contact")
         for key, value in summary.items():
             if not hasattr(self, key):
@@ -92,7 +133,8 @@ class Combinations:
 
     - ``envelope``: the extremes over the plate, the CLI's ``envelope.json`` (a list of
       quantities with their max and min, where, and the governing combination);
-    - ``envelope_nodes`` / ``envelope_elements``: per node (shape ``(ny + 1, nx + 1)``) and per
+    - ``envelope_nodes`` / ``envelope_elements``: per node (shape ``(ny + 1, nx + 1)``; on a
+      jointed plate the lower / left copy of a doubled node, as the nodal arrays) and per
       element (``(ny, nx)``), for each field (nodes: ``w``, ``pressure``, ``uplift``; elements:
       ``mx``, ``my``, ``mxy``, ``qx``, ``qy``) a dict with ``max``, ``min`` (arrays, in
       ``unit``) and ``max_by``, ``min_by`` (arrays of the governing combination's name) — the
@@ -122,9 +164,11 @@ class Combinations:
                 for name, f in envelope[group].items():
                     shape = shapes[group]
                     field = {"unit": f["unit"]}
+                    # Per node: the grid's copies (envelope_nodes.csv has every copy).
+                    cut = _grid if group == "nodes" else _array
                     for key in ("max", "min"):
-                        field[key] = _array(f[key], shape)
-                        index = _array(f[key + "_by"], shape).astype(int)
+                        field[key] = cut(f[key], shape)
+                        index = cut(f[key + "_by"], shape).astype(int)
                         field[key + "_by"] = names[index]
                     out[name] = field
                 return out

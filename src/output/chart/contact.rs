@@ -27,13 +27,28 @@ fn invalid(path: &Path, what: String) -> Error {
     }
 }
 
-/// Nodes and elements of the grid of `field`, if they can be counted.
+/// Node copies and elements of the grid of `field`, if they can be counted (and its corner
+/// table, on a jointed plate, names only copies it has).
 fn grid_size(path: &Path, field: &FullField) -> Result<(usize, usize)> {
     let nodes = field
         .nx
         .checked_add(1)
         .zip(field.ny.checked_add(1))
-        .and_then(|(a, b)| a.checked_mul(b));
+        .and_then(|(a, b)| a.checked_mul(b))
+        .and_then(|g| g.checked_add(field.extra_grid.len()));
+    let corners_ok = field.corners.as_ref().is_none_or(|c| {
+        Some(c.len()) == field.nx.checked_mul(field.ny)
+            && c.iter().flatten().all(|&k| Some(k) < nodes)
+    });
+    if !corners_ok {
+        return Err(invalid(
+            path,
+            format!(
+                "the corner table does not match the {} × {} grid",
+                field.nx, field.ny
+            ),
+        ));
+    }
     nodes
         .zip(field.nx.checked_mul(field.ny))
         .ok_or_else(|| invalid(path, format!("a {} × {} grid", field.nx, field.ny)))
@@ -139,7 +154,7 @@ fn contact_picture<'a>(
 ///
 /// # Errors
 /// [`Error::Io`] if a file cannot be written or drawing fails, or if the arrays of `field` do
-/// not all have (nx + 1)(ny + 1) entries.
+/// not all have one entry per node copy.
 pub fn write_contact_map(
     svg: &Path,
     png: &Path,
@@ -157,8 +172,8 @@ pub fn write_contact_map(
 /// Values to colour a plan view by ([`write_field_map`]).
 #[derive(Debug, Clone, Copy)]
 pub struct MapValues<'a> {
-    /// One value per node ((nx + 1)(ny + 1), index i + j (nx + 1); each cell takes the mean of
-    /// its corners) or per element (nx ny, index ie + je nx, as [`crate::post::ElementField`]),
+    /// One value per node copy ((nx + 1)(ny + 1) grid nodes, index i + j (nx + 1), then the
+    /// extra copies of a jointed plate; each cell takes the mean of its own corners) or per element (nx ny, index ie + je nx, as [`crate::post::ElementField`]),
     /// in the field's units (SI for a physical scene).
     pub values: &'a [f64],
     /// Name on the colour bar, e.g. "mx"; the unit of `scale` follows it.

@@ -57,6 +57,7 @@ pub fn write_influence_map(
         contact: Vec::new(),
         s1_bottom: Vec::new(),
         s1_top: Vec::new(),
+        ..FullField::default()
     };
     let dx = if map.spacing[0] > 0.0 {
         map.spacing[0]

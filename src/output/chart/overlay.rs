@@ -77,6 +77,8 @@ pub(super) enum Swatch {
     Zone,
     /// A line load: a thick line.
     LineLoad,
+    /// A joint line of a kind: dashed as on the map.
+    Joint(crate::layout::JointType),
 }
 
 /// Width of a legend swatch, pixels.
@@ -152,6 +154,16 @@ impl Swatch {
                     style::LINE_LOAD.stroke_width(LINE_LOAD_W),
                 ))
                 .map_err(txt),
+            Swatch::Joint(kind) => {
+                let ((dash, gap), colour) = style::joint(kind);
+                area.draw(&DashedPathElement::new(
+                    [(x, y), (x + w, y)],
+                    dash,
+                    gap,
+                    colour.stroke_width(2),
+                ))
+                .map_err(txt)
+            }
         }
     }
 }

@@ -10,6 +10,7 @@ use super::overlay::{draw_exceedance, draw_features, Overlay, Swatch, SWATCH_W};
 use super::style::{self, DESC_FONT, LABEL_FONT};
 use super::units::Scale;
 use super::{text_width, titled, txt, DrawResult, Picture, FONT};
+use crate::layout::{Axis, JointType};
 use crate::post::FullField;
 
 /// Outer margin of a plan view, pixels.
@@ -92,15 +93,42 @@ pub(super) fn boundary<DB: DrawingBackend>(
     Ok(())
 }
 
-/// Corner node indices of whole-plate element (i, j), counter-clockwise from (i, j).
+/// Corner node copies of whole-plate element (i, j), counter-clockwise from (i, j): on a
+/// jointed plate the element's own side of each joint.
 pub(super) fn cell_nodes(field: &FullField, i: usize, j: usize) -> [usize; 4] {
-    let n = field.nx + 1;
-    [
-        i + j * n,
-        i + 1 + j * n,
-        i + 1 + (j + 1) * n,
-        i + (j + 1) * n,
-    ]
+    field.element_nodes(i, j)
+}
+
+/// Draw the joint lines of `field` across the plate (x0, x1) × (y0, y1): panel outlines, each
+/// line dashed by its kind ([`style::joint`]) over a white halo.
+pub(super) fn joints<DB: DrawingBackend>(
+    chart: &mut Plan<'_, DB>,
+    field: &FullField,
+    (x0, x1): (f64, f64),
+    (y0, y1): (f64, f64),
+) -> DrawResult<()> {
+    for j in &field.joints {
+        let line = match j.axis {
+            Axis::X => [(j.at, y0), (j.at, y1)],
+            Axis::Y => [(x0, j.at), (x1, j.at)],
+        };
+        let ((dash, gap), colour) = style::joint(j.kind);
+        chart
+            .draw_series(std::iter::once(PathElement::new(
+                line,
+                style::HALO.stroke_width(4),
+            )))
+            .map_err(txt)?;
+        chart
+            .draw_series(DashedLineSeries::new(
+                line,
+                dash,
+                gap,
+                colour.stroke_width(2),
+            ))
+            .map_err(txt)?;
+    }
+    Ok(())
 }
 
 /// Which colour table a [`ColourScale`] runs along.
@@ -215,11 +243,29 @@ impl ColourMap<'_> {
         Some((level, values, shown))
     }
 
-    /// Legend entries: empty when the overlay draws nothing.
+    /// Legend entries: empty when the overlay draws nothing and the plate has no joints.
     fn legend(&self) -> Vec<(Swatch, String)> {
         let o = self.overlay;
         let mut out = Vec::new();
+        // The joint lines of a jointed plate, one entry per kind, in the order first drawn.
+        let mut kinds: Vec<JointType> = Vec::new();
+        for j in &self.field.joints {
+            if !kinds.contains(&j.kind) {
+                kinds.push(j.kind);
+            }
+        }
+        let joints = kinds.into_iter().map(|k| {
+            let what = match k {
+                JointType::Continuous => "panel boundary",
+                JointType::Free => "free joint",
+                JointType::Aggregate => "aggregate joint",
+                JointType::Dowels => "doweled joint",
+                JointType::Tied => "tied joint",
+            };
+            (Swatch::Joint(k), what.to_string())
+        });
         if o.is_empty() {
+            out.extend(joints);
             return out;
         }
         if self.boundary {
@@ -246,6 +292,7 @@ impl ColourMap<'_> {
                 out.push((swatch, text.to_string()));
             }
         }
+        out.extend(joints);
         out
     }
 
@@ -328,6 +375,7 @@ impl Picture for ColourMap<'_> {
         if !self.overlay.is_empty() {
             draw_features(&mut chart, self.overlay, xr, yr)?;
         }
+        joints(&mut chart, field, xr, yr)?;
         outline(&mut chart, xr, yr)?;
 
         // Colour bar, its ends level with the map's (up to a quarter of the height).

@@ -148,6 +148,31 @@ pub(crate) const ZONE: RGBColor = RGBColor(20, 70, 160);
 /// Line loads.
 pub(crate) const LINE_LOAD: RGBColor = RGBColor(25, 25, 90);
 
+/// Joint lines on plan views, by kind ([`joint`]).
+pub(crate) const JOINT_FREE: RGBColor = RGBColor(0, 0, 0);
+/// An aggregate-interlock joint.
+pub(crate) const JOINT_AGGREGATE: RGBColor = RGBColor(30, 90, 170);
+/// A doweled joint.
+pub(crate) const JOINT_DOWELS: RGBColor = RGBColor(0, 120, 60);
+/// A tied joint.
+pub(crate) const JOINT_TIED: RGBColor = RGBColor(120, 60, 20);
+/// A continuous line (a panel boundary only).
+pub(crate) const JOINT_CONTINUOUS: RGBColor = RGBColor(90, 90, 90);
+
+/// The dash and gap (pixels) and the colour a joint line of `kind` is drawn with: free joints
+/// in long dashes, aggregate interlock in medium ones, dowels in short ones, tied joints
+/// nearly solid; continuous lines (panel boundaries only) dotted.
+pub(crate) fn joint(kind: crate::layout::JointType) -> ((u32, u32), RGBColor) {
+    use crate::layout::JointType;
+    match kind {
+        JointType::Free => ((14, 6), JOINT_FREE),
+        JointType::Aggregate => ((8, 5), JOINT_AGGREGATE),
+        JointType::Dowels => ((4, 4), JOINT_DOWELS),
+        JointType::Tied => ((18, 3), JOINT_TIED),
+        JointType::Continuous => ((2, 5), JOINT_CONTINUOUS),
+    }
+}
+
 /// Major grid lines of cartesian charts.
 pub(crate) const GRID_MAJOR: RGBColor = RGBColor(215, 215, 215);
 /// Minor grid lines of cartesian charts, and the empty cells of a category map.

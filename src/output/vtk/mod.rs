@@ -68,23 +68,27 @@ impl Scalar for u8 {
 /// Write the whole plate as a VTK XML unstructured grid (`.vtu`, binary-inline base64, little
 /// endian, format version 1.0) that ParaView opens.
 ///
-/// * Points: (x, y, 0) of every node of `field`, node index i + j (nx + 1).
-/// * Cells: one `VTK_QUAD` per element, nodes (i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1)
-///   (counter-clockwise), cell index ie + je nx.
+/// * Points: (x, y, 0) of every node copy of `field`: the grid nodes i + j (nx + 1), then the
+///   extra copies along the joints that cut a jointed plate (at the same coordinates as their
+///   grid node), so each side of a joint is its own point and ParaView shows the step.
+/// * Cells: one `VTK_QUAD` per element, its own corners counter-clockwise from (i, j)
+///   ([`FullField::element_nodes`]), cell index ie + je nx.
 /// * Point data: `w`, `psi_x`, `psi_y`, `pressure`, `gap`, `V`, `sigma` (active scalars),
 ///   `s1_bottom`, `s1_top` (the faces' largest principal stresses recovered at the nodes),
 ///   `contact` (Int32, 1 in contact, 0 lifted) and the vector `displacement` = (0, 0, −w)
 ///   (active vectors; w is positive downward, so "Warp By Vector" shows the deflected shape
 ///   with z up).
 /// * Cell data: `mx` (active scalars), `my`, `mxy`, `qx`, `qy` and the bottom and top faces'
-///   stresses (`sx_bottom`, …, `s1_top`, `angle_top`) from `elements`. If `elements`
-///   holds no values at all (e.g. `ElementField::default()`), the cell data are omitted.
+///   stresses (`sx_bottom`, …, `s1_top`, `angle_top`) from `elements`, and on a plate with
+///   panels the `panel` (Int32, column + row · columns) of each element. If `elements` holds
+///   no values at all (e.g. `ElementField::default()`), the cell data are omitted.
 ///
 /// The file is always written as XML whatever the extension of `path`; use `.vtu`.
 ///
 /// # Errors
 /// [`Error::Io`] if the file cannot be written, or (kind `InvalidInput`) if the arrays of
-/// `field` do not all have (nx + 1)(ny + 1) entries or those of `elements` nx ny entries.
+/// `field` do not all have one entry per node copy, those of `elements` nx ny entries, or the
+/// corner table names a copy the arrays do not have.
 pub fn write_vtu(path: &Path, field: &FullField, elements: &ElementField) -> Result<()> {
     let sizes = check(path, field, elements)?;
     let io = |source| Error::Io {
@@ -98,7 +102,7 @@ pub fn write_vtu(path: &Path, field: &FullField, elements: &ElementField) -> Res
 
 /// The checked sizes of the grid.
 struct Sizes {
-    /// (nx + 1)(ny + 1).
+    /// (nx + 1)(ny + 1) and the extra copies.
     nodes: usize,
     /// nx ny.
     cells: usize,
@@ -113,6 +117,7 @@ fn check(path: &Path, field: &FullField, elements: &ElementField) -> Result<Size
         .checked_add(1)
         .zip(ny.checked_add(1))
         .and_then(|(a, b)| a.checked_mul(b))
+        .and_then(|g| g.checked_add(field.extra_grid.len()))
         .zip(nx.checked_mul(ny));
     let Some((n_nodes, n_cells)) = sizes else {
         return Err(io_error(
@@ -146,6 +151,19 @@ fn check(path: &Path, field: &FullField, elements: &ElementField) -> Result<Size
                 "nodal array `{name}` has {len} entries, the {nx} × {ny} element grid has \
                  {n_nodes} nodes"
             ),
+        ));
+    }
+
+    let corners_ok = field
+        .corners
+        .as_ref()
+        .is_none_or(|c| c.len() == n_cells && c.iter().flatten().all(|&k| k < n_nodes))
+        && (field.panel.is_empty() || field.panel.len() == n_cells);
+    if !corners_ok {
+        return Err(io_error(
+            path,
+            std::io::ErrorKind::InvalidInput,
+            format!("the corner table or the panels do not match the {nx} × {ny} element grid"),
         ));
     }
 
@@ -252,6 +270,15 @@ fn piece<W: Write>(
                 for (name, values) in cell_arrays(elements) {
                     data_array(xml, Some(name), 1, values.iter().copied())?;
                 }
+                if !field.panel.is_empty() {
+                    // Panel ids are below the element count: they fit in i32 for any grid
+                    // that fits in memory; saturate rather than wrap otherwise.
+                    let panel = field
+                        .panel
+                        .iter()
+                        .map(|&p| i32::try_from(p).unwrap_or(i32::MAX));
+                    data_array(xml, Some("panel"), 1, panel)?;
+                }
                 Ok(())
             })?;
     }
@@ -266,13 +293,8 @@ fn piece<W: Write>(
     })?;
 
     // Node and offset numbers fit in i64: they are below the length of an allocated array.
-    let nnx = (field.nx + 1) as i64;
-    let quads = (0..field.ny as i64).flat_map(|je| {
-        (0..field.nx as i64).map(move |ie| {
-            let n00 = ie + je * nnx;
-            [n00, n00 + 1, n00 + 1 + nnx, n00 + nnx]
-        })
-    });
+    let quads = (0..field.ny)
+        .flat_map(|je| (0..field.nx).map(move |ie| field.element_nodes(ie, je).map(|n| n as i64)));
     xml.create_element("Cells").write_inner_content(|xml| {
         data_array(xml, Some("connectivity"), 1, quads.flatten())?;
         let offsets = (1..=sizes.cells as i64).map(|k| 4 * k);

@@ -6,7 +6,7 @@ use quick_xml::Reader;
 use quick_xml::XmlVersion;
 
 use super::*;
-use crate::post::test_fixtures::bump;
+use crate::post::test_fixtures::{bump, jointed};
 
 /// A `DataArray` read back from a file.
 struct ArrayRead {
@@ -332,4 +332,43 @@ fn vtu_without_elements_and_bad_sizes() {
         write_vtu(&missing, &f, &ElementField::default()),
         Err(Error::Io { source, .. }) if source.kind() == std::io::ErrorKind::NotFound
     ));
+}
+
+/// A jointed plate: every node copy is a point (the 15 grid nodes and the 3 copies of the + side
+/// of the joint), the cells of column 2 name the copies at their left corners, and each cell
+/// carries its panel — ParaView draws each side with its own values.
+#[test]
+fn vtu_of_a_jointed_plate_has_every_copy() {
+    let (f, e) = jointed();
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("plate.vtu");
+    write_vtu(&path, &f, &e).expect("write");
+    let vtu = read_vtu(&path);
+    assert_eq!(vtu.attr("Piece", "NumberOfPoints"), Some("18"));
+    assert_eq!(vtu.attr("Piece", "NumberOfCells"), Some("8"));
+    assert_eq!(f64s(vtu.array("PointData", "w")), f.w, "w of every copy");
+    let points = f64s(vtu.arrays_in("Points")[0]);
+    assert_eq!(
+        &points[3 * 15..3 * 16],
+        &[f.x[2], f.y[2], 0.0],
+        "copy 15 at node 2"
+    );
+    let cells = i64s(vtu.array("Cells", "connectivity"));
+    // Element (2, 0): nodes 2 → copy 15, 3, 8, 7 → copy 16 (hand-numbered, 5 nodes a row).
+    assert_eq!(&cells[8..12], &[15, 3, 8, 16]);
+    // Element (1, 0) keeps the grid nodes on its right: the − side.
+    assert_eq!(&cells[4..8], &[1, 2, 7, 6]);
+    let panel = vtu.array("CellData", "panel");
+    assert_eq!(panel.attr("type"), "Int32");
+    let want: Vec<u8> = [0, 0, 1, 1, 0, 0, 1, 1]
+        .iter()
+        .flat_map(|&p: &i32| p.to_le_bytes())
+        .collect();
+    assert_eq!(panel.payload, want);
+    // A corner table naming a copy the arrays do not have is refused.
+    let mut g = f.clone();
+    if let Some(c) = g.corners.as_mut() {
+        c[2][0] = 99;
+    }
+    assert!(write_vtu(&dir.path().join("bad.vtu"), &g, &e).is_err());
 }

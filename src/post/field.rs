@@ -1,0 +1,233 @@
+//! The whole plate's fields as the outputs read them: nodal values over every node copy
+//! ([`FullField`]) and element-centre resultants and stresses ([`ElementField`]).
+//!
+//! **Node copies.** On a plate cut by joints each node on a cutting line has one copy per side
+//! (four at a crossing of two such lines). The nodal arrays hold the (nx + 1)(ny + 1) grid
+//! nodes first, node i + j (nx + 1) — on a joint the copy of the lower / left side —, then the
+//! extra copies in the order of [`FullField::extra_grid`]. Each element reads its own copies
+//! through [`FullField::element_nodes`], so everything drawn or integrated element by element
+//! (contact area and boundary, exceedance, maps, the VTU) sees each side's own values; what is
+//! read at a point of the plate ([`FullField::interpolate`]: profiles, extents, the centre
+//! value) reads the grid nodes, i.e. the lower / left side of a joint.
+
+use crate::layout::{Axis, JointType};
+
+/// A joint line of the whole plate, for drawing and tables.
+#[derive(Debug, Clone, PartialEq)]
+pub struct JointLine {
+    /// The joint's name.
+    pub name: String,
+    /// Its kind (continuous lines only delimit panels).
+    pub kind: JointType,
+    /// x = const (Axis::X) or y = const.
+    pub axis: Axis,
+    /// The line's coordinate, in the units of [`FullField::x`] / [`FullField::y`].
+    pub at: f64,
+}
+
+/// Nodal fields over the whole plate: the (nx + 1) × (ny + 1) grid nodes (index i + j (nx + 1))
+/// and then the extra copies along cutting joints (module docs).
+#[derive(Debug, Clone, Default)]
+pub struct FullField {
+    /// Elements along x over the whole plate.
+    pub nx: usize,
+    /// Elements along y over the whole plate.
+    pub ny: usize,
+    /// x, physical.
+    pub x: Vec<f64>,
+    /// y, physical.
+    pub y: Vec<f64>,
+    /// s = x / L.
+    pub s: Vec<f64>,
+    /// t = y / (μL).
+    pub t: Vec<f64>,
+    /// Deflection w, physical, downward.
+    pub w: Vec<f64>,
+    /// ψx, physical (rad).
+    pub psi_x: Vec<f64>,
+    /// ψy, physical (rad).
+    pub psi_y: Vec<f64>,
+    /// Contact pressure r, physical, compression positive.
+    pub pressure: Vec<f64>,
+    /// Gap (foundation settlement − w), physical length; ≥ 0 where the plate lifted.
+    pub gap: Vec<f64>,
+    /// Would-be gap φ = gap − c r, the gap with the node's own pressure released
+    /// ([`super::boundary`]), physical length: negative in contact, the gap where lifted; −w on
+    /// Winkler. Its bilinear zero level set is the contact boundary.
+    pub signed_gap: Vec<f64>,
+    /// c of the would-be gap, as physical length per unit of the paper's σ: −φ / c is a
+    /// pressure (σ in contact).
+    pub gap_per_sigma: f64,
+    /// V = D w / (P L²).
+    pub v: Vec<f64>,
+    /// σ = μ L² r / P.
+    pub sigma: Vec<f64>,
+    /// Pressure above [`super::CONTACT_THRESHOLD`] of the peak.
+    pub contact: Vec<bool>,
+    /// Largest principal stress at the bottom face, recovered at the nodes (the mean of the
+    /// stress components of the elements around a node copy, then its principal value).
+    pub s1_bottom: Vec<f64>,
+    /// Largest principal stress at the top face, recovered at the nodes.
+    pub s1_top: Vec<f64>,
+    /// The grid node (i + j (nx + 1)) of each extra copy, in the order of the arrays after the
+    /// grid nodes; empty on a plate that no joint cuts.
+    pub extra_grid: Vec<usize>,
+    /// The node copy at each corner of each element (element ie + je nx, corners
+    /// counter-clockwise from the lower left); `None` on a plate that no joint cuts, whose
+    /// elements read the grid nodes.
+    pub corners: Option<Vec<[usize; 4]>>,
+    /// The panel (column + row · columns) of each element; empty without a layout.
+    pub panel: Vec<u32>,
+    /// The joint lines of the plate (every kind), in the scene's order.
+    pub joints: Vec<JointLine>,
+}
+
+impl FullField {
+    /// Nodes along x.
+    pub fn nodes_x(&self) -> usize {
+        self.nx + 1
+    }
+
+    /// Grid nodes, (nx + 1)(ny + 1): the first entries of every nodal array.
+    pub fn n_grid(&self) -> usize {
+        (self.nx + 1) * (self.ny + 1)
+    }
+
+    /// Node copies: the grid nodes and the extra copies along cutting joints.
+    pub fn n_nodes(&self) -> usize {
+        self.n_grid() + self.extra_grid.len()
+    }
+
+    /// The grid position (i, j) of node copy `n`.
+    pub fn node_ij(&self, n: usize) -> (usize, usize) {
+        let g = if n < self.n_grid() {
+            n
+        } else {
+            self.extra_grid[n - self.n_grid()]
+        };
+        (g % self.nodes_x(), g / self.nodes_x())
+    }
+
+    /// The node copies at the corners of element (i, j), counter-clockwise from (i, j): its own
+    /// side's copies on a jointed plate.
+    pub fn element_nodes(&self, i: usize, j: usize) -> [usize; 4] {
+        if let Some(c) = &self.corners {
+            return c[i + j * self.nx];
+        }
+        let n = self.nodes_x();
+        [
+            i + j * n,
+            i + 1 + j * n,
+            i + 1 + (j + 1) * n,
+            i + (j + 1) * n,
+        ]
+    }
+
+    /// The panel of each extra copy (the panel of an element that holds it), in the order of
+    /// [`Self::extra_grid`]; empty without extra copies.
+    pub fn extra_panels(&self) -> Vec<u32> {
+        let n_grid = self.n_grid();
+        let mut out = vec![0; self.extra_grid.len()];
+        if let Some(corners) = &self.corners {
+            for (e, c) in corners.iter().enumerate() {
+                for &n in c {
+                    if n >= n_grid {
+                        out[n - n_grid] = self.panel.get(e).copied().unwrap_or(0);
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// The numeric per-node columns of nodes.csv in its order, by name (node copies in the
+    /// order of the arrays); `contact` is the one boolean column beside them.
+    pub fn columns(&self) -> [(&'static str, &[f64]); 13] {
+        [
+            ("x", &self.x),
+            ("y", &self.y),
+            ("s", &self.s),
+            ("t", &self.t),
+            ("w", &self.w),
+            ("psi_x", &self.psi_x),
+            ("psi_y", &self.psi_y),
+            ("pressure", &self.pressure),
+            ("gap", &self.gap),
+            ("V", &self.v),
+            ("sigma", &self.sigma),
+            ("s1_bottom", &self.s1_bottom),
+            ("s1_top", &self.s1_top),
+        ]
+    }
+
+    /// Bilinear interpolation of a nodal field at (s, t) ∈ [−1, 1]², from the grid nodes (on a
+    /// joint line: the lower / left side's copies).
+    pub fn interpolate(&self, field: &[f64], s: f64, t: f64) -> f64 {
+        let fx = ((s + 1.0) * 0.5 * self.nx as f64).clamp(0.0, self.nx as f64);
+        let fy = ((t + 1.0) * 0.5 * self.ny as f64).clamp(0.0, self.ny as f64);
+        let i = (fx.floor() as usize).min(self.nx - 1);
+        let j = (fy.floor() as usize).min(self.ny - 1);
+        let (a, b) = (fx - i as f64, fy - j as f64);
+        let n = self.nodes_x();
+        let v00 = field[i + j * n];
+        let v10 = field[i + 1 + j * n];
+        let v01 = field[i + (j + 1) * n];
+        let v11 = field[i + 1 + (j + 1) * n];
+        (1.0 - a) * (1.0 - b) * v00 + a * (1.0 - b) * v10 + (1.0 - a) * b * v01 + a * b * v11
+    }
+}
+
+/// Stress resultants per unit length at element centres over the whole plate, physical units,
+/// element index ie + je nx, each from its own corners and its own panel's section. Moments are
+/// positive when the soil-side face is in tension.
+#[derive(Debug, Clone, Default)]
+pub struct ElementField {
+    /// Centre x.
+    pub x: Vec<f64>,
+    /// Centre y.
+    pub y: Vec<f64>,
+    /// Bending moment about the y axis, per unit length.
+    pub mx: Vec<f64>,
+    /// Bending moment about the x axis, per unit length.
+    pub my: Vec<f64>,
+    /// Twisting moment, per unit length.
+    pub mxy: Vec<f64>,
+    /// Transverse shear force on x faces, per unit length.
+    pub qx: Vec<f64>,
+    /// Transverse shear force on y faces, per unit length.
+    pub qy: Vec<f64>,
+    /// Stresses at the bottom (soil-side) face.
+    pub bottom: super::stress::FaceStress,
+    /// Stresses at the top face.
+    pub top: super::stress::FaceStress,
+    /// The thickness each element's stresses were taken with (its panel's; physical).
+    pub thickness: Vec<f64>,
+}
+
+impl ElementField {
+    /// The per-element columns of elements.csv in its order, by name (element ie + je nx).
+    pub fn columns(&self) -> Vec<(&'static str, &[f64])> {
+        let (b, t) = (&self.bottom, &self.top);
+        vec![
+            ("x", &self.x),
+            ("y", &self.y),
+            ("mx", &self.mx),
+            ("my", &self.my),
+            ("mxy", &self.mxy),
+            ("qx", &self.qx),
+            ("qy", &self.qy),
+            ("sx_bottom", &b.sx),
+            ("sy_bottom", &b.sy),
+            ("sxy_bottom", &b.sxy),
+            ("s1_bottom", &b.s1),
+            ("s2_bottom", &b.s2),
+            ("angle_bottom", &b.angle),
+            ("sx_top", &t.sx),
+            ("sy_top", &t.sy),
+            ("sxy_top", &t.sxy),
+            ("s1_top", &t.s1),
+            ("s2_top", &t.s2),
+            ("angle_top", &t.angle),
+        ]
+    }
+}
