@@ -33,6 +33,16 @@ pub const SCENES: &[(&str, &str, &str)] = &[
         include_str!("../examples/pavement-curling.toml"),
     ),
     (
+        "pavement-3x3",
+        "jointed pavement: 3 × 3 slabs, doweled transverse joints, aggregate between lanes, tied shoulder; an 80 kN axle at a joint, night curling (combinations)",
+        include_str!("../examples/pavement-3x3.toml"),
+    ),
+    (
+        "warehouse-bay",
+        "warehouse floor: 3 × 3 sawn panels of 6 m on a clay layer, drying-shrinkage curl, a 60 kN rack post at a joint crossing",
+        include_str!("../examples/warehouse-bay.toml"),
+    ),
+    (
         "raft-combinations",
         "16 m × 12 m raft: dead, imposed and wind cases in four combinations, a void and a soft zone",
         include_str!("../examples/raft-combinations.toml"),

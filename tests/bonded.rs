@@ -262,9 +262,24 @@ fn bundled_examples_are_in_equilibrium_when_bonded() {
             a.summary.resultant.reaction,
             a.summary.resultant.load
         );
+        // Direct solves leave the gap at round-off. On the iterative route (a large continuum
+        // soil: warehouse-bay) the gap is the residual of the Schur system, which the PCG
+        // brings to 1e-10 of the right-hand side in the 2-norm: at most 1e-10 √n of its
+        // largest entry, about |V|max, at any node.
+        let iterative = a
+            .summary
+            .notes
+            .iter()
+            .any(|n| n.contains("iterative route"));
+        let tol = if iterative {
+            1e-10 * (a.summary.nodes as f64).sqrt()
+        } else {
+            1e-10
+        };
         assert!(
-            a.summary.complementarity.min_gap.abs() < 1e-10 * a.summary.V_max.abs(),
-            "{name}: bonded gap vanishes"
+            a.summary.complementarity.min_gap.abs() < tol * a.summary.V_max.abs(),
+            "{name}: bonded gap vanishes ({:e} of |V|max)",
+            a.summary.complementarity.min_gap.abs() / a.summary.V_max.abs()
         );
     }
 }
