@@ -87,6 +87,19 @@ pub fn project(y: &[f64], c: &[Vec<f64>], b: &[f64]) -> Option<Vec<f64>> {
     (rel <= 1e-10).then_some(sigma)
 }
 
+/// The projection of `y` onto the face {σ ≥ 0, σ_i = 0 where `held`, Cᵀσ = b}: the points held
+/// at zero stay there and only the others move. None when the free points cannot balance b.
+pub fn project_on_face(y: &[f64], held: &[bool], c: &[Vec<f64>], b: &[f64]) -> Option<Vec<f64>> {
+    let free: Vec<usize> = (0..y.len()).filter(|&i| !held[i]).collect();
+    let sub = |v: &[f64]| -> Vec<f64> { free.iter().map(|&i| v[i]).collect() };
+    let x = project(&sub(y), &c.iter().map(|r| sub(r)).collect::<Vec<_>>(), b)?;
+    let mut out = vec![0.0; y.len()];
+    for (&i, v) in free.iter().zip(x) {
+        out[i] = v;
+    }
+    Some(out)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
