@@ -529,7 +529,7 @@ fn the_safeguard_keeps_the_lifted_set_it_is_handed() {
     .replace("elements = [192, 192]", "elements = [96, 96]")
     .replace("method = \"penalty\"", "method = \"qp\"");
     let a = run(&text);
-    let d = a.solution.info.active_set.clone().expect("diagnostics");
+    let d = a.solution.info.active_set.expect("diagnostics");
     assert!(d.safeguard_steps >= 1, "the safeguard was exercised");
     assert!(
         d.iterations <= 40 && d.safeguard_steps <= 5,
