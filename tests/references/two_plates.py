@@ -13,7 +13,7 @@ k_d in k ell^2), every number tests/joints_reference.rs embeds:
      soil joined along x = 0 by a shear spring c (and a rotational spring c_r), the patch
      [-0.5, 0] x [-0.25, 0.25] on the left plate: w k ell^2 / P at eight points on both sides,
      the deflection LTE w(0+, 0) / w(0-, 0), the transferred force, and the stress LTE read at
-     the element centres beside the joint (x = -+h/2, y = h/2 for h = ell/8 and ell/16), which
+     the element centres beside the joint (x = -+h/2, y = h/2 for h = ell/8, ell/16, ell/32), which
      is where liftoff reads it;
   W. c = 0 (two free edges), KIRCHHOFF plates: the same points, and the exact free-edge
      deflection under a point load against Westergaard's 1926 and 1948 formulas;
@@ -522,13 +522,13 @@ def section_a():
     print("A. Mindlin H = 0.25 ell, nu = 0.15: w k ell^2 / P at (x, y)/ell; LTE_d = w(0+,0)/w(0-,0);")
     print("   F/P transferred; sLTE(h) = m_y(h/2, h/2)+ / m_y(-h/2, h/2)- (element centres)")
     print("   c      c_r | " + " ".join(f"({x:+.2f},{y:.2f}){s}" for (x, y, s) in POINTS)
-          + " | LTE_d      F/P        sLTE(1/8)  sLTE(1/16)")
+          + " | LTE_d      F/P        sLTE(1/8)  sLTE(1/16) sLTE(1/32)")
     for (c, cr) in [(0.1, 0.0), (1.0, 0.0), (10.0, 0.0), (100.0, 0.0), (10.0, 1.0)]:
         r = TwoMindlin(c, cr, NU, H_A, RECTS)
         vals = " ".join(f"{r.w(x, y, s):.8f}" for (x, y, s) in POINTS)
-        sl = [r.my(h / 2, h / 2, "R") / r.my(-h / 2, h / 2, "L") for h in (1 / 8, 1 / 16)]
+        sl = [r.my(h / 2, h / 2, "R") / r.my(-h / 2, h / 2, "L") for h in (1 / 8, 1 / 16, 1 / 32)]
         print(f"   {c:<6g} {cr:<3g} | {vals} | {r.lte():.8f} {r.transferred_force():.8f} "
-              f"{sl[0]:.8f} {sl[1]:.8f}")
+              + " ".join(f"{v:.8f}" for v in sl))
 
 
 def section_w():
