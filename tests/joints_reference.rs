@@ -168,7 +168,15 @@ fn two_mindlin_plates_joined_by_springs_converge_at_second_order_to_the_exact_so
         let e: Vec<f64> = runs.iter().map(|(_, w)| max_rel(w, &row.w)).collect();
         let order = (e[0] / e[1]).log2();
         let tag = format!("c = {}, c_r = {}", row.c, row.c_r);
-        println!("{tag}: e8 {:.2e} e16 {:.2e}, order {order:.3} LTE {:.2e} F {:.2e} sLTE {:.2e} {:.2e}", e[0], e[1], runs[1].0.report.joints[0].lte_deflection - row.lte, runs[1].0.report.joints[0].transferred_force / P - row.force, runs[0].0.report.joints[0].lte_stress - row.stress_lte[0], runs[1].0.report.joints[0].lte_stress - row.stress_lte[1]);
+        println!(
+            "{tag}: e8 {:.2e} e16 {:.2e}, order {order:.3} LTE {:.2e} F {:.2e} sLTE {:.2e} {:.2e}",
+            e[0],
+            e[1],
+            runs[1].0.report.joints[0].lte_deflection - row.lte,
+            runs[1].0.report.joints[0].transferred_force / P - row.force,
+            runs[0].0.report.joints[0].lte_stress - row.stress_lte[0],
+            runs[1].0.report.joints[0].lte_stress - row.stress_lte[1]
+        );
         assert!((1.8..=2.2).contains(&order), "{tag}: order {order}");
         assert!(e[1] <= 2e-3, "{tag}: e16 = {:e}", e[1]);
         // e₃₂ is mostly the finite plate's 2–6e-4 now: ≤ 7e-4 (measured ≤ 6.2e-4).
@@ -177,7 +185,11 @@ fn two_mindlin_plates_joined_by_springs_converge_at_second_order_to_the_exact_so
         // The deflection LTE is a ratio of two deflections whose O(h²) errors are nearly the
         // same fraction: measured |ΔLTE| ≤ 1.4e-4 at ℓ/16 (the design allowed 2e-3); 3e-4
         // asserted.
-        assert_eq!(j.at, [0.0, 0.0], "{tag}: read where the loaded side deflects most");
+        assert_eq!(
+            j.at,
+            [0.0, 0.0],
+            "{tag}: read where the loaded side deflects most"
+        );
         assert!(
             (j.lte_deflection - row.lte).abs() <= 3e-4,
             "{tag}: LTE {} vs {}",
@@ -233,9 +245,22 @@ fn a_free_joint_on_a_thin_plate_is_westergaards_free_edge() {
     let mindlin = [0.34705772, 0.29868591, 0.31173340, 0.16149709];
     for k in 0..4 {
         let (ek, em) = (loaded[k] / kirchhoff[k] - 1.0, loaded[k] / mindlin[k] - 1.0);
-        println!("free edge point {k}: {:.8} vs Kirchhoff {ek:+.2e}, Mindlin {em:+.2e}", loaded[k]);
-        assert!(ek.abs() <= 5e-3, "point {k}: {} vs Kirchhoff {}", loaded[k], kirchhoff[k]);
-        assert!(em.abs() <= 2.5e-3, "point {k}: {} vs Mindlin {}", loaded[k], mindlin[k]);
+        println!(
+            "free edge point {k}: {:.8} vs Kirchhoff {ek:+.2e}, Mindlin {em:+.2e}",
+            loaded[k]
+        );
+        assert!(
+            ek.abs() <= 5e-3,
+            "point {k}: {} vs Kirchhoff {}",
+            loaded[k],
+            kirchhoff[k]
+        );
+        assert!(
+            em.abs() <= 2.5e-3,
+            "point {k}: {} vs Mindlin {}",
+            loaded[k],
+            mindlin[k]
+        );
     }
     // The other side does not move (Winkler: no load, no coupling).
     assert_eq!([w[1], w[3], w[5], w[7]], [0.0; 4]);
@@ -277,11 +302,207 @@ fn lte_against_joint_stiffness_follows_the_exact_curve_and_the_regressions() {
     for &(f, exact, crovetti, log_form) in &LTE_TABLE {
         let a = solve(&scene(h, 144, &joint_x0(h, f, 0.0)));
         let lte = a.report.joints[0].lte_deflection;
-        println!("f {f}: LTE {lte:.6} (exact {exact:.6}, {:+.2e})", lte - exact);
+        println!(
+            "f {f}: LTE {lte:.6} (exact {exact:.6}, {:+.2e})",
+            lte - exact
+        );
         assert!((lte - exact).abs() <= 1e-3, "f = {f}: {lte} vs {exact}");
-        assert!((lte - log_form).abs() <= 0.02, "f = {f}: {lte} vs log form {log_form}");
-        assert!((lte - crovetti).abs() <= 0.04, "f = {f}: {lte} vs Crovetti {crovetti}");
+        assert!(
+            (lte - log_form).abs() <= 0.02,
+            "f = {f}: {lte} vs log form {log_form}"
+        );
+        assert!(
+            (lte - crovetti).abs() <= 0.04,
+            "f = {f}: {lte} vs Crovetti {crovetti}"
+        );
         assert!(lte > last, "f = {f}: LTE {lte} after {last}");
         last = lte;
     }
+}
+
+/// The dowel scene of section c: ℓ = 0.9 m, k = 80 MN/m³ (D = kℓ⁴ with E = 30 GPa, ν = 0.15:
+/// H = 0.2738 m), a 16.2 m (18ℓ) square plate, the joint x = 0 with `joint` (its TOML after
+/// `kind`), 40 kN on a 0.25 m square wheel patch at the joint centred on y = 0, bonded,
+/// h = 0.075 m (216 elements: H/h = 3.7, four elements between bars).
+fn dowel_scene(joint: &str) -> String {
+    let (ell, k): (f64, f64) = (0.9, 8e7);
+    let h = (12.0 * (1.0 - NU * NU) * k * ell.powi(4) / E).cbrt();
+    format!(
+        "[plate]\nlength = 16.2\nwidth = 16.2\nthickness = {h:.17e}\nyoungs_modulus = {E:e}\n\
+         poissons_ratio = {NU}\n[foundation]\nmodel = \"winkler\"\nmodulus = {k:e}\n\
+         [[joint]]\nx = 0.0\nname = \"T\"\n{joint}[[load]]\nkind = \"patch\"\nx = [-0.25, 0.0]\n\
+         y = [-0.125, 0.125]\npressure = {}\n[solver]\ncontact = \"bonded\"\n[mesh]\n\
+         elements = [216, 216]\nsymmetry = \"auto\"\n",
+        P / 0.0625
+    )
+}
+
+/// The bar: 32 mm steel, opening 6 mm, K = 4.07e11 N/m³, every 0.3 m with one at y = 0.
+const BARS: &str = "kind = \"dowels\"\ndiameter = 0.032\nyoungs_modulus = 200e9\nopening = 0.006\nsupport_modulus = 4.07e11\nspacing = 0.3\noffset = 0.3\n";
+
+/// The smeared Mindlin reference (section D of two_plates.py, H/ℓ = 0.304207, c = k_d/s =
+/// 5.514563 kℓ): the dowel force c (w⁻ − w⁺)(yᵢ) s / P at yᵢ = 0, s, …, 6s, and the transferred
+/// force / P.
+const SMEARED: [f64; 7] = [
+    0.11272554,
+    0.08238999,
+    0.04687778,
+    0.02273016,
+    0.00887843,
+    0.00198332,
+    -0.00087741,
+];
+const SMEARED_TRANSFER: f64 = 0.42351414;
+
+/// The soil's reaction under the elements of `panel`: each element's corner pressures (its own
+/// side's copies) times a quarter of its area — the lumped Winkler coupling.
+fn reaction_under(r: &Report, panel: u32) -> f64 {
+    let f = &r.field;
+    let (hx, hy) = (f.x[1] - f.x[0], f.y[f.nodes_x()] - f.y[0]);
+    let mut sum = 0.0;
+    for j in 0..f.ny {
+        for i in 0..f.nx {
+            if f.panel[i + j * f.nx] == panel {
+                let c = f.element_nodes(i, j);
+                sum += c.iter().map(|&k| f.pressure[k]).sum::<f64>() * hx * hy / 4.0;
+            }
+        }
+    }
+    sum
+}
+
+/// A row of dowels against Friberg (1940) and the smeared Mindlin joint (section c).
+///
+/// The smeared reference c = k_d/s matches the exact discrete row to 0.15 % on *Kirchhoff*
+/// plates (the design's table). On this Mindlin plate it does not, for two reasons a Kirchhoff
+/// plate lacks: the plate is as thick as the bar spacing (H = 0.27 m, s = 0.3 m), so the shear
+/// edge zone (decay length √((1 − ν)D/(2S)) = 0.09 m) concentrates the jump at each bar; and a
+/// point spring on a Mindlin plate has a local compliance growing like ln(H/h)/(πS) at an edge,
+/// k_d ln(H/h)/(πS) ≈ 1.7 % at H/h = 3.7, which softens the critical bar. Measured: the critical
+/// bar 2.1 % below the smeared reference, the others within 0.75 % of it (relative to the
+/// critical force), the transferred force 0.26 % below. That this is the bars and not the
+/// plate is shown by the control run, the same plate with an aggregate joint of c = k_d/s: it
+/// matches the reference to 1.9e-3 of the critical force (transferred force to 8e-5).
+/// Asserted: control ≤ 4e-3 of F_crit and 5e-4 on the transfer; bars ≤ 3 % of F_crit (the
+/// design expected 2 %, not knowing the Mindlin smearing above) and 0.5 % on the transfer.
+///
+/// Friberg's checks: (2) the bar under the load carries most and the bars beyond 1.8ℓ carry
+/// less than 3 % of it; (3) its share of the transferred force lies between Friberg's shares
+/// with a reach of 1.8ℓ and of 1.0ℓ (the exact Kirchhoff share 0.243 does); (4) the bars'
+/// forces add up to the transferred force, which the soil under the unloaded panel carries
+/// (bonded Winkler: an identity, round-off); (5) the bearing stress reported is K y₀ of the
+/// critical force, y₀ = F(2 + βz)/(4β³E_dI_d) written out here. (1), the bar's spring and y₀
+/// against a direct beam solution, is `dowel_spring_matches_the_direct_beam_solution` in
+/// src/layout.rs.
+#[test]
+fn dowel_forces_follow_the_smeared_reference_and_friberg() {
+    let ell = 0.9;
+    let a = solve(&dowel_scene(BARS));
+    let r = &a.report;
+    let j = &r.joints[0];
+    assert_eq!(j.dowels.len(), 53, "bars every 0.3 m across 16.2 m");
+    let mut bars: Vec<(f64, f64)> = j.dowels.iter().map(|d| (d.y, d.force)).collect();
+    bars.sort_by(|p, q| p.0.total_cmp(&q.0));
+    let centre = bars
+        .iter()
+        .position(|b| b.0.abs() < 1e-9)
+        .expect("a bar at y = 0");
+    let f_crit = bars[centre].1;
+
+    // The smeared control: the same plate with an aggregate joint of c = k_d/s.
+    let bar = liftoff::layout::DowelBar {
+        diameter: 0.032,
+        youngs_modulus: 200e9,
+        opening: 0.006,
+        support: 4.07e11,
+    };
+    let smeared = solve(&dowel_scene(&format!(
+        "kind = \"aggregate\"\nstiffness = {:e}\n",
+        bar.spring() / 0.3
+    )));
+    let sj = &smeared.report.joints[0];
+    for (i, &reference) in SMEARED.iter().enumerate() {
+        let y = 0.3 * i as f64;
+        let force = bars[centre + i].1 / P;
+        let n = sj
+            .nodes
+            .iter()
+            .find(|n| (n.y - y).abs() < 1e-9)
+            .expect("a node at the bar");
+        let control = n.shear_per_length * 0.3 / P;
+        let (eb, ec) = (
+            (force - reference) / SMEARED[0],
+            (control - reference) / SMEARED[0],
+        );
+        println!("y {y:.1}: bar {force:.6} control {control:.6} reference {reference:.6}: {eb:+.2e} {ec:+.2e}");
+        assert!(
+            ec.abs() <= 4e-3,
+            "control at y = {y}: {control} vs {reference}"
+        );
+        assert!(eb.abs() <= 3e-2, "bar at y = {y}: {force} vs {reference}");
+    }
+    let (tb, tc) = (j.transferred_force / P, sj.transferred_force / P);
+    assert!(
+        (tc / SMEARED_TRANSFER - 1.0).abs() <= 5e-4,
+        "control transfer {tc}"
+    );
+    assert!(
+        (tb / SMEARED_TRANSFER - 1.0).abs() <= 5e-3,
+        "bars' transfer {tb}"
+    );
+
+    // (2) The bar under the load carries most; beyond 1.8ℓ less than 3 % of it.
+    for &(y, f) in &bars {
+        assert!(f.abs() <= f_crit, "bar at y = {y}: {f} > {f_crit}");
+        if y.abs() > 1.8 * ell {
+            assert!(f.abs() < 0.03 * f_crit, "bar at y = {y}: {f} vs {f_crit}");
+        }
+    }
+    // (3) Friberg's shares with the bars' own positions.
+    let total: f64 = bars.iter().map(|b| b.1).sum();
+    let share = |reach: f64| {
+        1.0 / bars
+            .iter()
+            .map(|b| (1.0 - b.0.abs() / (reach * ell)).max(0.0))
+            .sum::<f64>()
+    };
+    let (lo, hi) = (share(1.8), share(1.0));
+    println!(
+        "critical share {:.4}, Friberg {lo:.4} (1.8 l) … {hi:.4} (1.0 l)",
+        f_crit / total
+    );
+    assert!(
+        (lo..=hi).contains(&(f_crit / total)),
+        "share {}",
+        f_crit / total
+    );
+    // (4) Statics of the unloaded panel, to round-off (1e-10 of the load; a direct solve).
+    assert!((total - j.transferred_force).abs() <= 1e-10 * P);
+    let reaction = reaction_under(r, 1);
+    assert!(
+        (j.transferred_force - reaction).abs() <= 1e-10 * P,
+        "transferred {} vs reaction {reaction}",
+        j.transferred_force
+    );
+    // (5) σ_b = K y₀(F_crit), the closed form written out (same formula: round-off, 1e-12).
+    let (d, e_d, k_s, z): (f64, f64, f64, f64) = (0.032, 200e9, 4.07e11, 0.006);
+    let ei = e_d * std::f64::consts::PI * d.powi(4) / 64.0;
+    let beta: f64 = (k_s * d / (4.0 * ei)).powf(0.25);
+    let y0 = f_crit * (2.0 + beta * z) / (4.0 * beta.powi(3) * ei);
+    let sigma = j
+        .dowels
+        .iter()
+        .find(|b| b.y.abs() < 1e-9)
+        .and_then(|b| b.bearing_stress);
+    let sigma = sigma.expect("the bar's properties are given");
+    assert!(
+        (sigma - k_s * y0).abs() <= 1e-12 * sigma,
+        "{sigma} vs {}",
+        k_s * y0
+    );
+    assert_eq!(
+        j.max_bearing_stress,
+        Some(sigma),
+        "the critical bar bears most"
+    );
 }
