@@ -10,6 +10,8 @@
 //! * `units.rs`: [`Units`], engineering units (m, mm, kPa, kN·m/m) for a physical scene and the
 //!   paper's V and σ for a dimensionless one, shared with the CLI tables;
 //! * `loglog.rs`: [`write_loglog_svg`], series with notes (ε̄ sweep, speed against accuracy);
+//! * `semilog.rs`: [`write_semilogx`], series against a logarithmic x and a linear y (a joint's
+//!   LTE against its stiffness);
 //! * `category.rs`: [`write_category_map_svg`], run outcomes over a parameter grid (stability);
 //! * `style.rs`: the one colour and line table; `axis.rs`: ranges and tick labels; this file:
 //!   the font, titles, file writing and text boxes they share.
@@ -27,6 +29,7 @@ mod loglog;
 mod overlay;
 mod plan;
 mod profile;
+mod semilog;
 pub(crate) mod style;
 mod units;
 
@@ -48,6 +51,7 @@ pub use influence::{write_influence_map, Influence};
 pub use loglog::{write_loglog_svg, Series};
 pub use overlay::Overlay;
 pub use profile::write_profiles_svg;
+pub use semilog::{write_semilogx, SemilogSeries};
 pub use units::{Scale, Units};
 
 /// The embedded font.
