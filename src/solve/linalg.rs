@@ -34,6 +34,7 @@ pub struct SparseCholesky {
 }
 
 /// A numeric sparse Cholesky factor.
+#[derive(Clone)]
 pub struct SparseFactor {
     symbolic: Arc<SymbolicCholesky<usize>>,
     values: Vec<f64>,

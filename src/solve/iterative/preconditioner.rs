@@ -7,6 +7,7 @@ use crate::error::Result;
 use crate::solve::linalg::{dot, SmallSpd, SparseFactor};
 
 /// The preconditioner of one penalised set (and held set).
+#[derive(Clone)]
 pub(super) struct Preconditioner {
     /// 1/D per pressure node (0 on held points).
     pub(super) inv_d: Vec<f64>,

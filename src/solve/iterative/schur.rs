@@ -1,6 +1,7 @@
 //! The Schur system with a matrix-free T: its set-up, its products, the projected PCG, and the
 //! two solves built on it — a penalty step and a face solve.
 
+use std::sync::Arc;
 use std::time::Instant;
 
 use super::preconditioner::Preconditioner;
@@ -70,7 +71,7 @@ struct Solved {
 /// The Schur system of the half-space with a matrix-free T, ready for penalty steps.
 pub struct IterativeSchur {
     settings: CgSettings,
-    kinv: PlateInverse,
+    kinv: Arc<PlateInverse>,
     /// h = BᵀK⁻f.
     pub h: Vec<f64>,
     /// C = BᵀR.
@@ -80,7 +81,7 @@ pub struct IterativeSchur {
     /// diag(T).
     t_diag: Vec<f64>,
     /// The preconditioner's plate on springs.
-    springs: SpringPlate,
+    springs: Arc<SpringPlate>,
     /// The preconditioner is the matrix itself: a diagonal T and lumped coupling, springs
     /// exactly T on the model's own plate (and the penalty, diagonal with nodal constraints).
     exact: bool,
@@ -95,6 +96,54 @@ pub struct IterativeSchur {
     pub factorisations: usize,
     /// Products with the Schur matrix made.
     pub products: usize,
+}
+
+/// What an [`IterativeSchur`] needs that does not depend on the loads, cached per assembly
+/// (`Operators::cache`) for the settings `key` (coarse plate, spring scale).
+struct SchurSetup {
+    key: (bool, f64),
+    kinv: Arc<PlateInverse>,
+    springs: Arc<SpringPlate>,
+    /// The bonded preconditioner (no held points, no penalty), its CG scale not yet set.
+    bonded: Preconditioner,
+    time_plate: f64,
+}
+
+impl SchurSetup {
+    fn new(ops: &Operators, settings: CgSettings, t_diag: &[f64], c: &[Vec<f64>]) -> Result<Self> {
+        // The plate's factor and the preconditioner of the bonded problem (where the penalty
+        // and the active-set iteration both start) are independent: one on each core. By
+        // rayon::join, not OS threads: a caller on a rayon worker (combinations run in
+        // parallel) would otherwise block it while the factorisations' own rayon jobs wait
+        // for a free worker — a deadlock.
+        let ((kinv, time_plate), springs) = rayon::join(
+            || {
+                let t0 = Instant::now();
+                let kinv = PlateInverse::new(ops);
+                (kinv, t0.elapsed().as_secs_f64())
+            },
+            || -> Result<(SpringPlate, Preconditioner)> {
+                let springs = SpringPlate::new(ops, settings.coarse_plate)?;
+                let pre = Preconditioner::new(
+                    &springs,
+                    t_diag,
+                    c,
+                    settings.spring_scale,
+                    (&[], &[]),
+                    &[],
+                )?;
+                Ok((springs, pre))
+            },
+        );
+        let (springs, bonded) = springs?;
+        Ok(Self {
+            key: (settings.coarse_plate, settings.spring_scale),
+            kinv: Arc::new(kinv?),
+            springs: Arc::new(springs),
+            bonded,
+            time_plate,
+        })
+    }
 }
 
 impl IterativeSchur {
@@ -115,32 +164,20 @@ impl IterativeSchur {
         let c: Vec<Vec<f64>> = ops.rigid.iter().map(|r| ops.bt_times(r)).collect();
         let rf = ops.rigid.iter().map(|r| dot(r, &ops.f)).collect();
         let t_diag = ops.t.diagonal();
-        // The plate's factor and the preconditioner of the bonded problem (where the penalty
-        // and the active-set iteration both start) are independent: one on each core. By
-        // rayon::join, not OS threads: a caller on a rayon worker (combinations run in
-        // parallel) would otherwise block it while the factorisations' own rayon jobs wait
-        // for a free worker — a deadlock.
-        let ((kinv, time_plate), springs) = rayon::join(
-            || {
-                let t0 = Instant::now();
-                let kinv = PlateInverse::new(ops);
-                (kinv, t0.elapsed().as_secs_f64())
-            },
-            || -> Result<(SpringPlate, Preconditioner)> {
-                let springs = SpringPlate::new(ops, settings.coarse_plate)?;
-                let pre = Preconditioner::new(
-                    &springs,
-                    &t_diag,
-                    &c,
-                    settings.spring_scale,
-                    (&[], &[]),
-                    &[],
-                )?;
-                Ok((springs, pre))
-            },
-        );
-        let kinv = kinv?;
-        let (springs, bonded) = springs?;
+        // The plate's factor, the preconditioner's plate and the bonded preconditioner do not
+        // depend on the loads: made once per assembly and shared by every solve on these
+        // operators (load combinations, critical positions, the ε̄ sweep, compare's methods).
+        let key = (settings.coarse_plate, settings.spring_scale);
+        let build = || SchurSetup::new(ops, settings, &t_diag, &c);
+        let (setup, fresh) = match ops.cache.get_or_try_init(build) {
+            Ok((s, fresh)) if s.key == key => (s, fresh),
+            Ok(_) => (Arc::new(SchurSetup::new(ops, settings, &t_diag, &c)?), true),
+            Err(e) => return Err(e),
+        };
+        let kinv = setup.kinv.clone();
+        let springs = setup.springs.clone();
+        let bonded = setup.bonded.clone();
+        let time_plate = if fresh { setup.time_plate } else { 0.0 };
         let exact = matches!(ops.t.as_ref(), Compliance::Diagonal(_))
             && ops.constraints.kind == crate::model::ConstraintPoints::Nodal
             && settings.spring_scale == 1.0
@@ -164,7 +201,7 @@ impl IterativeSchur {
             warm: None,
             cached: Some(bonded),
             time_plate,
-            factorisations: 1,
+            factorisations: usize::from(fresh),
             products: 0,
         })
     }
