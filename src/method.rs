@@ -159,12 +159,13 @@ impl Route {
 }
 
 impl Default for PenaltySettings {
-    /// Automatic ε̄ from the paper's 1e-5, at most 50 solves per ε̄.
+    /// Automatic ε̄ from the paper's 1e-5, at most 200 solves per ε̄ (a point load near a corner of a
+    /// Pasternak slab lifts 98 % of it one ring of nodes per step: 71 steps).
     fn default() -> Self {
         Self {
             epsilon: 1e-5,
             auto: true,
-            max_iterations: 50,
+            max_iterations: 200,
             cg: CgSettings::default(),
             start: Start::Nested,
         }

@@ -359,3 +359,32 @@ fn si_and_dimensionless_scenes_agree() {
     let ds = rel_diff(&ssol.sigma, &dsol.sigma);
     assert!(dv < 1e-9 && ds < 1e-9, "V {dv:e}, σ {ds:e}");
 }
+
+/// A point load near a corner of the slab-on-grade bay on its Pasternak soil (at 0.9 L, 0.9 μL,
+/// no self-weight; the stability map's position sweep): the slab lifts off all but 2 % of its
+/// area, one ring of nodes per penalty step, in 71 steps. The default cap (200) lets the
+/// penalty finish, and its answer is the QP's to its O(ε̄) error at the automatic ε̄ = 1e-5
+/// (contact areas within 0.5 % of the plate, about a ring of nodes; the peak deflection within
+/// 5e-3: it is 3e-3 here, the "up to 0.3 %" of the README's limits).
+#[test]
+fn a_point_load_near_a_corner_converges_with_the_default_cap() {
+    let text = liftoff::examples::scene("slab-pasternak").expect("bundled");
+    let start = text.find("[[load]]").expect("loads");
+    let end = text.find("[mesh]").expect("mesh");
+    let scene = format!(
+        "{}[[load]]\nkind = \"point\"\nx = 5.4\ny = 3.6\nforce = 3.0e5\n\n{}",
+        &text[..start],
+        &text[end..]
+    );
+    let pen = common::run(&scene.replace("method = \"qp\"", "method = \"penalty\""));
+    let qp = common::run(&scene.replace("method = \"penalty\"", "method = \"qp\""));
+    assert!(
+        pen.solution.iterations > 50,
+        "{} steps",
+        pen.solution.iterations
+    );
+    let (a, b) = (pen.summary.contact_fraction, qp.summary.contact_fraction);
+    assert!((a - b).abs() < 5e-3, "contact {a} vs {b}");
+    let (v, w) = (pen.summary.V_max, qp.summary.V_max);
+    assert!((v - w).abs() < 5e-3 * w.abs(), "V_max {v} vs {w}");
+}

@@ -471,7 +471,7 @@ fn default_constraint() -> ConstraintPoints {
     ConstraintPoints::Nodal
 }
 fn default_max_iterations() -> i64 {
-    50
+    crate::method::PenaltySettings::default().max_iterations as i64
 }
 
 impl Default for SolverSpec {

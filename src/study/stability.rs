@@ -195,7 +195,9 @@ pub fn stability_run(case: &StabilityCase<'_>) -> StabilityRow {
         case.base.memory_limit,
     )
     .and_then(|ops| {
-        let sol = solve::solve(&ops, &method)?;
+        // As a user's solve runs: from the coarser grid's answer where the method's start is
+        // nested (the default), so the map shows the default path's failures.
+        let sol = solve::solve_nested(&model, &ops, &method, &crate::Monitor::NONE)?;
         let rep = post::report(&model, &ops, &sol);
         Ok((sol, rep))
     });
