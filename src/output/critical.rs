@@ -98,6 +98,9 @@ pub fn write_critical(dir: &Path, c: &Critical, title: &str) -> Result<Vec<PathB
     st.commit()
 }
 
+/// How one line of the table reads its value off a position.
+type ValueOf<'a> = dyn Fn(&Position) -> String + 'a;
+
 /// What the command line prints.
 pub fn critical_table(title: &str, c: &Critical, files: Option<(usize, &Path)>) -> String {
     let mut s = String::new();
@@ -137,53 +140,30 @@ pub fn critical_table(title: &str, c: &Critical, files: Option<(usize, &Path)>) 
             None => format!("  {what:<20}: no position converged"),
         }
     };
-    let _ = writeln!(
-        s,
-        "{}",
-        line("bottom tension", c.bottom, &|p| format!(
-            "{:.3} MPa at ({:.2}, {:.2})",
-            p.bottom * 1e-6,
-            p.bottom_at[0],
-            p.bottom_at[1]
-        ))
+    let stress =
+        |v: f64, at: [f64; 2]| format!("{:.3} MPa at ({:.2}, {:.2})", v * 1e-6, at[0], at[1]);
+    let kilo = |v: Option<f64>, unit: &str| format!("{:.3} {unit}", v.unwrap_or(f64::NAN) * 1e-3);
+    let (bottom, top) = (
+        |p: &Position| stress(p.bottom, p.bottom_at),
+        |p: &Position| stress(p.top, p.top_at),
     );
-    let _ = writeln!(
-        s,
-        "{}",
-        line("top tension", c.top, &|p| format!(
-            "{:.3} MPa at ({:.2}, {:.2})",
-            p.top * 1e-6,
-            p.top_at[0],
-            p.top_at[1]
-        ))
-    );
-    let _ = writeln!(
-        s,
-        "{}",
-        line("deflection", c.deflection, &|p| format!(
-            "{:.3} mm",
-            p.w_max * 1e3
-        ))
-    );
+    let deflection = |p: &Position| format!("{:.3} mm", p.w_max * 1e3);
+    let shear = |p: &Position| kilo(p.joint_shear, "kN/m");
+    let dowel = |p: &Position| kilo(p.dowel_force, "kN");
+    let mut rows: Vec<(&str, Option<usize>, &ValueOf)> = vec![
+        ("bottom tension", c.bottom, &bottom),
+        ("top tension", c.top, &top),
+        ("deflection", c.deflection, &deflection),
+    ];
+    // Joint shear and dowel force only where the slab has joints (dowels).
     if c.joint_shear.is_some() {
-        let _ = writeln!(
-            s,
-            "{}",
-            line("joint shear", c.joint_shear, &|p| format!(
-                "{:.3} kN/m",
-                p.joint_shear.unwrap_or(f64::NAN) * 1e-3
-            ))
-        );
+        rows.push(("joint shear", c.joint_shear, &shear));
     }
     if c.dowel_force.is_some() {
-        let _ = writeln!(
-            s,
-            "{}",
-            line("dowel force", c.dowel_force, &|p| format!(
-                "{:.3} kN",
-                p.dowel_force.unwrap_or(f64::NAN) * 1e-3
-            ))
-        );
+        rows.push(("dowel force", c.dowel_force, &dowel));
+    }
+    for (what, i, value) in rows {
+        let _ = writeln!(s, "{}", line(what, i, value));
     }
     if converged < n {
         let _ = writeln!(

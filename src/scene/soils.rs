@@ -91,14 +91,10 @@ fn winkler_si(f: &FoundationSpec, p: PlateGroups, l: f64, d: f64) -> Result<Grou
             "belongs to model = \"half-space\"; a Winkler foundation takes only `modulus` (N/m³)",
         ));
     }
-    let k = finite_positive(
+    let k = positive_given(
         "foundation.modulus",
-        f.modulus.ok_or_else(|| {
-            Error::invalid(
-                "foundation.modulus",
-                "missing: Winkler subgrade modulus K in N/m³",
-            )
-        })?,
+        f.modulus,
+        "Winkler subgrade modulus K in N/m³",
         "N/m³",
     )?;
     Ok(p.on(FoundationKind::Winkler, d / (k * p.mu * l.powi(4))))
@@ -122,21 +118,16 @@ fn pasternak_si(f: &FoundationSpec, p: PlateGroups, l: f64, d: f64) -> Result<Gr
             "belongs to model = \"half-space\"; a Pasternak foundation takes `modulus` (N/m³) and `shear_modulus` (N/m)",
         ));
     }
-    let k = finite_positive(
+    let k = positive_given(
         "foundation.modulus",
-        f.modulus.ok_or_else(|| {
-            Error::invalid(
-                "foundation.modulus",
-                "missing: the Pasternak springs' modulus k in N/m³",
-            )
-        })?,
+        f.modulus,
+        "the Pasternak springs' modulus k in N/m³",
         "N/m³",
     )?;
-    let g_p = finite_positive(
+    let g_p = positive_given(
         "foundation.shear_modulus",
-        f.shear_modulus.ok_or_else(|| {
-            Error::invalid("foundation.shear_modulus", "missing: the Pasternak shear layer's modulus G_p in N/m (for G_p = 0 use model = \"winkler\")")
-        })?,
+        f.shear_modulus,
+        "the Pasternak shear layer's modulus G_p in N/m (for G_p = 0 use model = \"winkler\")",
         "N/m",
     )?;
     let shear = pasternak_length(
@@ -172,14 +163,10 @@ fn kerr_si(f: &FoundationSpec, p: PlateGroups, l: f64, d: f64) -> Result<Groups>
             ));
         }
         let (e, nu) = reissner_soil(f)?;
-        let h = finite_positive(
+        let h = positive_given(
             "foundation.depth",
-            f.depth.ok_or_else(|| {
-                Error::invalid(
-                    "foundation.depth",
-                    "missing: the depth H of Reissner's layer, m",
-                )
-            })?,
+            f.depth,
+            "the depth H of Reissner's layer, m",
             "m",
         )?;
         let e_oed = e * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
@@ -187,26 +174,21 @@ fn kerr_si(f: &FoundationSpec, p: PlateGroups, l: f64, d: f64) -> Result<Groups>
         let c2 = e / (2.0 * (1.0 + nu)) * h / 3.0;
         (4.0 * c1 / 3.0, 4.0 * c2 / 3.0, 4.0 * c1)
     } else {
-        let get = |key: &str, v: Option<f64>, what: &str, unit: &str| -> Result<f64> {
-            let field = format!("foundation.{key}");
-            let v = v.ok_or_else(|| Error::invalid(&field, format!("missing: {what}")))?;
-            finite_positive(&field, v, unit)
-        };
         (
-            get(
-                "modulus",
+            positive_given(
+                "foundation.modulus",
                 f.modulus,
                 "the Kerr soil's lower springs k in N/m³",
                 "N/m³",
             )?,
-            get(
-                "shear_modulus",
+            positive_given(
+                "foundation.shear_modulus",
                 f.shear_modulus,
                 "the Kerr soil's shear layer G in N/m",
                 "N/m",
             )?,
-            get(
-                "upper_modulus",
+            positive_given(
+                "foundation.upper_modulus",
                 f.upper_modulus,
                 "the Kerr soil's upper springs c in N/m³ (c → ∞ is the Pasternak soil)",
                 "N/m³",
@@ -224,24 +206,19 @@ fn kerr_si(f: &FoundationSpec, p: PlateGroups, l: f64, d: f64) -> Result<Groups>
 
 /// Reissner's layer's E_s and ν_s (`youngs_modulus`, `poissons_ratio`).
 fn reissner_soil(f: &FoundationSpec) -> Result<(f64, f64)> {
-    let e = finite_positive(
+    let e = positive_given(
         "foundation.youngs_modulus",
-        f.youngs_modulus.ok_or_else(|| {
-            Error::invalid(
-                "foundation.youngs_modulus",
-                "missing: the layer's Young's modulus E_s in Pa",
-            )
-        })?,
+        f.youngs_modulus,
+        "the layer's Young's modulus E_s in Pa",
         "Pa",
     )?;
     let nu = poisson(
         "foundation.poissons_ratio",
-        f.poissons_ratio.ok_or_else(|| {
-            Error::invalid(
-                "foundation.poissons_ratio",
-                "missing: the layer's Poisson's ratio ν_s",
-            )
-        })?,
+        given(
+            "foundation.poissons_ratio",
+            f.poissons_ratio,
+            "the layer's Poisson's ratio ν_s",
+        )?,
     )?;
     Ok((e, nu))
 }
@@ -252,13 +229,12 @@ fn elastic_layer_si(f: &FoundationSpec, p: PlateGroups, l: f64, d: f64) -> Resul
     no_shear_layer_si(f)?;
     let (gamma, soil_nu) = elastic_soil_si(f, p, l, d)?;
     let base = layer_base("foundation.base", f.base.as_deref())?;
-    let h = f.depth.ok_or_else(|| {
-        Error::invalid(
-            "foundation.depth",
-            "missing: the elastic layer's depth h to the rigid base, in m",
-        )
-    })?;
-    let h = finite_positive("foundation.depth", h, "m")?;
+    let h = positive_given(
+        "foundation.depth",
+        f.depth,
+        "the elastic layer's depth h to the rigid base, in m",
+        "m",
+    )?;
     let depth = depth_ratio("foundation.depth", h / l)?;
     Ok(Groups {
         depth: Some(depth),
@@ -276,27 +252,32 @@ fn elastic_soil_si(f: &FoundationSpec, p: PlateGroups, l: f64, d: f64) -> Result
             "belongs to model = \"winkler\"; a half-space takes youngs_modulus (Pa) and poissons_ratio",
         ));
     }
-    let es = finite_positive(
+    let es = positive_given(
         "foundation.youngs_modulus",
-        f.youngs_modulus.ok_or_else(|| {
-            Error::invalid(
-                "foundation.youngs_modulus",
-                "missing: soil Young's modulus E_s in Pa",
-            )
-        })?,
+        f.youngs_modulus,
+        "soil Young's modulus E_s in Pa",
         "Pa",
     )?;
     let nus = poisson(
         "foundation.poissons_ratio",
-        f.poissons_ratio.ok_or_else(|| {
-            Error::invalid(
-                "foundation.poissons_ratio",
-                "missing: soil Poisson's ratio ν_s",
-            )
-        })?,
+        given(
+            "foundation.poissons_ratio",
+            f.poissons_ratio,
+            "soil Poisson's ratio ν_s",
+        )?,
     )?;
     let gamma = d * (1.0 - nus * nus) / (std::f64::consts::PI * es * p.mu * l.powi(3));
     Ok((gamma, nus))
+}
+
+/// `value`, or an error naming `field` as missing, with `what` it is.
+fn given(field: &str, value: Option<f64>, what: &str) -> Result<f64> {
+    value.ok_or_else(|| Error::invalid(field, format!("missing: {what}")))
+}
+
+/// `value` given, finite and positive (in `unit`).
+fn positive_given(field: &str, value: Option<f64>, what: &str, unit: &str) -> Result<f64> {
+    finite_positive(field, given(field, value, what)?, unit)
 }
 
 /// Refuse `shear_modulus` on a soil without a shear layer.
@@ -342,13 +323,12 @@ fn half_space_dimensionless(g: &DimensionlessSpec, p: PlateGroups, gamma: f64) -
 
 /// Pasternak: Γ_w of its springs and the shear parameter Γ_g = G_p L²/D.
 fn pasternak_dimensionless(g: &DimensionlessSpec, p: PlateGroups, gamma: f64) -> Result<Groups> {
-    let shear = g.shear.ok_or_else(|| {
-        Error::invalid(
-            "dimensionless.shear",
-            "missing: the Pasternak shear parameter Γ_g = G_p L²/D (for Γ_g = 0 use foundation = \"winkler\")",
-        )
-    })?;
-    let shear = finite_positive("dimensionless.shear", shear, "Γ_g = G_p L²/D")?;
+    let shear = positive_given(
+        "dimensionless.shear",
+        g.shear,
+        "the Pasternak shear parameter Γ_g = G_p L²/D (for Γ_g = 0 use foundation = \"winkler\")",
+        "Γ_g = G_p L²/D",
+    )?;
     let shear = pasternak_length("dimensionless.shear", shear, gamma, p.mu)?;
     no_rigid_base(g)?;
     Ok(Groups {
@@ -364,12 +344,8 @@ fn elastic_layer_dimensionless(
     gamma: f64,
 ) -> Result<Groups> {
     no_shear_layer(g)?;
-    let depth = g.depth.ok_or_else(|| {
-        Error::invalid("dimensionless.depth", "missing: the elastic layer's depth ratio h/L (depth to the rigid base over the plate's half-length)")
-    })?;
-    let soil_nu = g.soil_nu.ok_or_else(|| {
-        Error::invalid("dimensionless.soil_nu", "missing: the elastic layer's Poisson's ratio ν_s (its kernel depends on ν_s beyond the factor 1 − ν_s² in Γ_h)")
-    })?;
+    let depth = given("dimensionless.depth", g.depth, "the elastic layer's depth ratio h/L (depth to the rigid base over the plate's half-length)")?;
+    let soil_nu = given("dimensionless.soil_nu", g.soil_nu, "the elastic layer's Poisson's ratio ν_s (its kernel depends on ν_s beyond the factor 1 − ν_s² in Γ_h)")?;
     let depth = depth_ratio("dimensionless.depth", depth)?;
     let soil_nu = poisson("dimensionless.soil_nu", soil_nu)?;
     let base = layer_base("dimensionless.base", g.base.as_deref())?;
@@ -396,21 +372,19 @@ fn no_shear_layer(g: &DimensionlessSpec) -> Result<()> {
 /// springs (`upper`).
 fn kerr_dimensionless(g: &DimensionlessSpec, p: PlateGroups, gamma: f64) -> Result<Groups> {
     no_rigid_base(g)?;
-    let shear = g.shear.ok_or_else(|| {
-        Error::invalid(
-            "dimensionless.shear",
-            "missing: the Kerr soil's shear parameter Γ_g = G L²/D",
-        )
-    })?;
-    let shear = finite_positive("dimensionless.shear", shear, "Γ_g = G L²/D")?;
+    let shear = positive_given(
+        "dimensionless.shear",
+        g.shear,
+        "the Kerr soil's shear parameter Γ_g = G L²/D",
+        "Γ_g = G L²/D",
+    )?;
     let shear = pasternak_length("dimensionless.shear", shear, gamma, p.mu)?;
-    let upper = g.upper.ok_or_else(|| {
-        Error::invalid(
-            "dimensionless.upper",
-            "missing: the Kerr soil's upper springs Γ_c = D/(c μ L⁴)",
-        )
-    })?;
-    let upper = finite_positive("dimensionless.upper", upper, "Γ_c = D/(c μ L⁴)")?;
+    let upper = positive_given(
+        "dimensionless.upper",
+        g.upper,
+        "the Kerr soil's upper springs Γ_c = D/(c μ L⁴)",
+        "Γ_c = D/(c μ L⁴)",
+    )?;
     Ok(Groups {
         shear: Some(shear),
         upper: Some(upper),

@@ -1,8 +1,10 @@
 //! Log–log charts of several series with a legend and free-text notes (the ε̄ sweep, speed
 //! against accuracy).
 
+use std::ops::Range;
 use std::path::Path;
 
+use plotters::coord::ranged1d::ValueFormatter;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -175,18 +177,7 @@ impl Picture for LogLogChart<'_> {
         let (x_plain, y_plain) = (plain_labels(&xa), plain_labels(&ya));
         let x_fmt = |v: &f64| log_tick_label(v.log10(), x_plain);
         let y_fmt = |v: &f64| log_tick_label(v.log10(), y_plain);
-        chart
-            .configure_mesh()
-            .x_desc(c.x_label)
-            .y_desc(c.y_label)
-            .x_label_formatter(&x_fmt)
-            .y_label_formatter(&y_fmt)
-            .label_style((FONT, LABEL_FONT))
-            .axis_desc_style((FONT, DESC_FONT))
-            .bold_line_style(style::GRID_MAJOR)
-            .light_line_style(style::GRID_MINOR)
-            .draw()
-            .map_err(txt)?;
+        draw_grid(&mut chart, (c.x_label, c.y_label), &x_fmt, &y_fmt)?;
 
         // Series: lines first, then markers on top.
         for (k, pts) in logs.iter().enumerate() {
@@ -252,23 +243,7 @@ impl Picture for LogLogChart<'_> {
             line_h: LINE_H,
             swatch_w,
         };
-        let (w, h) = legend.size();
-        let inset = 10;
-        let (l, r) = (px_range.start + inset, px_range.end - inset - w);
-        let (t, b) = (py_range.start + inset, py_range.end - inset - h);
-        let hidden = |&(x, y): &(i32, i32)| {
-            samples
-                .iter()
-                .filter(|&&(sx, sy)| sx >= x && sx <= x + w && sy >= y && sy <= y + h)
-                .count()
-        };
-        let corners = [(r, t), (l, b), (r, b), (l, t)];
-        let mut best = corners[0];
-        for corner in &corners[1..] {
-            if hidden(corner) < hidden(&best) {
-                best = *corner;
-            }
-        }
+        let best = legend_corner((px_range, py_range), legend.size(), &samples, true);
         legend.draw(root, best, |i, (x, y)| {
             let k = entries[i];
             let s = &c.series[k];
@@ -287,6 +262,57 @@ impl Picture for LogLogChart<'_> {
             Ok(())
         })
     }
+}
+
+/// Draw the grid, the tick labels (`x_fmt`, `y_fmt`) and the axis titles `(x, y)` of a chart
+/// in the style of the log charts (major and minor grid lines).
+pub(super) fn draw_grid<DB, X, Y>(
+    chart: &mut ChartContext<'_, DB, Cartesian2d<X, Y>>,
+    (x_desc, y_desc): (&str, &str),
+    x_fmt: &dyn Fn(&X::ValueType) -> String,
+    y_fmt: &dyn Fn(&Y::ValueType) -> String,
+) -> DrawResult<()>
+where
+    DB: DrawingBackend,
+    X: Ranged + ValueFormatter<X::ValueType>,
+    Y: Ranged + ValueFormatter<Y::ValueType>,
+{
+    chart
+        .configure_mesh()
+        .x_desc(x_desc)
+        .y_desc(y_desc)
+        .x_label_formatter(x_fmt)
+        .y_label_formatter(y_fmt)
+        .label_style((FONT, LABEL_FONT))
+        .axis_desc_style((FONT, DESC_FONT))
+        .bold_line_style(style::GRID_MAJOR)
+        .light_line_style(style::GRID_MINOR)
+        .draw()
+        .map_err(txt)
+}
+
+/// The top-left pixel of a legend of `(w, h)` pixels in the corner of the plot (pixel ranges
+/// `(px, py)`, 10 pixels in) that hides the fewest `samples` (data in pixels); on a tie the
+/// right corner at the top (`top_first`) or at the bottom, then the opposite corner.
+pub(super) fn legend_corner(
+    (px, py): (Range<i32>, Range<i32>),
+    (w, h): (i32, i32),
+    samples: &[(i32, i32)],
+    top_first: bool,
+) -> (i32, i32) {
+    let inset = 10;
+    let (l, r) = (px.start + inset, px.end - inset - w);
+    let (t, b) = (py.start + inset, py.end - inset - h);
+    let (first, second) = if top_first { (t, b) } else { (b, t) };
+    let hidden = |&(x, y): &(i32, i32)| {
+        samples
+            .iter()
+            .filter(|&&(sx, sy)| sx >= x && sx <= x + w && sy >= y && sy <= y + h)
+            .count()
+    };
+    let corners = [(r, first), (l, second), (r, second), (l, first)];
+    // min_by_key keeps the first of equal counts: the order above breaks ties.
+    corners.into_iter().min_by_key(hidden).unwrap_or((r, first))
 }
 
 #[cfg(test)]

@@ -7,9 +7,9 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::axis::{log_axis, log_tick_label, padded_range, plain_labels, tick_format};
-use super::loglog::Series;
-use super::style::{self, DESC_FONT, LABEL_FONT, LINE_WIDTH};
-use super::{titled, txt, write_png, write_svg, DrawResult, Picture, TextBox, FONT};
+use super::loglog::{draw_grid, legend_corner, Series};
+use super::style::{self, LABEL_FONT, LINE_WIDTH};
+use super::{titled, txt, write_png, write_svg, DrawResult, Picture, TextBox};
 use crate::error::Result;
 
 /// One series of a semi-log chart and how its line is drawn.
@@ -100,18 +100,7 @@ impl Picture for SemilogChart<'_> {
         let x_plain = plain_labels(&xa);
         let x_fmt = |v: &f64| log_tick_label(v.log10(), x_plain);
         let y_fmt = tick_format(y_lo, y_hi);
-        chart
-            .configure_mesh()
-            .x_desc(self.x_label)
-            .y_desc(self.y_label)
-            .x_label_formatter(&x_fmt)
-            .y_label_formatter(&y_fmt)
-            .label_style((FONT, LABEL_FONT))
-            .axis_desc_style((FONT, DESC_FONT))
-            .bold_line_style(style::GRID_MAJOR)
-            .light_line_style(style::GRID_MINOR)
-            .draw()
-            .map_err(txt)?;
+        draw_grid(&mut chart, (self.x_label, self.y_label), &x_fmt, &y_fmt)?;
 
         for (k, (s, pts)) in self.series.iter().zip(&valid).enumerate() {
             let colour = style::series_colour(k);
@@ -155,28 +144,13 @@ impl Picture for SemilogChart<'_> {
             line_h: 20,
             swatch_w,
         };
-        let (w, h) = legend.size();
-        let (px, py) = chart.plotting_area().get_pixel_range();
-        let inset = 10;
-        let (l, r) = (px.start + inset, px.end - inset - w);
-        let (t, b) = (py.start + inset, py.end - inset - h);
         let pixels: Vec<(i32, i32)> = valid
             .iter()
             .flatten()
             .map(|p| chart.backend_coord(p))
             .collect();
-        let hidden = |&(x, y): &(i32, i32)| {
-            pixels
-                .iter()
-                .filter(|&&(sx, sy)| sx >= x && sx <= x + w && sy >= y && sy <= y + h)
-                .count()
-        };
-        let corners = [(r, b), (l, t), (r, t), (l, b)];
-        let best = corners
-            .iter()
-            .copied()
-            .min_by_key(|c| hidden(c))
-            .unwrap_or(corners[0]);
+        let plot = chart.plotting_area().get_pixel_range();
+        let best = legend_corner(plot, legend.size(), &pixels, false);
         legend.draw(root, best, |i, (x, y)| {
             let k = entries[i];
             let s = &self.series[k];
