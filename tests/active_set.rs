@@ -579,3 +579,100 @@ fn a_second_solve_on_the_same_operators_reuses_the_plate_factor() {
     );
     assert_eq!(b.factorisations + 1, a.factorisations, "{a:?} / {b:?}");
 }
+
+/// A slab fully in contact on Winkler soil (the stiff slab of benches/scenes/stiff-winkler.toml,
+/// Γ_w = 10, and a slab whose shallow void closes under its load): the bonded answer of the
+/// plate on springs has no tension and closes every gap, so the QP returns it without factoring
+/// the plate alone — one preconditioner factorisation, no product with S, no plate-factor time
+/// (src/solve/qp/active_set/full_contact.rs). The answer equals clarabel's (the issue's
+/// agreement) and the bonded solve's, a factorisation of K + BT⁻¹Bᵀ without fixed modes that
+/// shares nothing with it (to 1e-9 of the peak: both are direct solves of a system whose
+/// condition is about 1e6 at 24², so round-off stays below 1e-10). A slab that lifts still takes
+/// the iteration.
+#[test]
+fn a_slab_fully_in_contact_costs_one_factorisation() {
+    let stiff = include_str!("../benches/scenes/stiff-winkler.toml")
+        .replace("elements = [200, 200]", "elements = [24, 24]");
+    let void = r#"
+[plate]
+length = 6.0
+width = 4.0
+thickness = 0.2
+youngs_modulus = 30e9
+poissons_ratio = 0.2
+[foundation]
+model = "winkler"
+modulus = 3e7
+[[load]]
+kind = "uniform"
+pressure = 5.0e3
+[[load]]
+kind = "point"
+x = 1.0
+y = 0.5
+force = 2.0e4
+[[void]]
+x = [1.5, 3.0]
+y = [0.5, 2.0]
+depth = 1.0e-5
+[mesh]
+elements = [30, 20]
+"#;
+    let clarabel = Method::Qp(QpSettings {
+        solver: QpSolver::Clarabel,
+        form: QpForm::Schur,
+        ..QpSettings::default()
+    });
+    let active = qp(QpSolver::ActiveSet);
+    for (what, text) in [("stiff slab", stiff.as_str()), ("closed void", void)] {
+        let p = Problem::from_toml(text).unwrap_or_else(|e| panic!("{what}: {e}"));
+        let ops = Operators::assemble(&p.model);
+        let (_, b) = agree(what, &ops, &clarabel, &active);
+        let d = b.info.active_set.expect("diagnostics");
+        assert!(
+            b.sigma.iter().all(|&s| s > 0.0),
+            "{what}: every point in contact"
+        );
+        assert_eq!(
+            (d.products, d.factorisations, d.iterations),
+            (0, 1, 1),
+            "{what}: {d:?}"
+        );
+        assert!(d.objective.is_none() && b.info.timings.plate_factor.is_none());
+        // The gap with the void's initial gap g₀, recomputed: closed everywhere.
+        let gap = liftoff::solve::discrete_gap(&ops, &b.u, &b.sigma);
+        let scale = max_abs(&ops.t.apply(&b.sigma));
+        assert!(
+            max_abs(&gap) <= 1e-9 * scale,
+            "{what}: gap {:.1e} of its scale",
+            max_abs(&gap) / scale
+        );
+        if what == "stiff slab" {
+            // (Bonded contact refuses voids: compared where there is none.)
+            let bonded = solve(&ops, &Method::Bonded).expect("bonded");
+            let ds = max_abs_diff(&bonded.sigma, &b.sigma) / max_abs(&bonded.sigma);
+            assert!(
+                ds <= 1e-9,
+                "{what}: σ differs from the bonded solve's by {ds:.1e}"
+            );
+        } else {
+            assert!(
+                ops.gap0.iter().any(|&g| g > 0.0),
+                "the void lowers the soil"
+            );
+        }
+    }
+    // The paper's point load lifts most of the plate: the iteration runs.
+    let p = problem(
+        liftoff::examples::scene("paper-winkler").expect("bundled"),
+        24,
+        "auto",
+    );
+    let ops = Operators::assemble(&p.model);
+    let s = solve(&ops, &active).expect("paper Winkler");
+    let d = s.info.active_set.expect("diagnostics");
+    assert!(
+        s.status.converged() && d.products > 0 && d.objective.is_some(),
+        "{d:?}"
+    );
+}

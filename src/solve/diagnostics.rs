@@ -62,8 +62,9 @@ pub struct ActiveSetDiagnostics {
     pub safeguard_steps: usize,
     /// Safeguard steps cut short by the ratio test (σ* had negative pressures).
     pub projected_steps: usize,
-    /// Objective ½σᵀSσ − hᵀσ at the solution.
-    pub objective: f64,
+    /// Objective ½σᵀSσ − hᵀσ at the solution; None where the plate on springs alone solved a
+    /// slab fully in contact (h = BᵀK⁻f needs the plate's own factor, which was not made).
+    pub objective: Option<f64>,
     /// The KKT residuals at the solution.
     pub kkt: KktResiduals,
 }
@@ -71,20 +72,23 @@ pub struct ActiveSetDiagnostics {
 impl ActiveSetDiagnostics {
     /// (name, value) pairs, as in summary.json's `solver_info`.
     pub fn named(&self) -> Vec<(&'static str, f64)> {
-        vec![
+        let mut named = vec![
             ("outer_iterations", self.iterations as f64),
             ("cg_iterations", self.cg_iterations as f64),
             ("schur_products", self.products as f64),
             ("factorisations", self.factorisations as f64),
             ("safeguard_steps", self.safeguard_steps as f64),
             ("projected_steps", self.projected_steps as f64),
-            ("objective", self.objective),
             ("kkt_natural", self.kkt.natural),
             ("kkt_stationarity", self.kkt.stationarity),
             ("kkt_penetration", self.kkt.penetration),
             ("kkt_complementarity", self.kkt.complementarity),
             ("kkt_equilibrium", self.kkt.equilibrium),
-        ]
+        ];
+        if let Some(f) = self.objective {
+            named.insert(6, ("objective", f));
+        }
+        named
     }
 }
 

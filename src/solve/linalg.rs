@@ -33,11 +33,13 @@ pub struct SparseCholesky {
     symbolic: Arc<SymbolicCholesky<usize>>,
 }
 
-/// A numeric sparse Cholesky factor.
+/// A numeric sparse Cholesky factor. Its values are shared, not copied, by its clones: a
+/// cached factor (the bonded preconditioner kept per assembly and handed to every solve on it)
+/// costs its memory once.
 #[derive(Clone)]
 pub struct SparseFactor {
     symbolic: Arc<SymbolicCholesky<usize>>,
-    values: Vec<f64>,
+    values: Arc<Vec<f64>>,
 }
 
 impl SparseCholesky {
@@ -110,7 +112,7 @@ impl SparseCholesky {
             })?;
         Ok(SparseFactor {
             symbolic: self.symbolic.clone(),
-            values,
+            values: Arc::new(values),
         })
     }
 }

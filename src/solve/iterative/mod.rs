@@ -35,9 +35,11 @@
 //! systems are solved by pseudo-inverse ([`SmallSpd`](crate::solve::linalg::SmallSpd)), which keeps the iterates on the
 //! equilibrium the free points can carry.
 
+mod bonded_springs;
 mod preconditioner;
 mod schur;
 pub mod springs;
 
 pub use crate::method::CgSettings;
+pub use bonded_springs::{bonded_from_springs, BondedBySprings};
 pub use schur::{Face, IterativeSchur, Step};

@@ -98,52 +98,70 @@ pub struct IterativeSchur {
     pub products: usize,
 }
 
-/// What an [`IterativeSchur`] needs that does not depend on the loads, cached per assembly
-/// (`Operators::cache`) for the settings `key` (coarse plate, spring scale).
-struct SchurSetup {
+/// The preconditioner's side of what an [`IterativeSchur`] needs that does not depend on the
+/// loads, cached per assembly (`Operators::cache`) for the settings `key` (coarse plate, spring
+/// scale): the plate on springs and the bonded preconditioner (no held points, no penalty, its
+/// CG scale not yet set), where the penalty and the active-set iteration both start.
+pub(super) struct SpringSetup {
     key: (bool, f64),
+    pub(super) springs: Arc<SpringPlate>,
+    pub(super) bonded: Preconditioner,
+}
+
+/// The plate's own factor (its rigid modes fixed), cached per assembly beside [`SpringSetup`].
+struct PlateSetup {
     kinv: Arc<PlateInverse>,
-    springs: Arc<SpringPlate>,
-    /// The bonded preconditioner (no held points, no penalty), its CG scale not yet set.
-    bonded: Preconditioner,
     time_plate: f64,
 }
 
-impl SchurSetup {
+impl SpringSetup {
     fn new(ops: &Operators, settings: CgSettings, t_diag: &[f64], c: &[Vec<f64>]) -> Result<Self> {
-        // The plate's factor and the preconditioner of the bonded problem (where the penalty
-        // and the active-set iteration both start) are independent: one on each core. By
-        // rayon::join, not OS threads: a caller on a rayon worker (combinations run in
-        // parallel) would otherwise block it while the factorisations' own rayon jobs wait
-        // for a free worker — a deadlock.
-        let ((kinv, time_plate), springs) = rayon::join(
-            || {
-                let t0 = Instant::now();
-                let kinv = PlateInverse::new(ops);
-                (kinv, t0.elapsed().as_secs_f64())
-            },
-            || -> Result<(SpringPlate, Preconditioner)> {
-                let springs = SpringPlate::new(ops, settings.coarse_plate)?;
-                let pre = Preconditioner::new(
-                    &springs,
-                    t_diag,
-                    c,
-                    settings.spring_scale,
-                    (&[], &[]),
-                    &[],
-                )?;
-                Ok((springs, pre))
-            },
-        );
-        let (springs, bonded) = springs?;
+        let springs = SpringPlate::new(ops, settings.coarse_plate)?;
+        let bonded =
+            Preconditioner::new(&springs, t_diag, c, settings.spring_scale, (&[], &[]), &[])?;
         Ok(Self {
             key: (settings.coarse_plate, settings.spring_scale),
-            kinv: Arc::new(kinv?),
             springs: Arc::new(springs),
             bonded,
-            time_plate,
         })
     }
+
+    /// The cached setup for `settings`, or a new one (cached when none was); whether it was
+    /// made by this call.
+    pub(super) fn get(
+        ops: &Operators,
+        settings: CgSettings,
+        t_diag: &[f64],
+        c: &[Vec<f64>],
+    ) -> Result<(Arc<Self>, bool)> {
+        let key = (settings.coarse_plate, settings.spring_scale);
+        match ops
+            .cache
+            .get_or_try_init(|| Self::new(ops, settings, t_diag, c))?
+        {
+            (s, fresh) if s.key == key => Ok((s, fresh)),
+            _ => Ok((Arc::new(Self::new(ops, settings, t_diag, c)?), true)),
+        }
+    }
+}
+
+impl PlateSetup {
+    fn new(ops: &Operators) -> Result<Self> {
+        let t0 = Instant::now();
+        let kinv = PlateInverse::new(ops)?;
+        Ok(Self {
+            kinv: Arc::new(kinv),
+            time_plate: t0.elapsed().as_secs_f64(),
+        })
+    }
+}
+
+/// The value of type `T` in the operators' cache, if one is there.
+fn cached<T: Send + Sync + 'static>(ops: &Operators) -> Option<Arc<T>> {
+    ops.cache
+        .get_or_try_init::<T, ()>(|| Err(()))
+        .ok()
+        .map(|(v, _)| v)
 }
 
 impl IterativeSchur {
@@ -167,17 +185,50 @@ impl IterativeSchur {
         // The plate's factor, the preconditioner's plate and the bonded preconditioner do not
         // depend on the loads: made once per assembly and shared by every solve on these
         // operators (load combinations, critical positions, the ε̄ sweep, compare's methods).
+        // When neither is cached the two factorisations are independent: one on each core. By
+        // rayon::join, not OS threads: a caller on a rayon worker (combinations run in
+        // parallel) would otherwise block it while the factorisations' own rayon jobs wait for
+        // a free worker — a deadlock. (The cache's lock is held while it computes, so the two
+        // are made outside it and stored after.)
         let key = (settings.coarse_plate, settings.spring_scale);
-        let build = || SchurSetup::new(ops, settings, &t_diag, &c);
-        let (setup, fresh) = match ops.cache.get_or_try_init(build) {
-            Ok((s, fresh)) if s.key == key => (s, fresh),
-            Ok(_) => (Arc::new(SchurSetup::new(ops, settings, &t_diag, &c)?), true),
-            Err(e) => return Err(e),
+        let have_springs = cached::<SpringSetup>(ops);
+        let have_plate = cached::<PlateSetup>(ops);
+        let ((plate, fresh_plate), (setup, fresh_springs)) = match (have_plate, have_springs) {
+            (None, None) => {
+                let (p, s) = rayon::join(
+                    || PlateSetup::new(ops),
+                    || SpringSetup::new(ops, settings, &t_diag, &c),
+                );
+                let (p, s) = (p?, s?);
+                let p = ops.cache.get_or_try_init::<_, Error>(|| Ok(p))?.0;
+                let s = ops.cache.get_or_try_init::<_, Error>(|| Ok(s))?.0;
+                // (Another solve may have stored its own settings' setup meanwhile.)
+                let s = if s.key == key {
+                    (s, true)
+                } else {
+                    SpringSetup::get(ops, settings, &t_diag, &c)?
+                };
+                ((p, true), s)
+            }
+            (Some(p), s) => (
+                (p, false),
+                match s.filter(|s| s.key == key) {
+                    Some(s) => (s, false),
+                    None => SpringSetup::get(ops, settings, &t_diag, &c)?,
+                },
+            ),
+            (None, Some(s)) => (
+                ops.cache.get_or_try_init(|| PlateSetup::new(ops))?,
+                match Some(s).filter(|s| s.key == key) {
+                    Some(s) => (s, false),
+                    None => SpringSetup::get(ops, settings, &t_diag, &c)?,
+                },
+            ),
         };
-        let kinv = setup.kinv.clone();
+        let kinv = plate.kinv.clone();
         let springs = setup.springs.clone();
         let bonded = setup.bonded.clone();
-        let time_plate = if fresh { setup.time_plate } else { 0.0 };
+        let time_plate = if fresh_plate { plate.time_plate } else { 0.0 };
         let exact = matches!(ops.t.as_ref(), Compliance::Diagonal(_))
             && ops.constraints.kind == crate::model::ConstraintPoints::Nodal
             && settings.spring_scale == 1.0
@@ -201,7 +252,7 @@ impl IterativeSchur {
             warm: None,
             cached: Some(bonded),
             time_plate,
-            factorisations: usize::from(fresh),
+            factorisations: usize::from(fresh_springs),
             products: 0,
         })
     }

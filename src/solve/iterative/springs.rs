@@ -37,6 +37,9 @@ pub struct SpringPlate {
     pairs: Vec<Vec<usize>>,
     /// "fine" or "coarse".
     pub kind: &'static str,
+    /// The fine plate's reduced index of each of the model's equations (None where fixed);
+    /// None for a coarse plate, whose equations are not the model's.
+    equations: Option<Vec<Option<usize>>>,
 }
 
 /// Data position of entry (i, j) of a CSC matrix with sorted row indices.
@@ -80,7 +83,9 @@ impl SpringPlate {
             .collect();
         let fixed = &ops.fixed;
         let order = crate::mesh::equation_order(&ops.mesh, &ops.dofs, |e| !fixed.contains(&e));
-        Self::finish(k, spread, &order, "fine")
+        let mut plate = Self::finish(k, spread, &order, "fine")?;
+        plate.equations = Some(map);
+        Ok(plate)
     }
 
     fn coarse(ops: &Operators) -> Result<Self> {
@@ -206,6 +211,7 @@ impl SpringPlate {
             spread,
             pairs,
             kind,
+            equations: None,
         })
     }
 
@@ -224,6 +230,21 @@ impl SpringPlate {
         }
         self.chol
             .factor(&k, "iterative preconditioner (plate on springs)")
+    }
+
+    /// F⁻¹ p for a load `p` on the model's equations, F the factor of [`Self::factor`]: the
+    /// fine plate on the springs 1/D with its rigid modes fixed (zero on the fixed equations).
+    /// None on a coarse plate.
+    pub fn plate_solve(&self, factor: &SparseFactor, p: &[f64]) -> Option<Vec<f64>> {
+        let map = self.equations.as_ref()?;
+        let mut red = vec![0.0; self.k.rows()];
+        for (e, m) in map.iter().enumerate() {
+            if let Some(r) = m {
+                red[*r] = p[e];
+            }
+        }
+        sparse_solve(factor, &mut red);
+        Some(map.iter().map(|m| m.map_or(0.0, |r| red[r])).collect())
     }
 
     /// M⁻¹ r = D⁻¹r − D⁻¹Qᵀ F⁻¹ Q D⁻¹ r with F the factor of [`Self::factor`].

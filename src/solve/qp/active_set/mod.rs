@@ -38,10 +38,18 @@
 //! free points (exactly a penalty step's) and a CG iteration or two for the equilibrium. On
 //! the half-space (dense or FFT) it is the iterative route's coarse plate on λ·diag(T).
 //!
+//! **A slab fully in contact** on Winkler soil needs no iteration and no plate factor: the
+//! bonded answer of the plate on springs (the bonded preconditioner's factor, from which σ, α
+//! and u follow by Woodbury identities, [`crate::solve::iterative::bonded_from_springs`]) is
+//! tried first; where it has no tension and closes every gap to the tolerance it is the
+//! solution ([`full_contact`]), at the penalty's cost of one factorisation. Otherwise its
+//! factor is the first face's preconditioner, and the plate alone is factored for S.
+//!
 //! **The projection** onto {σ ≥ 0, Cᵀσ = b} ([`project`]) is σ = max(0, y + Cλ) with λ (one value per rigid
 //! mode) the maximiser of the concave dual −½|max(0, y + Cλ)|² + bᵀλ; Newton on λ with a line
 //! search, m unknowns (three for a plate of one piece, the zero-energy modes of a jointed one).
 
+mod full_contact;
 mod point;
 mod primal_dual;
 mod run;
@@ -97,6 +105,11 @@ pub fn solve_with(
         },
         Compliance::Dense(_) | Compliance::Toeplitz(_) => s.cg,
     };
+    // A slab fully in contact on Winkler soil: the bonded answer from the plate on springs has
+    // no tension, so it is the solution — one factorisation, as the penalty's first step.
+    if let Some(solution) = full_contact::solve(ops, settings, cg, t0, monitor)? {
+        return Ok(solution);
+    }
     let mut sys = IterativeSchur::with_any_compliance(ops, cg)?;
     let t_setup = t0.elapsed().as_secs_f64();
     let mut run = Run::new(s, *monitor);
@@ -116,7 +129,7 @@ pub fn solve_with(
         factorisations: sys.factorisations,
         safeguard_steps: run.safeguard_steps,
         projected_steps: run.projected_steps,
-        objective: point.f,
+        objective: Some(point.f),
         kkt: residuals,
     };
     let total = t0.elapsed().as_secs_f64();

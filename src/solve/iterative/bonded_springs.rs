@@ -1,0 +1,119 @@
+//! The bonded problem on Winkler soil from the plate-on-springs factor alone.
+//!
+//! With T diagonal, lumped coupling B and nodal constraints, the bonded preconditioner
+//! M = T + BᵀK⁻B is the Schur matrix S itself, and its factor F = K_r + B T⁻¹ Bᵀ (the plate with
+//! its rigid modes fixed, on the springs T⁻¹) gives everything the bonded face needs without
+//! K_r's own factor:
+//!
+//! * M⁻¹h = T⁻¹BᵀF⁻¹f − M⁻¹g₀, since M⁻¹BᵀK_r⁻¹ = T⁻¹BᵀF⁻¹ (Woodbury, then F − BT⁻¹Bᵀ = K_r);
+//! * σ = M⁻¹(h + Cα) with α from the equilibrium Cᵀσ = Rᵀf (the small system CᵀM⁻¹C);
+//! * u = v + Rα with F v = f + B T⁻¹(g₀ − Cα), from K_r v = f − Bσ and the closed gap
+//!   Tσ = Bᵀu − g₀.
+//!
+//! Where every σ ≥ 0 the bonded answer satisfies the unilateral conditions (σ ≥ 0, g = 0), so
+//! it is the QP's solution: a slab fully in contact costs one factorisation, as the penalty's
+//! first step does ([`crate::solve::qp::active_set`]).
+
+use super::schur::SpringSetup;
+use crate::error::Result;
+use crate::foundation::Compliance;
+use crate::method::CgSettings;
+use crate::model::ConstraintPoints;
+use crate::operators::Operators;
+use crate::solve::linalg::dot;
+
+/// The bonded answer of [`bonded_from_springs`].
+#[derive(Debug, Clone)]
+pub struct BondedBySprings {
+    /// Nodal pressures, all ≥ 0.
+    pub sigma: Vec<f64>,
+    /// Plate dofs u = K⁻(f − Bσ) + Rα.
+    pub u: Vec<f64>,
+    /// Rigid-body amplitudes.
+    pub alpha: Vec<f64>,
+    /// Whether the plate on springs was factored by this call (else it came from the
+    /// operators' cache).
+    pub factored: bool,
+}
+
+/// The bonded solution from the fine plate on the springs T (`settings` must ask for them:
+/// spring scale 1, no coarse plate) when T is diagonal and the constraints nodal, and its
+/// pressures are all ≥ 0; None otherwise (a point in tension, or another soil or setting). The
+/// plate on springs and its bonded factor are the operators' cached ones, which the
+/// active-set iteration starts from anyway.
+pub fn bonded_from_springs(
+    ops: &Operators,
+    settings: CgSettings,
+) -> Result<Option<BondedBySprings>> {
+    if !matches!(ops.t.as_ref(), Compliance::Diagonal(_))
+        || ops.constraints.kind != ConstraintPoints::Nodal
+        || settings.coarse_plate
+        || settings.spring_scale != 1.0
+    {
+        return Ok(None);
+    }
+    let c: Vec<Vec<f64>> = ops.rigid.iter().map(|r| ops.bt_times(r)).collect();
+    let rf: Vec<f64> = ops.rigid.iter().map(|r| dot(r, &ops.f)).collect();
+    let t_diag = ops.t.diagonal();
+    let (setup, factored) = SpringSetup::get(ops, settings, &t_diag, &c)?;
+    let (springs, pre) = (&setup.springs, &setup.bonded);
+    // σ₀ = M⁻¹h = T⁻¹BᵀF⁻¹f − M⁻¹g₀.
+    let Some(v_f) = springs.plate_solve(&pre.factor, &ops.f) else {
+        return Ok(None);
+    };
+    let mut sigma: Vec<f64> = ops
+        .bt_times(&v_f)
+        .iter()
+        .zip(&pre.inv_d)
+        .map(|(a, d)| a * d)
+        .collect();
+    if ops.gap0.iter().any(|&g| g != 0.0) {
+        let m_g0 = springs.solve(&pre.inv_d, &pre.factor, &ops.gap0);
+        for (s, m) in sigma.iter_mut().zip(&m_g0) {
+            *s -= m;
+        }
+    }
+    // Onto the equilibrium along M⁻¹C: σ = M⁻¹(h + Cα).
+    let defect: Vec<f64> = c
+        .iter()
+        .zip(&rf)
+        .map(|(col, b)| b - dot(col, &sigma))
+        .collect();
+    let alpha = pre.small.solve(&defect);
+    for (a, &al) in alpha.iter().enumerate() {
+        for (x, m) in sigma.iter_mut().zip(&pre.minv_c[a]) {
+            *x += al * m;
+        }
+    }
+    // (NaN fails too.)
+    if !sigma.iter().all(|&s| s >= 0.0) {
+        return Ok(None);
+    }
+    // u = v + Rα, F v = f + B T⁻¹(g₀ − Cα).
+    let y: Vec<f64> = (0..sigma.len())
+        .map(|j| {
+            let ca: f64 = c.iter().zip(&alpha).map(|(col, a)| col[j] * a).sum();
+            (ops.gap0[j] - ca) * pre.inv_d[j]
+        })
+        .collect();
+    let load: Vec<f64> = ops
+        .f
+        .iter()
+        .zip(ops.b_times(&y))
+        .map(|(f, by)| f + by)
+        .collect();
+    let Some(mut u) = springs.plate_solve(&pre.factor, &load) else {
+        return Ok(None);
+    };
+    for (r, &a) in ops.rigid.iter().zip(&alpha) {
+        for (x, ri) in u.iter_mut().zip(r) {
+            *x += a * ri;
+        }
+    }
+    Ok(Some(BondedBySprings {
+        sigma,
+        u,
+        alpha,
+        factored,
+    }))
+}
