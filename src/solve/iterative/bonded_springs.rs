@@ -57,20 +57,44 @@ pub fn bonded_from_springs(
     let t_diag = ops.t.diagonal();
     let (setup, factored) = SpringSetup::get(ops, settings, &t_diag, &c)?;
     let (springs, pre) = (&setup.springs, &setup.bonded);
-    // σ₀ = M⁻¹h = T⁻¹BᵀF⁻¹f − M⁻¹g₀.
-    let Some(v_f) = springs.plate_solve(&pre.factor, &ops.f) else {
+    // F⁻¹f and (with voids) F⁻¹BT⁻¹g₀ in one block solve; F⁻¹BT⁻¹C_a per rigid mode came
+    // with the preconditioner (the plate's part of M⁻¹C).
+    let voids = ops.gap0.iter().any(|&g| g != 0.0);
+    let mut loads = vec![ops.f.clone()];
+    if voids {
+        let y: Vec<f64> = ops
+            .gap0
+            .iter()
+            .zip(&pre.inv_d)
+            .map(|(a, d)| a * d)
+            .collect();
+        loads.push(ops.b_times(&y));
+    }
+    let Some(x) = springs.plate_solves(&pre.factor, &loads) else {
         return Ok(None);
     };
+    let Some(x_c) = (0..c.len())
+        .map(|a| springs.to_model(&pre.plate_c, a))
+        .collect::<Option<Vec<_>>>()
+    else {
+        return Ok(None);
+    };
+    let v_g = x.get(1);
+    // σ₀ = M⁻¹h = T⁻¹BᵀF⁻¹f − M⁻¹g₀.
     let mut sigma: Vec<f64> = ops
-        .bt_times(&v_f)
+        .bt_times(&x[0])
         .iter()
         .zip(&pre.inv_d)
         .map(|(a, d)| a * d)
         .collect();
-    if ops.gap0.iter().any(|&g| g != 0.0) {
-        let m_g0 = springs.solve(&pre.inv_d, &pre.factor, &ops.gap0);
-        for (s, m) in sigma.iter_mut().zip(&m_g0) {
-            *s -= m;
+    if let Some(vg) = v_g {
+        // M⁻¹g₀ = T⁻¹g₀ − T⁻¹BᵀF⁻¹BT⁻¹g₀ (Woodbury).
+        for ((s, (g, b)), d) in sigma
+            .iter_mut()
+            .zip(ops.gap0.iter().zip(ops.bt_times(vg)))
+            .zip(&pre.inv_d)
+        {
+            *s -= d * (g - b);
         }
     }
     // Onto the equilibrium along M⁻¹C: σ = M⁻¹(h + Cα).
@@ -90,21 +114,17 @@ pub fn bonded_from_springs(
         return Ok(None);
     }
     // u = v + Rα, F v = f + B T⁻¹(g₀ − Cα).
-    let y: Vec<f64> = (0..sigma.len())
-        .map(|j| {
-            let ca: f64 = c.iter().zip(&alpha).map(|(col, a)| col[j] * a).sum();
-            (ops.gap0[j] - ca) * pre.inv_d[j]
-        })
-        .collect();
-    let load: Vec<f64> = ops
-        .f
-        .iter()
-        .zip(ops.b_times(&y))
-        .map(|(f, by)| f + by)
-        .collect();
-    let Some(mut u) = springs.plate_solve(&pre.factor, &load) else {
-        return Ok(None);
-    };
+    let mut u = x[0].clone();
+    for (xa, &a) in x_c.iter().zip(&alpha) {
+        for (ui, xi) in u.iter_mut().zip(xa) {
+            *ui -= a * xi;
+        }
+    }
+    if let Some(vg) = v_g {
+        for (ui, xi) in u.iter_mut().zip(vg) {
+            *ui += xi;
+        }
+    }
     for (r, &a) in ops.rigid.iter().zip(&alpha) {
         for (x, ri) in u.iter_mut().zip(r) {
             *x += a * ri;

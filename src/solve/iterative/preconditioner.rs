@@ -17,6 +17,8 @@ pub(super) struct Preconditioner {
     pub(super) c: Vec<Vec<f64>>,
     /// M⁻¹ C, one column per rigid mode.
     pub(super) minv_c: Vec<Vec<f64>>,
+    /// F⁻¹QD⁻¹C on the plate's reduced equations (column-major), the plate's part of M⁻¹C.
+    pub(super) plate_c: Vec<f64>,
     /// Pseudo-inverse of Cᵀ M⁻¹ C.
     pub(super) small: SmallSpd,
     /// Pseudo-inverse of Cᵀ C.
@@ -64,10 +66,7 @@ impl Preconditioner {
                     .collect()
             })
             .collect();
-        let minv_c: Vec<Vec<f64>> = c
-            .iter()
-            .map(|col| springs.solve(&inv_d, &factor, col))
-            .collect();
+        let (minv_c, plate_c) = springs.solve_many(&inv_d, &factor, &c);
         let m = c.len();
         let small = SmallSpd::new(m, |a, b| dot(&c[a], &minv_c[b]));
         let ctc = SmallSpd::new(m, |a, b| dot(&c[a], &c[b]));
@@ -76,6 +75,7 @@ impl Preconditioner {
             factor,
             c,
             minv_c,
+            plate_c,
             small,
             ctc,
             held: held_key(held),

@@ -22,6 +22,8 @@
 use crate::error::{Error, Result};
 use crate::mesh::{Dof, DofMap, Mesh};
 use crate::operators::Operators;
+use faer::MatMut;
+
 use crate::solve::linalg::{reduce, sparse_solve, SparseCholesky, SparseFactor};
 
 /// A plate on springs, ready to be factored for any spring diagonal D.
@@ -232,19 +234,79 @@ impl SpringPlate {
             .factor(&k, "iterative preconditioner (plate on springs)")
     }
 
-    /// F⁻¹ p for a load `p` on the model's equations, F the factor of [`Self::factor`]: the
-    /// fine plate on the springs 1/D with its rigid modes fixed (zero on the fixed equations).
-    /// None on a coarse plate.
-    pub fn plate_solve(&self, factor: &SparseFactor, p: &[f64]) -> Option<Vec<f64>> {
+    /// F⁻¹ p for each load `p` of `loads` on the model's equations, in one block solve, F the
+    /// factor of [`Self::factor`]: the fine plate on the springs 1/D with its rigid modes fixed
+    /// (zero on the fixed equations). None on a coarse plate.
+    pub fn plate_solves(&self, factor: &SparseFactor, loads: &[Vec<f64>]) -> Option<Vec<Vec<f64>>> {
         let map = self.equations.as_ref()?;
-        let mut red = vec![0.0; self.k.rows()];
-        for (e, m) in map.iter().enumerate() {
-            if let Some(r) = m {
-                red[*r] = p[e];
+        let n = self.k.rows();
+        let mut block = vec![0.0; n * loads.len()];
+        for (col, p) in block.chunks_mut(n.max(1)).zip(loads) {
+            for (e, m) in map.iter().enumerate() {
+                if let Some(r) = m {
+                    col[*r] = p[e];
+                }
             }
         }
-        sparse_solve(factor, &mut red);
-        Some(map.iter().map(|m| m.map_or(0.0, |r| red[r])).collect())
+        factor.solve_in_place(MatMut::from_column_major_slice_mut(
+            &mut block,
+            n,
+            loads.len(),
+        ));
+        Some(
+            block
+                .chunks(n.max(1))
+                .take(loads.len())
+                .map(|col| map.iter().map(|m| m.map_or(0.0, |r| col[r])).collect())
+                .collect(),
+        )
+    }
+
+    /// M⁻¹ r for each r of `rs` ([`Self::solve`]), in one block solve; also the plate's part
+    /// F⁻¹QD⁻¹r of each, on the reduced equations (column-major, one column per r).
+    pub fn solve_many(
+        &self,
+        inv_d: &[f64],
+        factor: &SparseFactor,
+        rs: &[Vec<f64>],
+    ) -> (Vec<Vec<f64>>, Vec<f64>) {
+        let n = self.k.rows();
+        let zs: Vec<Vec<f64>> = rs
+            .iter()
+            .map(|r| r.iter().zip(inv_d).map(|(a, b)| a * b).collect())
+            .collect();
+        let mut block = vec![0.0; n * rs.len()];
+        for (col, z) in block.chunks_mut(n.max(1)).zip(&zs) {
+            for (j, s) in self.spread.iter().enumerate() {
+                for &(e, w) in s {
+                    col[e] += w * z[j];
+                }
+            }
+        }
+        factor.solve_in_place(MatMut::from_column_major_slice_mut(&mut block, n, rs.len()));
+        let out = zs
+            .iter()
+            .zip(block.chunks(n.max(1)))
+            .map(|(z, red)| {
+                z.iter()
+                    .enumerate()
+                    .map(|(j, &zj)| {
+                        let back: f64 = self.spread[j].iter().map(|&(e, w)| w * red[e]).sum();
+                        zj - inv_d[j] * back
+                    })
+                    .collect()
+            })
+            .collect();
+        (out, block)
+    }
+
+    /// Column `k` of a reduced block of [`Self::solve_many`] on the model's equations (zero on
+    /// the fixed ones); None on a coarse plate or past the block's end.
+    pub fn to_model(&self, block: &[f64], k: usize) -> Option<Vec<f64>> {
+        let map = self.equations.as_ref()?;
+        let n = self.k.rows();
+        let col = block.get(k * n..(k + 1) * n)?;
+        Some(map.iter().map(|m| m.map_or(0.0, |r| col[r])).collect())
     }
 
     /// M⁻¹ r = D⁻¹r − D⁻¹Qᵀ F⁻¹ Q D⁻¹ r with F the factor of [`Self::factor`].
