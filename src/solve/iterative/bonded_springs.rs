@@ -38,19 +38,20 @@ pub struct BondedBySprings {
 
 /// The bonded solution from the fine plate on the springs T (`settings` must ask for them:
 /// spring scale 1, no coarse plate) when T is diagonal and the constraints nodal, and its
-/// pressures are all ≥ 0; None otherwise (a point in tension, or another soil or setting). The
-/// plate on springs and its bonded factor are the operators' cached ones, which the
+/// pressures are all ≥ 0; otherwise `Err` with whether the plate on springs was factored by
+/// this call (a point in tension; false for another soil or setting, where nothing is done).
+/// The plate on springs and its bonded factor are the operators' cached ones, which the
 /// active-set iteration starts from anyway.
 pub fn bonded_from_springs(
     ops: &Operators,
     settings: CgSettings,
-) -> Result<Option<BondedBySprings>> {
+) -> Result<std::result::Result<BondedBySprings, bool>> {
     if !matches!(ops.t.as_ref(), Compliance::Diagonal(_))
         || ops.constraints.kind != ConstraintPoints::Nodal
         || settings.coarse_plate
         || settings.spring_scale != 1.0
     {
-        return Ok(None);
+        return Ok(Err(false));
     }
     let c: Vec<Vec<f64>> = ops.rigid.iter().map(|r| ops.bt_times(r)).collect();
     let rf: Vec<f64> = ops.rigid.iter().map(|r| dot(r, &ops.f)).collect();
@@ -71,13 +72,13 @@ pub fn bonded_from_springs(
         loads.push(ops.b_times(&y));
     }
     let Some(x) = springs.plate_solves(&pre.factor, &loads) else {
-        return Ok(None);
+        return Ok(Err(factored));
     };
     let Some(x_c) = (0..c.len())
         .map(|a| springs.to_model(&pre.plate_c, a))
         .collect::<Option<Vec<_>>>()
     else {
-        return Ok(None);
+        return Ok(Err(factored));
     };
     let v_g = x.get(1);
     // σ₀ = M⁻¹h = T⁻¹BᵀF⁻¹f − M⁻¹g₀.
@@ -111,7 +112,7 @@ pub fn bonded_from_springs(
     }
     // (NaN fails too.)
     if !sigma.iter().all(|&s| s >= 0.0) {
-        return Ok(None);
+        return Ok(Err(factored));
     }
     // u = v + Rα, F v = f + B T⁻¹(g₀ − Cα).
     let mut u = x[0].clone();
@@ -130,7 +131,7 @@ pub fn bonded_from_springs(
             *x += a * ri;
         }
     }
-    Ok(Some(BondedBySprings {
+    Ok(Ok(BondedBySprings {
         sigma,
         u,
         alpha,

@@ -17,19 +17,29 @@ use crate::solve::iterative::bonded_from_springs;
 use crate::solve::linalg::{dot, finite};
 use crate::solve::solution::{Iteration, Solution, SolveInfo, Status, Timings};
 
+/// What trying the bonded answer gave.
+pub(super) enum Tried {
+    /// The QP's solution.
+    Solved(Box<Solution>),
+    /// Not a solution (a point in tension, a gap the solve did not close to the tolerance) or
+    /// not tried (another soil): the active-set iteration follows; `factored` says whether the
+    /// plate on springs was factored for the try (it is the iteration's first preconditioner).
+    NotInContact { factored: bool },
+}
+
 /// The QP's solution when the bonded answer from the plate on springs is one (see the module
-/// notes), with the KKT residuals measured on it; None when it is not (a point in tension, a
-/// gap the solve did not close to the tolerance, another soil), for the active-set iteration.
+/// notes), with the KKT residuals measured on it.
 pub(super) fn solve(
     ops: &Operators,
     settings: &QpSettings,
     cg: CgSettings,
     t0: Instant,
     monitor: &Monitor<'_>,
-) -> Result<Option<Solution>> {
+) -> Result<Tried> {
     monitor.check("the matrix-free QP")?;
-    let Some(b) = bonded_from_springs(ops, cg)? else {
-        return Ok(None);
+    let b = match bonded_from_springs(ops, cg)? {
+        Ok(b) => b,
+        Err(factored) => return Ok(Tried::NotInContact { factored }),
     };
     finite(&b.u, "matrix-free QP")?;
     let t_setup = t0.elapsed().as_secs_f64();
@@ -39,7 +49,9 @@ pub(super) fn solve(
     // point: all are in contact.
     let tol = settings.active_set.tolerance;
     if !(kkt.natural <= tol && kkt.stationarity <= tol && kkt.equilibrium <= tol) {
-        return Ok(None);
+        return Ok(Tried::NotInContact {
+            factored: b.factored,
+        });
     }
     let min_pressure = b.sigma.iter().cloned().fold(f64::INFINITY, f64::min);
     let history = vec![Iteration {
@@ -67,7 +79,7 @@ pub(super) fn solve(
         kkt,
     };
     let total = t0.elapsed().as_secs_f64();
-    Ok(Some(Solution {
+    Ok(Tried::Solved(Box::new(Solution {
         method: Method::Qp(QpSettings {
             solver: QpSolver::ActiveSet,
             ..settings.clone()
@@ -93,7 +105,7 @@ pub(super) fn solve(
             ],
             ..SolveInfo::default()
         },
-    }))
+    })))
 }
 
 /// The KKT residuals of a bonded answer: as the iteration's ([`super::point`]), with the gap

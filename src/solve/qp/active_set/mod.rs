@@ -107,9 +107,18 @@ pub fn solve_with(
     };
     // A slab fully in contact on Winkler soil: the bonded answer from the plate on springs has
     // no tension, so it is the solution — one factorisation, as the penalty's first step.
-    if let Some(solution) = full_contact::solve(ops, settings, cg, t0, monitor)? {
-        return Ok(solution);
-    }
+    // Otherwise its factor (counted here when it made it) is the first face's preconditioner.
+    // A start with lifted points (a coarser grid's answer, a neighbour's) says the slab lifts:
+    // then the plate's own factor is made beside the bonded preconditioner, one on each core.
+    let lifts = start.is_some_and(|s| s.len() == ops.n_sigma() && s.iter().any(|&x| x <= 0.0));
+    let tried = if lifts {
+        0
+    } else {
+        match full_contact::solve(ops, settings, cg, t0, monitor)? {
+            full_contact::Tried::Solved(solution) => return Ok(*solution),
+            full_contact::Tried::NotInContact { factored } => usize::from(factored),
+        }
+    };
     let mut sys = IterativeSchur::with_any_compliance(ops, cg)?;
     let t_setup = t0.elapsed().as_secs_f64();
     let mut run = Run::new(s, *monitor);
@@ -126,7 +135,7 @@ pub fn solve_with(
         iterations: run.iterations,
         cg_iterations: run.cg_total,
         products: sys.products,
-        factorisations: sys.factorisations,
+        factorisations: sys.factorisations + tried,
         safeguard_steps: run.safeguard_steps,
         projected_steps: run.projected_steps,
         objective: Some(point.f),
