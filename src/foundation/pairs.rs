@@ -146,3 +146,23 @@ pub fn dense_matrix(mesh: &Mesh, c: f64, kernel: &Kernel) -> faer::Mat<f64> {
     }
     t
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The estimate is the size of the matrix it estimates: n_nodes² doubles, on a whole plate
+    /// and on a quarter model (whose nodes are the model's, mirror images folded in).
+    #[test]
+    fn dense_bytes_is_the_size_of_the_dense_matrix() {
+        for (sym_x, sym_y) in [(false, false), (true, true)] {
+            let mesh = Mesh::new(2.0, 1.5, [6, 4], sym_x, sym_y);
+            let t = dense_matrix(&mesh, 1.0, &Kernel::Boussinesq);
+            assert_eq!(t.nrows(), mesh.n_nodes());
+            assert_eq!(
+                dense_bytes(&mesh),
+                t.nrows() * t.ncols() * std::mem::size_of::<f64>()
+            );
+        }
+    }
+}
