@@ -283,3 +283,19 @@ fn bundled_examples_are_in_equilibrium_when_bonded() {
         );
     }
 }
+
+/// The bonded Winkler solve reports its phases (summary.json's `method_time_s`): the symbolic
+/// analysis and the factorisation, each a part of its total.
+#[test]
+fn bonded_winkler_reports_its_phases() {
+    let text = liftoff::examples::scene("paper-winkler").expect("bundled");
+    let p = liftoff::Problem::from_toml(text).expect("scene");
+    let ops = liftoff::Operators::assemble(&p.model);
+    let s = liftoff::solve::solve(&ops, &liftoff::Method::Bonded).expect("bonded");
+    let t = s.info.timings;
+    let (a, f) = (
+        t.analyse.expect("analysis time"),
+        t.factor.expect("factorisation time"),
+    );
+    assert!(a >= 0.0 && f >= 0.0 && a + f <= t.total, "{t:?}");
+}
