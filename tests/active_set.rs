@@ -238,10 +238,11 @@ fn equals_clarabel_on_winkler_scenes() {
     agree("footing", &ops, &clarabel, &active);
 }
 
-#[test]
-fn equals_clarabel_with_a_void() {
-    // A 4 mm washout under one corner of a slab on grade (the soil surface sits lower there).
-    let text = r#"
+/// A 6 m × 4 m slab on grade (H = 0.2 m, Winkler k = 3e7 N/m³) under 5 kPa and a point load
+/// (x, y, force), over a void of `depth` m under [1.5, 3] × [0.5, 2] m.
+fn slab_with_void((x, y, force): (f64, f64, f64), depth: f64) -> String {
+    format!(
+        r#"
 [plate]
 length = 6.0
 width = 4.0
@@ -256,17 +257,24 @@ kind = "uniform"
 pressure = 5.0e3
 [[load]]
 kind = "point"
-x = 2.0
-y = 1.0
-force = 1.0e5
+x = {x}
+y = {y}
+force = {force}
 [[void]]
 x = [1.5, 3.0]
 y = [0.5, 2.0]
-depth = 0.004
+depth = {depth}
 [mesh]
 elements = [30, 20]
-"#;
-    let p = Problem::from_toml(text).expect("void scene");
+"#
+    )
+}
+
+#[test]
+fn equals_clarabel_with_a_void() {
+    // A 4 mm washout under one corner of a slab on grade (the soil surface sits lower there).
+    let text = slab_with_void((2.0, 1.0, 1.0e5), 0.004);
+    let p = Problem::from_toml(&text).expect("void scene");
     let ops = Operators::assemble(&p.model);
     assert!(
         ops.gap0.iter().any(|&g| g > 0.0),
@@ -593,38 +601,17 @@ fn a_second_solve_on_the_same_operators_reuses_the_plate_factor() {
 fn a_slab_fully_in_contact_costs_one_factorisation() {
     let stiff = include_str!("../benches/scenes/stiff-winkler.toml")
         .replace("elements = [200, 200]", "elements = [24, 24]");
-    let void = r#"
-[plate]
-length = 6.0
-width = 4.0
-thickness = 0.2
-youngs_modulus = 30e9
-poissons_ratio = 0.2
-[foundation]
-model = "winkler"
-modulus = 3e7
-[[load]]
-kind = "uniform"
-pressure = 5.0e3
-[[load]]
-kind = "point"
-x = 1.0
-y = 0.5
-force = 2.0e4
-[[void]]
-x = [1.5, 3.0]
-y = [0.5, 2.0]
-depth = 1.0e-5
-[mesh]
-elements = [30, 20]
-"#;
+    let void = slab_with_void((1.0, 0.5, 2.0e4), 1.0e-5);
     let clarabel = Method::Qp(QpSettings {
         solver: QpSolver::Clarabel,
         form: QpForm::Schur,
         ..QpSettings::default()
     });
     let active = qp(QpSolver::ActiveSet);
-    for (what, text) in [("stiff slab", stiff.as_str()), ("closed void", void)] {
+    for (what, text) in [
+        ("stiff slab", stiff.as_str()),
+        ("closed void", void.as_str()),
+    ] {
         let p = Problem::from_toml(text).unwrap_or_else(|e| panic!("{what}: {e}"));
         let ops = Operators::assemble(&p.model);
         let (_, b) = agree(what, &ops, &clarabel, &active);

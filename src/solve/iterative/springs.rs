@@ -24,7 +24,7 @@ use crate::mesh::{Dof, DofMap, Mesh};
 use crate::operators::Operators;
 use faer::MatMut;
 
-use crate::solve::linalg::{reduce, sparse_solve, SparseCholesky, SparseFactor};
+use crate::solve::linalg::{reduce, SparseCholesky, SparseFactor};
 
 /// A plate on springs, ready to be factored for any spring diagonal D.
 pub struct SpringPlate {
@@ -311,21 +311,8 @@ impl SpringPlate {
 
     /// M⁻¹ r = D⁻¹r − D⁻¹Qᵀ F⁻¹ Q D⁻¹ r with F the factor of [`Self::factor`].
     pub fn solve(&self, inv_d: &[f64], factor: &SparseFactor, r: &[f64]) -> Vec<f64> {
-        let z: Vec<f64> = r.iter().zip(inv_d).map(|(a, b)| a * b).collect();
-        let mut red = vec![0.0; self.k.rows()];
-        for (j, s) in self.spread.iter().enumerate() {
-            for &(e, w) in s {
-                red[e] += w * z[j];
-            }
-        }
-        sparse_solve(factor, &mut red);
-        z.iter()
-            .enumerate()
-            .map(|(j, &zj)| {
-                let back: f64 = self.spread[j].iter().map(|&(e, w)| w * red[e]).sum();
-                zj - inv_d[j] * back
-            })
-            .collect()
+        let (mut out, _) = self.solve_many(inv_d, factor, std::slice::from_ref(&r.to_vec()));
+        out.pop().unwrap_or_default()
     }
 }
 

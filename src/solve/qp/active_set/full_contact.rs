@@ -117,29 +117,7 @@ fn residuals(ops: &Operators, sigma: &[f64], u: &[f64], gap: &[f64]) -> KktResid
         .max(inf(&ops.bt_times(u)))
         .max(inf(&ops.gap0))
         .max(f64::MIN_POSITIVE);
-    let s_max = sigma
-        .iter()
-        .cloned()
-        .fold(0.0_f64, f64::max)
-        .max(f64::MIN_POSITIVE);
-    let mut k = KktResiduals::default();
-    for (&s, &g) in sigma.iter().zip(gap) {
-        k.natural = k.natural.max((s / s_max).min(g / g_s).abs());
-        if s > 0.0 {
-            k.stationarity = k.stationarity.max(g.abs() / g_s);
-        } else {
-            k.penetration = k.penetration.max(-g / g_s);
-        }
-        k.complementarity = k.complementarity.max((s * g).abs() / (s_max * g_s));
-    }
+    let c: Vec<Vec<f64>> = ops.rigid.iter().map(|r| ops.bt_times(r)).collect();
     let rf: Vec<f64> = ops.rigid.iter().map(|r| dot(r, &ops.f)).collect();
-    let b_max = inf(&rf).max(f64::MIN_POSITIVE);
-    k.equilibrium = ops
-        .rigid
-        .iter()
-        .zip(&rf)
-        .map(|(r, b)| (dot(&ops.bt_times(r), sigma) - b).abs())
-        .fold(0.0, f64::max)
-        / b_max;
-    k
+    super::point::residuals(sigma, gap, g_s, &c, &rf)
 }

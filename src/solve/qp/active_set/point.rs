@@ -213,15 +213,25 @@ pub(super) fn gap_scale(sys: &IterativeSchur, p: &Point, alpha: &[f64]) -> f64 {
 
 /// The KKT residuals at `p` with reduced gradient `g` and multiplier `alpha`.
 pub(super) fn kkt(sys: &IterativeSchur, p: &Point, g: &[f64], alpha: &[f64]) -> KktResiduals {
-    let s_max = p
-        .sigma
+    residuals(&p.sigma, g, gap_scale(sys, p, alpha), &sys.c, &sys.rf)
+}
+
+/// The KKT residuals of pressures `sigma` with gaps `g` of scale `g_s`, and the rigid-body
+/// equilibrium Cᵀσ = Rᵀf (`c`, `rf`), each relative to its scale.
+pub(super) fn residuals(
+    sigma: &[f64],
+    g: &[f64],
+    g_s: f64,
+    c: &[Vec<f64>],
+    rf: &[f64],
+) -> KktResiduals {
+    let s_max = sigma
         .iter()
         .cloned()
         .fold(0.0_f64, f64::max)
         .max(f64::MIN_POSITIVE);
-    let g_s = gap_scale(sys, p, alpha);
     let mut k = KktResiduals::default();
-    for (&s, &gi) in p.sigma.iter().zip(g) {
+    for (&s, &gi) in sigma.iter().zip(g) {
         k.natural = k.natural.max((s / s_max).min(gi / g_s).abs());
         if s > 0.0 {
             k.stationarity = k.stationarity.max(gi.abs() / g_s);
@@ -230,12 +240,11 @@ pub(super) fn kkt(sys: &IterativeSchur, p: &Point, g: &[f64], alpha: &[f64]) -> 
         }
         k.complementarity = k.complementarity.max((s * gi).abs() / (s_max * g_s));
     }
-    let b_max = sys.rf.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
-    k.equilibrium = sys
-        .c
+    let b_max = rf.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
+    k.equilibrium = c
         .iter()
-        .zip(&sys.rf)
-        .map(|(c, b)| (dot(c, &p.sigma) - b).abs())
+        .zip(rf)
+        .map(|(c, b)| (dot(c, sigma) - b).abs())
         .fold(0.0, f64::max)
         / b_max.max(f64::MIN_POSITIVE);
     k
