@@ -80,10 +80,12 @@ pub fn bonded_from_springs(
     else {
         return Ok(Err(factored));
     };
-    let v_g = x.get(1);
+    let (Some(v_f), v_g) = (x.first(), x.get(1)) else {
+        return Ok(Err(factored));
+    };
     // σ₀ = M⁻¹h = T⁻¹BᵀF⁻¹f − M⁻¹g₀.
     let mut sigma: Vec<f64> = ops
-        .bt_times(&x[0])
+        .bt_times(v_f)
         .iter()
         .zip(&pre.inv_d)
         .map(|(a, d)| a * d)
@@ -115,7 +117,7 @@ pub fn bonded_from_springs(
         return Ok(Err(factored));
     }
     // u = v + Rα, F v = f + B T⁻¹(g₀ − Cα).
-    let mut u = x[0].clone();
+    let mut u = v_f.clone();
     for (xa, &a) in x_c.iter().zip(&alpha) {
         for (ui, xi) in u.iter_mut().zip(xa) {
             *ui -= a * xi;
