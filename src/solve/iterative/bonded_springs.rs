@@ -31,6 +31,10 @@ pub struct BondedBySprings {
     pub u: Vec<f64>,
     /// Rigid-body amplitudes.
     pub alpha: Vec<f64>,
+    /// The rigid-mode columns C = BᵀR and the loads' Rᵀf of the equilibrium Cᵀσ = Rᵀf.
+    pub c: Vec<Vec<f64>>,
+    /// Rᵀf.
+    pub rf: Vec<f64>,
     /// Whether the plate on springs was factored by this call (else it came from the
     /// operators' cache).
     pub factored: bool,
@@ -137,6 +141,8 @@ pub fn bonded_from_springs(
         sigma,
         u,
         alpha,
+        c,
+        rf,
         factored,
     }))
 }

@@ -253,27 +253,21 @@ impl SpringPlate {
             n,
             loads.len(),
         ));
-        Some(
-            block
-                .chunks(n.max(1))
-                .take(loads.len())
-                .map(|col| map.iter().map(|m| m.map_or(0.0, |r| col[r])).collect())
-                .collect(),
-        )
+        (0..loads.len()).map(|k| self.to_model(&block, k)).collect()
     }
 
     /// M⁻¹ r for each r of `rs` ([`Self::solve`]), in one block solve; also the plate's part
     /// F⁻¹QD⁻¹r of each, on the reduced equations (column-major, one column per r).
-    pub fn solve_many(
+    pub fn solve_many<R: AsRef<[f64]>>(
         &self,
         inv_d: &[f64],
         factor: &SparseFactor,
-        rs: &[Vec<f64>],
+        rs: &[R],
     ) -> (Vec<Vec<f64>>, Vec<f64>) {
         let n = self.k.rows();
         let zs: Vec<Vec<f64>> = rs
             .iter()
-            .map(|r| r.iter().zip(inv_d).map(|(a, b)| a * b).collect())
+            .map(|r| r.as_ref().iter().zip(inv_d).map(|(a, b)| a * b).collect())
             .collect();
         let mut block = vec![0.0; n * rs.len()];
         for (col, z) in block.chunks_mut(n.max(1)).zip(&zs) {
@@ -311,7 +305,7 @@ impl SpringPlate {
 
     /// M⁻¹ r = D⁻¹r − D⁻¹Qᵀ F⁻¹ Q D⁻¹ r with F the factor of [`Self::factor`].
     pub fn solve(&self, inv_d: &[f64], factor: &SparseFactor, r: &[f64]) -> Vec<f64> {
-        let (mut out, _) = self.solve_many(inv_d, factor, std::slice::from_ref(&r.to_vec()));
+        let (mut out, _) = self.solve_many(inv_d, factor, &[r]);
         out.pop().unwrap_or_default()
     }
 }

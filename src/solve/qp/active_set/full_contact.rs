@@ -13,8 +13,8 @@ use crate::monitor::{Monitor, Progress, StepKind};
 use crate::operators::Operators;
 use crate::solve::checks::discrete_gap;
 use crate::solve::diagnostics::{ActiveSetDiagnostics, KktResiduals};
-use crate::solve::iterative::bonded_from_springs;
-use crate::solve::linalg::{dot, finite};
+use crate::solve::iterative::{bonded_from_springs, BondedBySprings};
+use crate::solve::linalg::finite;
 use crate::solve::solution::{Iteration, Solution, SolveInfo, Status, Timings};
 
 /// What trying the bonded answer gave.
@@ -44,7 +44,7 @@ pub(super) fn solve(
     finite(&b.u, "matrix-free QP")?;
     let t_setup = t0.elapsed().as_secs_f64();
     let gap = discrete_gap(ops, &b.u, &b.sigma);
-    let kkt = residuals(ops, &b.sigma, &b.u, &gap);
+    let kkt = residuals(ops, &b, &gap);
     // The iteration's own stopping test (the natural residual), and a closed gap at every
     // point: all are in contact.
     let tol = settings.active_set.tolerance;
@@ -111,13 +111,11 @@ pub(super) fn solve(
 /// The KKT residuals of a bonded answer: as the iteration's ([`super::point`]), with the gap
 /// g = Tσ − Bᵀu + g₀ measured from the displacements and its scale g_s the largest of the
 /// terms it is made of, |Tσ|, |Bᵀu| and |g₀|.
-fn residuals(ops: &Operators, sigma: &[f64], u: &[f64], gap: &[f64]) -> KktResiduals {
+fn residuals(ops: &Operators, b: &BondedBySprings, gap: &[f64]) -> KktResiduals {
     let inf = |v: &[f64]| v.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
-    let g_s = inf(&ops.t.apply(sigma))
-        .max(inf(&ops.bt_times(u)))
+    let g_s = inf(&ops.t.apply(&b.sigma))
+        .max(inf(&ops.bt_times(&b.u)))
         .max(inf(&ops.gap0))
         .max(f64::MIN_POSITIVE);
-    let c: Vec<Vec<f64>> = ops.rigid.iter().map(|r| ops.bt_times(r)).collect();
-    let rf: Vec<f64> = ops.rigid.iter().map(|r| dot(r, &ops.f)).collect();
-    super::point::residuals(sigma, gap, g_s, &c, &rf)
+    super::point::residuals(&b.sigma, gap, g_s, &b.c, &b.rf)
 }
