@@ -80,8 +80,16 @@ fn stage(
     for _ in 0..cap {
         monitor.check("the penalty iteration")?;
         let ts = Instant::now();
-        let (u, sigma, alpha, cg) =
-            backend.solve(ops, rows, &penalised, epsilon, loose, monitor)?;
+        let mut out = backend.solve(ops, rows, &penalised, epsilon, loose, monitor)?;
+        if loose && out.3.is_some_and(|cg| cg.iterations == 0) {
+            // The loose solve found its start (the last answer) already within its tolerance:
+            // it has not seen the new set and would only hand the last set back, for a tight
+            // solve to confirm one step later. Go tight in this step.
+            loose = false;
+            seen = vec![penalised.clone()];
+            out = backend.solve(ops, rows, &penalised, epsilon, loose, monitor)?;
+        }
+        let (u, sigma, alpha, cg) = out;
         *t_solves += ts.elapsed().as_secs_f64();
         finite(&u, "penalty iteration")?;
         finite(&sigma, "penalty iteration")?;
