@@ -230,14 +230,29 @@ fn penalty_bound(eps: f64, gamma: f64, gmax: f64, vmax: f64) -> f64 {
 
 /// Tension left at the lifted points of a penalty solution, recomputed from σ: (|most negative
 /// σ| / peak σ, pulling force / pushing force) at the constraint points.
-fn tension(ops: &Operators, sol: &Solution) -> (f64, f64) {
+fn tension(ops: &Operators, sol: &Solution) -> (f64, f64, f64) {
     let gs = ops.g_times(&sol.sigma);
     let w = &ops.constraints.weights;
     let peak = gs.iter().cloned().fold(0.0_f64, f64::max);
     let most_negative = gs.iter().cloned().fold(0.0_f64, f64::min);
     let pull: f64 = gs.iter().zip(w).map(|(g, w)| (-g).max(0.0) * w).sum();
     let push: f64 = gs.iter().zip(w).map(|(g, w)| g.max(0.0) * w).sum();
-    (-most_negative / peak, pull / push)
+    // The tension's moment about the compression's centroid, over the compressive resultant
+    // times (its radius of gyration + one element), along each direction the model keeps.
+    let m = &ops.mesh;
+    let mut moment = 0.0_f64;
+    for (kept, h, at) in [(!m.sym_x, m.hx, 0), (!m.sym_y, m.hy, 1)] {
+        if !kept {
+            continue;
+        }
+        let c: Vec<f64> = ops.constraints.points.iter().map(|p| if at == 0 { p.0 } else { p.1 }).collect();
+        let f: Vec<f64> = gs.iter().zip(w).map(|(g, w)| g * w).collect();
+        let mean = f.iter().zip(&c).filter(|(f, _)| **f > 0.0).map(|(f, c)| f * c).sum::<f64>() / push;
+        let var = f.iter().zip(&c).filter(|(f, _)| **f > 0.0).map(|(f, c)| f * (c - mean).powi(2)).sum::<f64>() / push;
+        let pulled = f.iter().zip(&c).filter(|(f, _)| **f <= 0.0).map(|(f, c)| f * (c - mean)).sum::<f64>();
+        moment = moment.max(pulled.abs() / (push * (var.sqrt() + h)));
+    }
+    (-most_negative / peak, pull / push, moment)
 }
 
 /// What one scene of `penalty_and_qp_agree` exercised.
@@ -298,13 +313,16 @@ fn penalty_and_qp_agree() {
                     prop_assert!(err <= bound, "{:?}, ε̄ = {eps:e}: ΔV {err:.2e} of max |V| > bound {bound:.2e}", sc.soil);
                     errors.push(err);
                 }
-                Status::PenaltyTooWeak { tension_ratio, tension_share, suggested_penalty } => {
+                Status::PenaltyTooWeak { tension_ratio, tension_share, tension_moment, suggested_penalty } => {
                     bump(&tally.too_weak);
-                    let (ratio, share) = tension(&ops, &p);
-                    prop_assert!(ratio > TENSION_TOLERANCE || share > TENSION_FORCE_TOLERANCE,
-                        "flagged too weak with tension {ratio:.2e} of the peak and {share:.2e} of the load");
-                    prop_assert!((ratio - tension_ratio).abs() <= 1e-9 * ratio && (share - tension_share).abs() <= 1e-9 * share,
-                        "reported tension {tension_ratio:e}, {tension_share:e}; recomputed {ratio:e}, {share:e}");
+                    let (ratio, share, moment) = tension(&ops, &p);
+                    prop_assert!(ratio > TENSION_TOLERANCE || share > TENSION_FORCE_TOLERANCE || moment > TENSION_FORCE_TOLERANCE,
+                        "flagged too weak with tension {ratio:.2e} of the peak, {share:.2e} of the load and a moment of {moment:.2e}");
+                    // The same sums in another order: 1e-9 (and an absolute floor for a moment
+                    // that cancels) is round-off of sums over a few hundred points.
+                    prop_assert!((ratio - tension_ratio).abs() <= 1e-9 * ratio && (share - tension_share).abs() <= 1e-9 * share
+                        && (moment - tension_moment).abs() <= 1e-9 * moment.max(1e-6),
+                        "reported tension {tension_ratio:e}, {tension_share:e}, {tension_moment:e}; recomputed {ratio:e}, {share:e}, {moment:e}");
                     prop_assert!(*suggested_penalty < eps, "suggested ε̄ {suggested_penalty:e} ≥ {eps:e}");
                     let retry = liftoff::solve(&ops, &penalty(*suggested_penalty)).map_err(|e| TestCaseError::fail(e.to_string()))?;
                     prop_assert!(retry.status.converged(), "at the suggested ε̄ = {suggested_penalty:e}: {}", retry.status.describe());

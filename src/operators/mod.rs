@@ -53,6 +53,16 @@ impl std::fmt::Debug for SharedCache {
 }
 
 impl SharedCache {
+    /// The cached value of type `T`, if one was computed.
+    pub fn get<T: Send + Sync + 'static>(&self) -> Option<Arc<T>> {
+        let slots = match self.0.lock() {
+            Ok(g) => g,
+            Err(poisoned) => poisoned.into_inner(),
+        };
+        let key = std::any::TypeId::of::<T>();
+        slots.get(&key).and_then(|v| v.clone().downcast::<T>().ok())
+    }
+
     /// The cached value of type `T`, computing it with `init` the first time (other threads
     /// asking at the same time wait for it). Returns whether it was computed by this call. A
     /// failed `init` stores nothing. `init` must not use the cache itself (one lock guards all

@@ -35,13 +35,18 @@ use crate::operators::Operators;
 pub const TENSION_TOLERANCE: f64 = 1e-4;
 
 /// Largest share of the load that fictitious tension at lifted points may carry in a converged
-/// penalty solution: 0.1 %. On the paper's cases at ε̄ = 1e-5 the share is ~1e-4 (about 10 ε̄);
-/// a plate balanced on one corner node of a Winkler bed needs 3 %.
+/// penalty solution: 0.1 %. On the paper's cases at ε̄ = 1e-5 the share is ~1e-4 (about 10 ε̄).
+/// The same bound holds the shift of the contact's resultant that the tension's moment forces,
+/// relative to the contact's size ([`tension_moment`]).
 pub const TENSION_FORCE_TOLERANCE: f64 = 1e-3;
 
-/// Smallest ε̄ the automatic choice goes down to: below it the penalised system loses the
-/// digits the tension criteria need (the penalty springs are 1e14 times softer than the soil).
-pub const MIN_AUTO_EPSILON: f64 = 1e-14;
+/// Smallest ε̄ the automatic choice goes down to. The penalty springs are then 1e18 times
+/// softer than the soil: the Winkler steps keep their digits because a bed whose rigid modes
+/// the soft springs alone hold is solved with the rigid part split off
+/// ([`super::rigid_split::needs_split`]); a plate balanced on its corner node needs 3e-15 at
+/// 200² and 400² elements (its tension's moment, [`tension_moment`], falls like ε̄ times the
+/// number of elements across), where the plain factorisation lost equilibrium below 1e-11.
+pub const MIN_AUTO_EPSILON: f64 = 1e-18;
 
 /// Most continuation stages of the automatic choice of ε̄.
 pub const MAX_AUTO_STAGES: usize = 8;
@@ -188,19 +193,71 @@ fn tension_check(ops: &Operators, sigma: &[f64], epsilon: f64) -> Status {
     let tension = -gs.iter().cloned().fold(0.0_f64, f64::min);
     let ratio = tension / peak;
     let force_ratio = pull / push;
-    if ratio > TENSION_TOLERANCE || force_ratio > TENSION_FORCE_TOLERANCE {
+    let moment_ratio = tension_moment(ops, &gs);
+    if ratio > TENSION_TOLERANCE
+        || force_ratio > TENSION_FORCE_TOLERANCE
+        || moment_ratio > TENSION_FORCE_TOLERANCE
+    {
         // The tension falls like ε̄: aim a hundred times below the tolerance.
         let shrink = (1e-2 * TENSION_TOLERANCE / ratio)
             .min(1e-2 * TENSION_FORCE_TOLERANCE / force_ratio)
+            .min(1e-2 * TENSION_FORCE_TOLERANCE / moment_ratio)
             .min(0.1);
         Status::PenaltyTooWeak {
             tension_ratio: ratio,
             tension_share: force_ratio,
+            tension_moment: moment_ratio,
             suggested_penalty: epsilon * shrink,
         }
     } else {
         Status::Converged
     }
+}
+
+/// The tension's moment against what the contact can take: along each direction the model
+/// keeps (not reduced by symmetry), the moment of the tension at lifted points about the
+/// centroid of the compression, over the compressive resultant times the compression's radius
+/// of gyration plus one element. It is the shift of the contact's resultant that the tension
+/// forces, relative to the contact's size: on a broad contact a small tension share moves it
+/// little, but a plate balanced on a few nodes (a point load on a corner) must move load to
+/// its neighbours an element away, and a tension share of 1e-3 at the far side, an arm of
+/// ~200 elements, moves a fifth of the load (the pressure under the load 14 % off at 200²).
+/// Gauss-point weights and nodal areas alike: `gs` are the pressures at the constraint points.
+fn tension_moment(ops: &Operators, gs: &[f64]) -> f64 {
+    let w = &ops.constraints.weights;
+    let points = &ops.constraints.points;
+    let mesh = &ops.mesh;
+    let mut worst = 0.0_f64;
+    for (axis, reduced, h) in [(0, mesh.sym_x, mesh.hx), (1, mesh.sym_y, mesh.hy)] {
+        if reduced {
+            // The whole plate's tension has no moment about a symmetry line.
+            continue;
+        }
+        let coord = |p: &(f64, f64)| if axis == 0 { p.0 } else { p.1 };
+        let (mut push, mut first) = (0.0, 0.0);
+        for ((g, w), p) in gs.iter().zip(w).zip(points) {
+            if *g > 0.0 {
+                push += g * w;
+                first += g * w * coord(p);
+            }
+        }
+        if push <= 0.0 {
+            continue;
+        }
+        let centre = first / push;
+        let (mut second, mut moment) = (0.0, 0.0);
+        for ((g, w), p) in gs.iter().zip(w).zip(points) {
+            let arm = coord(p) - centre;
+            if *g > 0.0 {
+                second += g * w * arm * arm;
+            } else {
+                moment += g * w * arm;
+            }
+        }
+        let gyration = (second / push).sqrt();
+        worst = worst.max(moment.abs() / (push * (gyration + h)));
+    }
+    worst
 }
 
 /// Run the penalty iteration on the shared operators. With a fixed ε̄ this is the paper's
@@ -225,14 +282,7 @@ pub fn solve_with(
     monitor: &Monitor<'_>,
 ) -> Result<Solution> {
     let t0 = Instant::now();
-    let mut backend = Backend::new(ops, settings.cg)?;
-    let t_setup = t0.elapsed().as_secs_f64();
-    let rows = constraint_rows(ops);
     let n_c = ops.constraints.g.rows();
-    let mut history = Vec::new();
-    let mut stages = Vec::new();
-    let mut t_solves = 0.0;
-    let mut epsilon = settings.epsilon;
     let mut start = match start {
         Some(sigma) if sigma.len() == ops.n_sigma() => {
             let gs = ops.g_times(sigma);
@@ -241,6 +291,14 @@ pub fn solve_with(
         }
         _ => vec![false; n_c],
     };
+    let lifted = start.iter().filter(|&&p| p).count();
+    let mut backend = Backend::new(ops, settings.cg, lifted)?;
+    let t_setup = t0.elapsed().as_secs_f64();
+    let rows = constraint_rows(ops);
+    let mut history = Vec::new();
+    let mut stages = Vec::new();
+    let mut t_solves = 0.0;
+    let mut epsilon = settings.epsilon;
     let end = loop {
         let from = history.len();
         let end = stage(

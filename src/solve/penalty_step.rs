@@ -19,17 +19,19 @@ use super::iterative::{CgSettings, IterativeSchur};
 use super::linalg::{diagonal_positions, lumped_coupling};
 use super::linalg::{faer_view, sparse_solve, SparseCholesky, SparseFactor};
 use super::low_rank::LowRankSchur;
-use super::rigid_split::{spring_total, RigidSplit, NEAR_RIGID};
+use super::rigid_split::{needs_split, spring_total, RigidSplit, NEAR_RIGID};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
 use crate::model::ConstraintPoints;
 use crate::monitor::Monitor;
 use crate::operators::Operators;
 
-/// The analysed Winkler spring system and its bonded factor (no penalty springs): where every
-/// penalty iteration on an assembly starts.
+/// The analysed Winkler spring system (its symbolic factorisation), once per assembly.
+struct SpringsAnalysis(SparseCholesky);
+
+/// The bonded factor of the Winkler spring system (no penalty springs): where a cold penalty
+/// iteration on an assembly starts.
 struct SpringsStart {
-    chol: SparseCholesky,
     factor: Arc<SparseFactor>,
     springs: Vec<f64>,
 }
@@ -61,7 +63,9 @@ pub(super) enum Backend {
 }
 
 impl Backend {
-    pub(super) fn new(ops: &Operators, cg: CgSettings) -> Result<Self> {
+    /// The backend of `ops`, for an iteration whose first penalised set has `lifted_at_start`
+    /// points.
+    pub(super) fn new(ops: &Operators, cg: CgSettings, lifted_at_start: usize) -> Result<Self> {
         match (ops.t.as_ref(), ops.constraints.kind) {
             (Compliance::Diagonal(t), ConstraintPoints::Nodal) => {
                 let k = (*ops.k).clone();
@@ -87,35 +91,41 @@ impl Backend {
                         split: Some(Box::new(RigidSplit::new(ops)?)),
                     });
                 }
-                // The bonded system of step 1 does not depend on the loads: analysed and
-                // factored once per assembly, shared by every load combination.
-                let (start, _) = ops.cache.get_or_try_init(|| -> Result<SpringsStart> {
+                // The spring system is analysed once per assembly. Its bonded factor (step 1
+                // from a cold start) does not depend on the loads: made once per assembly and
+                // shared by every load combination, and updated by Woodbury where a start lifts
+                // few points. A start that lifts more is factored afresh at its first step: the
+                // bonded factor is then not made for it (though used if already made).
+                let (analysis, _) = ops.cache.get_or_try_init(|| -> Result<SpringsAnalysis> {
                     let order = crate::mesh::equation_order(&ops.mesh, &ops.dofs, |_| true);
-                    let chol = SparseCholesky::analyse_ordered(&k, Some(&order))?;
-                    let springs: Vec<f64> = coupling
-                        .iter()
-                        .zip(t)
-                        .map(|(&(_, b), &c)| b * b / c)
-                        .collect();
-                    let mut bonded = k.clone();
-                    for (j, &(eq, _)) in coupling.iter().enumerate() {
-                        bonded.data_mut()[diag[eq]] += springs[j];
-                    }
-                    let factor = Arc::new(chol.factor(&bonded, "bonded Winkler system")?);
-                    Ok(SpringsStart {
-                        chol,
-                        factor,
-                        springs,
-                    })
+                    Ok(SpringsAnalysis(SparseCholesky::analyse_ordered(
+                        &k,
+                        Some(&order),
+                    )?))
                 })?;
+                let chol = analysis.0.clone();
+                let start = if lifted_at_start <= WOODBURY_MAX_RANK {
+                    let (start, _) = ops.cache.get_or_try_init(|| -> Result<SpringsStart> {
+                        let springs: Vec<f64> = bonded_springs.iter().map(|&(_, s)| s).collect();
+                        let mut bonded = k.clone();
+                        for &(eq, s) in &bonded_springs {
+                            bonded.data_mut()[diag[eq]] += s;
+                        }
+                        let factor = Arc::new(chol.factor(&bonded, "bonded Winkler system")?);
+                        Ok(SpringsStart { factor, springs })
+                    })?;
+                    Some(start)
+                } else {
+                    ops.cache.get::<SpringsStart>()
+                };
                 Ok(Backend::Springs {
                     k,
                     diag,
                     base,
                     coupling,
                     t: t.clone(),
-                    chol: start.chol.clone(),
-                    factored: Some((start.factor.clone(), start.springs.clone())),
+                    chol,
+                    factored: start.map(|s| (s.factor.clone(), s.springs.clone())),
                     split: None,
                 })
             }
@@ -231,7 +241,7 @@ impl Backend {
                     .zip(&springs)
                     .map(|(&(eq, _), &s)| (eq, s))
                     .collect();
-                let u = if spring_total(&on_eqs) < NEAR_RIGID {
+                let u = if needs_split(ops, &on_eqs) {
                     if split.is_none() {
                         *split = Some(Box::new(RigidSplit::new(ops)?));
                     }

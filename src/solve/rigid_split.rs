@@ -32,6 +32,33 @@ pub fn spring_total(springs: &[(usize, f64)]) -> f64 {
     springs.iter().map(|&(_, s)| s.abs()).sum()
 }
 
+/// The springs' stiffness in the plate's softest rigid mode, in the unit system: the smallest
+/// eigenvalue of G_ab = Σ_j s_j r_a r_b over the springs (equation, stiffness), r the rigid
+/// modes at their equations (w = 1, x, y). A uniform bed of total S on the unit square gives
+/// S/3 (the rotations); a bed whose springs are all soft but one (the penalty's lifted points
+/// around a plate balanced on one node) holds its rotations about that node by the soft
+/// springs alone, however stiff the one: K + S then loses its rigid digits as a soft bed does.
+pub fn weakest_mode(ops: &Operators, springs: &[(usize, f64)]) -> f64 {
+    let m = ops.rigid.len();
+    let g = nalgebra::DMatrix::from_fn(m, m, |a, b| {
+        springs
+            .iter()
+            .map(|&(eq, s)| s * ops.rigid[a][eq] * ops.rigid[b][eq])
+            .sum::<f64>()
+    });
+    g.symmetric_eigenvalues()
+        .iter()
+        .cloned()
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// Whether (K + S) u = f needs the split solve: the springs in total ([`NEAR_RIGID`]) or in the
+/// weakest rigid mode ([`weakest_mode`], against a third of it, the rotations' share on a
+/// uniform bed) soft against the plate.
+pub fn needs_split(ops: &Operators, springs: &[(usize, f64)]) -> bool {
+    spring_total(springs) < NEAR_RIGID || weakest_mode(ops, springs) < NEAR_RIGID / 3.0
+}
+
 /// K with the fixed equations removed, analysed once; its numeric factor per set of springs.
 pub struct RigidSplit {
     kr: sprs::CsMat<f64>,

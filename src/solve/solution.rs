@@ -26,6 +26,10 @@ pub enum Status {
         tension_ratio: f64,
         /// Tension force at lifted points / compressive resultant.
         tension_share: f64,
+        /// Moment of that tension about the contact's centroid / (compressive resultant ×
+        /// (the contact's radius of gyration + one element)): how far the tension moves the
+        /// contact's resultant, relative to the contact's size.
+        tension_moment: f64,
         /// A smaller ε̄ to try.
         suggested_penalty: f64,
     },
@@ -66,10 +70,12 @@ impl Status {
             Status::PenaltyTooWeak {
                 tension_ratio,
                 tension_share,
+                tension_moment,
                 suggested_penalty,
             } => format!(
-                "not converged: lifted points still carry tension (peak {tension_ratio:.1e} of the peak pressure, {:.2} % of the load), so ε̄ is too large for this stiffness ratio; ε̄ = {suggested_penalty:.0e} or the QP should converge",
-                100.0 * tension_share
+                "not converged: lifted points still carry tension (peak {tension_ratio:.1e} of the peak pressure, {:.2} % of the load, its moment shifting the contact's resultant by {:.2} % of the contact's size), so ε̄ is too large for this stiffness ratio; ε̄ = {suggested_penalty:.0e} or the QP should converge",
+                100.0 * tension_share,
+                100.0 * tension_moment
             ),
             Status::SolverFailure { detail } => format!("not converged: {detail}"),
         }
