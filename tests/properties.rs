@@ -245,11 +245,33 @@ fn tension(ops: &Operators, sol: &Solution) -> (f64, f64, f64) {
         if !kept {
             continue;
         }
-        let c: Vec<f64> = ops.constraints.points.iter().map(|p| if at == 0 { p.0 } else { p.1 }).collect();
+        let c: Vec<f64> = ops
+            .constraints
+            .points
+            .iter()
+            .map(|p| if at == 0 { p.0 } else { p.1 })
+            .collect();
         let f: Vec<f64> = gs.iter().zip(w).map(|(g, w)| g * w).collect();
-        let mean = f.iter().zip(&c).filter(|(f, _)| **f > 0.0).map(|(f, c)| f * c).sum::<f64>() / push;
-        let var = f.iter().zip(&c).filter(|(f, _)| **f > 0.0).map(|(f, c)| f * (c - mean).powi(2)).sum::<f64>() / push;
-        let pulled = f.iter().zip(&c).filter(|(f, _)| **f <= 0.0).map(|(f, c)| f * (c - mean)).sum::<f64>();
+        let mean = f
+            .iter()
+            .zip(&c)
+            .filter(|(f, _)| **f > 0.0)
+            .map(|(f, c)| f * c)
+            .sum::<f64>()
+            / push;
+        let var = f
+            .iter()
+            .zip(&c)
+            .filter(|(f, _)| **f > 0.0)
+            .map(|(f, c)| f * (c - mean).powi(2))
+            .sum::<f64>()
+            / push;
+        let pulled = f
+            .iter()
+            .zip(&c)
+            .filter(|(f, _)| **f <= 0.0)
+            .map(|(f, c)| f * (c - mean))
+            .sum::<f64>();
         moment = moment.max(pulled.abs() / (push * (var.sqrt() + h)));
     }
     (-most_negative / peak, pull / push, moment)

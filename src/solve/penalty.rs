@@ -283,6 +283,7 @@ pub fn solve_with(
 ) -> Result<Solution> {
     let t0 = Instant::now();
     let n_c = ops.constraints.g.rows();
+    let given = start;
     let mut start = match start {
         Some(sigma) if sigma.len() == ops.n_sigma() => {
             let gs = ops.g_times(sigma);
@@ -293,6 +294,9 @@ pub fn solve_with(
     };
     let lifted = start.iter().filter(|&&p| p).count();
     let mut backend = Backend::new(ops, settings.cg, lifted)?;
+    if let Some(sigma) = given.filter(|s| s.len() == ops.n_sigma()) {
+        backend.warm_start(sigma);
+    }
     let t_setup = t0.elapsed().as_secs_f64();
     let rows = constraint_rows(ops);
     let mut history = Vec::new();

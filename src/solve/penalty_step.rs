@@ -184,6 +184,14 @@ impl Backend {
         }
     }
 
+    /// Start the iterative route's first step from the pressures `sigma` (the other backends
+    /// solve directly and need no start).
+    pub(super) fn warm_start(&mut self, sigma: &[f64]) {
+        if let Backend::Iterative(sys) = self {
+            sys.warm_start(sigma);
+        }
+    }
+
     /// Solve with the penalty compliance of the `penalised` constraint points at ε̄ = `epsilon`.
     pub(super) fn solve(
         &mut self,

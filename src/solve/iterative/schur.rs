@@ -517,6 +517,12 @@ impl IterativeSchur {
         crate::solve::linalg::displacements(ops, &self.kinv, sigma, alpha)
     }
 
+    /// Start the next penalty step's conjugate gradients from `sigma` (a neighbouring solve's
+    /// pressures on the same operators) instead of zero.
+    pub fn warm_start(&mut self, sigma: &[f64]) {
+        self.warm = Some(sigma.to_vec());
+    }
+
     /// Whether the preconditioner is the matrix itself (so a tight solve costs about one CG
     /// iteration more than a loose one).
     pub fn exact(&self) -> bool {
