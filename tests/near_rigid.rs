@@ -19,6 +19,16 @@ fn scene(gamma: f64, s: f64, method: &str) -> String {
     )
 }
 
+/// The solve converged and its reaction balances the load to `tol`.
+fn assert_balanced(a: &liftoff::Analysis, what: &str, tol: f64) {
+    assert!(a.summary.converged, "{what}: {}", a.summary.status);
+    assert!(
+        a.summary.resultant.relative_error < tol,
+        "{what}: reaction misses the load by {:.1e}",
+        a.summary.resultant.relative_error
+    );
+}
+
 /// In full contact (the load inside the kern, e = 0.2 L < L/3) a rigid plate on springs
 /// presses them linearly: σ(s) = 1 + c s in the paper's units, mean 1 and c from the moment of
 /// the load, 4e = c Σ a_j s_j² over the lumped springs (the trapezoidal rule's Σ a_j s_j², which
@@ -32,12 +42,7 @@ fn a_rigid_plate_in_full_contact_presses_the_springs_linearly() {
         for method in ["penalty", "qp"] {
             let a = common::run(&scene(gamma, 0.2, method));
             let what = format!("Γ_w = {gamma:e}, {method}");
-            assert!(a.summary.converged, "{what}: {}", a.summary.status);
-            assert!(
-                a.summary.resultant.relative_error < 1e-12,
-                "{what}: reaction misses the load by {:.1e}",
-                a.summary.resultant.relative_error
-            );
+            assert_balanced(&a, &what, 1e-12);
             let f = &a.report.field;
             // Lumped areas of the 24 × 24 grid on [−1, 1]²: h² at interior nodes, halved on
             // an edge, quartered at a corner.
@@ -147,12 +152,7 @@ fn a_plate_balanced_on_its_corner_node_sinks_under_the_load_alone() {
         let text = common::point_scene("winkler", gamma, 0.002857, 1.0, (1.0, 1.0), [n, n], "");
         let a = common::run(&text);
         let what = format!("{n}²");
-        assert!(a.summary.converged, "{what}: {}", a.summary.status);
-        assert!(
-            a.summary.resultant.relative_error < 1e-9,
-            "{what}: reaction misses the load by {:.1e}",
-            a.summary.resultant.relative_error
-        );
+        assert_balanced(&a, &what, 1e-9);
         let exact = 4.0 * gamma * (n * n) as f64;
         let v = a.summary.V_max;
         assert!(
