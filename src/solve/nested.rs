@@ -53,10 +53,7 @@ pub fn solve_nested(
     let (start, fine) = match solve_nested(&coarse, &coarse_ops, method, &monitor.quiet()) {
         Err(e @ Error::Cancelled(_)) => return Err(e),
         Ok(c) if c.status.converged() => {
-            let start = match method {
-                Method::Penalty(_) => penalty_start(ops, &coarse_ops, &c),
-                _ => ops.mesh.interpolate_from(&coarse_ops.mesh, &c.sigma),
-            };
+            let start = edge_start(ops, &coarse_ops, &c);
             // The penalty continues at the ε̄ the coarse grid ended at (the automatic choice
             // lowers it where a stage leaves tension; the fine grid needs the same).
             let fine = match (method, &c.method) {
@@ -86,12 +83,12 @@ pub fn solve_nested(
     Ok(sol)
 }
 
-/// The penalty's start on the fine grid from the coarse answer: its pressures interpolated,
-/// set to zero (penalised) where the contact-edge function [`edge_function`], interpolated,
-/// says the plate lifts. (The active-set QP starts from the interpolated pressures as they
-/// are: its first step projects its start onto equilibrium, which pressures cut to zero over
-/// a ring no longer satisfy; measured, it then took 18–30 face solves instead of 4–8.)
-fn penalty_start(ops: &Operators, coarse_ops: &Operators, coarse: &Solution) -> Vec<f64> {
+/// The fine grid's start from the coarse answer: its pressures interpolated, set to zero where
+/// the contact-edge function [`edge_function`], interpolated, says the plate lifts — the
+/// penalty's first penalised set, the active-set QP's first held set (which it makes feasible
+/// on that face: projected onto the whole feasible set, the shift to equilibrium brought the
+/// cut ring back into contact, and it took 18–30 face solves instead of 4–8).
+fn edge_start(ops: &Operators, coarse_ops: &Operators, coarse: &Solution) -> Vec<f64> {
     let sigma = ops.mesh.interpolate_from(&coarse_ops.mesh, &coarse.sigma);
     match edge_function(coarse_ops, coarse) {
         Some(phi) => {

@@ -6,7 +6,7 @@ use super::run::{infeasible, End, Run};
 use crate::error::Result;
 use crate::operators::Operators;
 use crate::solve::iterative::IterativeSchur;
-use crate::solve::projection::project;
+use crate::solve::projection::{project, project_on_face};
 use crate::solve::solution::Status;
 
 impl Run<'_> {
@@ -36,23 +36,33 @@ impl Run<'_> {
         if k0.natural <= tol {
             return Ok(Ok((p0, alpha0, k0, Status::Converged)));
         }
-        // A start carried over from elsewhere, made feasible: its zeros whose gap does not
-        // close are the first set. (Checked against n: a start of another grid is ignored.)
-        let (p0, g0, alpha0) = match warm
-            .filter(|w| w.len() == n)
-            .and_then(|w| project(w, &sys.c, &sys.rf))
-        {
-            Some(x) => {
+        // A start carried over from elsewhere (a coarser grid's answer, a neighbour's): its
+        // zeros are its lifted set, the first held set, and it is made feasible on that face —
+        // projected on the whole feasible set, the shift to equilibrium would bring the held
+        // points back into contact. Where the free points cannot balance the load, the
+        // whole feasible set, and its zeros whose gap does not close are the first set.
+        // (Checked against n: a start of another grid is ignored.)
+        let given = warm.filter(|w| w.len() == n).and_then(|w| {
+            let zeros: Vec<bool> = w.iter().map(|&x| x <= 0.0).collect();
+            match project_on_face(w, &zeros, &sys.c, &sys.rf) {
+                Some(x) => Some((x, Some(zeros))),
+                None => project(w, &sys.c, &sys.rf).map(|x| (x, None)),
+            }
+        });
+        let (p0, g0, alpha0, held) = match given {
+            Some((x, zeros)) => {
                 let p = Point::new(sys, ops, x);
                 let (g, alpha) = reduced_gradient(sys, &p);
-                (p, g, alpha)
+                (p, g, alpha, zeros)
             }
-            None => (p0, g0, alpha0),
+            None => (p0, g0, alpha0, None),
         };
         let g_s = gap_scale(sys, &p0, &alpha0);
-        let mut held: Vec<bool> = (0..n)
-            .map(|i| p0.sigma[i] == 0.0 && g0[i] >= -tol * g_s)
-            .collect();
+        let mut held: Vec<bool> = held.unwrap_or_else(|| {
+            (0..n)
+                .map(|i| p0.sigma[i] == 0.0 && g0[i] >= -tol * g_s)
+                .collect()
+        });
         let mut start = p0.sigma;
         // The face solves' tolerance: loose while the sets move (they only have to be found),
         // 100× tighter each time the sets wander, tight when a set repeats: only a tight
