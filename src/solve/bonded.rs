@@ -258,7 +258,7 @@ fn solve_iterative(ops: &Operators, monitor: &Monitor<'_>) -> Result<Solution> {
         sigma,
         alpha,
         cg,
-    } = sys.solve(ops, &rows, &weights, false, monitor)?;
+    } = sys.solve(ops, &rows, &weights, None, monitor)?;
     finite(&u, "bonded half-space solve (iterative)")?;
     let info = SolveInfo {
         timings: Timings {

@@ -79,20 +79,25 @@ fn stage(
     let mut seen: Vec<Vec<bool>> = vec![penalised.clone()];
     let mut status = Status::IterationLimit { limit: cap };
     let mut last = None;
-    // The iterative route solves to a loose tolerance while the set is still moving and to the
-    // tight one once it repeats (or cycles): only a tight solve can confirm the set.
-    let mut loose = matches!(backend, Backend::Iterative(_));
+    // The iterative route solves to a loose tolerance while the set is still moving, to a
+    // medium one once it repeats there (the loose solves leave the sign of the pressures near
+    // the contact edge uncertain) and to the tight one once it repeats (or cycles) again: only
+    // a tight solve can confirm the set. `level` is the step's tolerance (None: tight, and
+    // every step of the direct routes).
+    let ladder: Vec<f64> = backend.levels().map_or(Vec::new(), |(l, m)| vec![l, m]);
+    let mut rung = 0;
+    let level = |rung: usize| ladder.get(rung).copied();
     for _ in 0..cap {
         monitor.check("the penalty iteration")?;
         let ts = Instant::now();
-        let mut out = backend.solve(ops, rows, &penalised, epsilon, loose, monitor)?;
-        if loose && out.3.is_some_and(|cg| cg.iterations == 0) {
-            // The loose solve found its start (the last answer) already within its tolerance:
-            // it has not seen the new set and would only hand the last set back, for a tight
-            // solve to confirm one step later. Go tight in this step.
-            loose = false;
+        let mut out = backend.solve(ops, rows, &penalised, epsilon, level(rung), monitor)?;
+        while level(rung).is_some() && out.3.is_some_and(|cg| cg.iterations == 0) {
+            // The inexact solve found its start (the last answer) already within its
+            // tolerance: it has not seen the new set and would only hand the last set back,
+            // for a tighter solve to look one step later. Go tighter in this step.
+            rung += 1;
             seen = vec![penalised.clone()];
-            out = backend.solve(ops, rows, &penalised, epsilon, loose, monitor)?;
+            out = backend.solve(ops, rows, &penalised, epsilon, level(rung), monitor)?;
         }
         let (u, sigma, alpha, cg) = out;
         *t_solves += ts.elapsed().as_secs_f64();
@@ -132,19 +137,19 @@ fn stage(
             ));
         }
         if next == penalised {
-            if loose {
-                // Confirm with a tight solve; sets met by inexact solves do not count as a
-                // cycle of the tight ones.
-                loose = false;
+            if level(rung).is_some() {
+                // Look again with a tighter solve; sets met by inexact solves do not count as
+                // a cycle of the tighter ones.
+                rung += 1;
                 seen = vec![penalised.clone()];
                 continue;
             }
             status = Status::Converged;
             break;
         }
-        if loose && seen.contains(&next) {
+        if level(rung).is_some() && seen.contains(&next) {
             // An inexact solve may revisit a set: decide cycling on tight solves only.
-            loose = false;
+            rung = ladder.len();
             seen = vec![penalised.clone()];
         }
         if let Some(pos) = seen.iter().position(|s| *s == next) {

@@ -184,6 +184,19 @@ impl Backend {
         }
     }
 
+    /// The tolerances of the iterative route's steps while the set moves: loose, then medium
+    /// once a loose step sees no change (None on the direct routes: every step is exact).
+    pub(super) fn levels(&self) -> Option<(f64, f64)> {
+        match self {
+            Backend::Iterative(sys) => {
+                let s = sys.settings();
+                let loose = s.loose_tolerance.max(s.tolerance);
+                Some((loose, MEDIUM_TOLERANCE.clamp(s.tolerance, loose)))
+            }
+            _ => None,
+        }
+    }
+
     /// Start the iterative route's first step from the pressures `sigma` (the other backends
     /// solve directly and need no start).
     pub(super) fn warm_start(&mut self, sigma: &[f64]) {
@@ -192,19 +205,21 @@ impl Backend {
         }
     }
 
-    /// Solve with the penalty compliance of the `penalised` constraint points at ε̄ = `epsilon`.
+    /// Solve with the penalty compliance of the `penalised` constraint points at ε̄ = `epsilon`;
+    /// the iterative route to the relative tolerance `level` (None: its tight tolerance), the
+    /// direct ones exactly.
     pub(super) fn solve(
         &mut self,
         ops: &Operators,
         rows: &[Vec<(usize, f64)>],
         penalised: &[bool],
         epsilon: f64,
-        loose: bool,
+        level: Option<f64>,
         monitor: &Monitor<'_>,
     ) -> Result<StepOut> {
         if let Backend::Iterative(sys) = self {
             let weights = penalty_weights(ops, penalised, epsilon);
-            let step = sys.solve(ops, rows, &weights, loose, monitor)?;
+            let step = sys.solve(ops, rows, &weights, level, monitor)?;
             return Ok((step.u, step.sigma, step.alpha, Some(step.cg)));
         }
         if let Backend::Schur(sys, low_rank) = self {
@@ -358,6 +373,10 @@ fn penalty_weights(ops: &Operators, penalised: &[bool], epsilon: f64) -> Vec<f64
 /// factor and a Woodbury correction (k + 1 solves with the factor and a dense k × k system)
 /// instead of a new numeric factorisation.
 pub const WOODBURY_MAX_RANK: usize = 64;
+
+/// The relative CG tolerance of the penalty steps between the loose ones and the confirming
+/// tight ones (iterative route).
+pub const MEDIUM_TOLERANCE: f64 = 1e-7;
 
 /// Indices whose spring stiffness changed.
 fn changed(old: &[f64], new: &[f64]) -> Vec<usize> {

@@ -438,13 +438,14 @@ impl IterativeSchur {
     }
 
     /// Solve one penalised step: `weights[k]` = d_k on constraint point k (0 if not penalised),
-    /// `rows[k]` = g_k. Returns u, σ, α and the CG account.
+    /// `rows[k]` = g_k, to the relative tolerance `level` (never below the settings'; None: the
+    /// settings' tight one). Returns u, σ, α and the CG account.
     pub fn solve(
         &mut self,
         ops: &Operators,
         rows: &[Vec<(usize, f64)>],
         weights: &[f64],
-        loose: bool,
+        level: Option<f64>,
         monitor: &Monitor<'_>,
     ) -> Result<Step> {
         let mut pre = self.preconditioner(rows, weights, &[])?;
@@ -452,11 +453,7 @@ impl IterativeSchur {
             .warm
             .clone()
             .unwrap_or_else(|| vec![0.0; ops.n_sigma()]);
-        let tol = if loose {
-            self.settings.loose_tolerance.max(self.settings.tolerance)
-        } else {
-            self.settings.tolerance
-        };
+        let tol = level.map_or(self.settings.tolerance, |l| l.max(self.settings.tolerance));
         let out = self.cg(
             ops,
             &mut pre,
@@ -521,6 +518,11 @@ impl IterativeSchur {
     /// pressures on the same operators) instead of zero.
     pub fn warm_start(&mut self, sigma: &[f64]) {
         self.warm = Some(sigma.to_vec());
+    }
+
+    /// The conjugate-gradient settings.
+    pub fn settings(&self) -> CgSettings {
+        self.settings
     }
 
     /// Whether the preconditioner is the matrix itself (so a tight solve costs about one CG
