@@ -71,7 +71,8 @@ fn nested_and_cold_starts_give_the_same_answer() {
             // Issue 26's target for the penalty: at most 5 steps on the fine grid. Its start is
             // the coarse answer's contact edge (σ − g/T_ii interpolated), not its pressure
             // alone, which marked a ring of fine nodes too many as in contact (the half-space
-            // here: 4 steps before, 3 now; 8 before, 3 now at 256²).
+            // here takes 4 steps, as before, one of them the medium-tolerance look that spares
+            // a second tight solve elsewhere; at 256², 3 steps, 8 before).
             if method == liftoff::method::MethodKind::Penalty {
                 assert!(
                     nested.summary.iterations <= 5,
