@@ -37,14 +37,14 @@ pub const TENSION_TOLERANCE: f64 = 1e-4;
 /// Largest share of the load that fictitious tension at lifted points may carry in a converged
 /// penalty solution: 0.1 %. On the paper's cases at ε̄ = 1e-5 the share is ~1e-4 (about 10 ε̄).
 /// The same bound holds the shift of the contact's resultant that the tension's moment forces,
-/// relative to the contact's size ([`tension_moment`]).
+/// relative to the contact's size (`tension_moment`).
 pub const TENSION_FORCE_TOLERANCE: f64 = 1e-3;
 
 /// Smallest ε̄ the automatic choice goes down to. The penalty springs are then 1e18 times
 /// softer than the soil: the Winkler steps keep their digits because a bed whose rigid modes
 /// the soft springs alone hold is solved with the rigid part split off
 /// ([`super::rigid_split::needs_split`]); a plate balanced on its corner node needs 3e-15 at
-/// 200² and 400² elements (its tension's moment, [`tension_moment`], falls like ε̄ times the
+/// 200² and 400² elements (its tension's moment, `tension_moment`, falls like ε̄ times the
 /// number of elements across), where the plain factorisation lost equilibrium below 1e-11.
 pub const MIN_AUTO_EPSILON: f64 = 1e-18;
 

@@ -23,8 +23,8 @@
 //!
 //! Each step starts from the previous step's σ (warm start), so the later penalty steps, which
 //! change a few points, take few iterations; steps whose set is still moving are solved to a
-//! loose tolerance ([`CgSettings::loose_tolerance`]), and the penalty iteration confirms a set
-//! only with a tight solve.
+//! loose tolerance ([`CgSettings::loose_tolerance`]), then to a medium one once the set repeats
+//! there, and the penalty iteration confirms a set only with a tight solve.
 //!
 //! **Face solves** ([`IterativeSchur::solve_face`]) serve the matrix-free QP
 //! ([`super::qp::active_set`]): the same system without penalty, with a set of pressures held at
