@@ -55,10 +55,17 @@ impl std::fmt::Debug for SharedCache {
 impl SharedCache {
     /// The cached value of type `T`, if one was computed.
     pub fn get<T: Send + Sync + 'static>(&self) -> Option<Arc<T>> {
-        let slots = match self.0.lock() {
+        Self::find(&self.slots())
+    }
+
+    fn slots(&self) -> std::sync::MutexGuard<'_, SharedSlots> {
+        match self.0.lock() {
             Ok(g) => g,
             Err(poisoned) => poisoned.into_inner(),
-        };
+        }
+    }
+
+    fn find<T: Send + Sync + 'static>(slots: &SharedSlots) -> Option<Arc<T>> {
         let key = std::any::TypeId::of::<T>();
         slots.get(&key).and_then(|v| v.clone().downcast::<T>().ok())
     }
@@ -71,16 +78,12 @@ impl SharedCache {
         &self,
         init: impl FnOnce() -> Result<T, E>,
     ) -> Result<(Arc<T>, bool), E> {
-        let mut slots = match self.0.lock() {
-            Ok(g) => g,
-            Err(poisoned) => poisoned.into_inner(),
-        };
-        let key = std::any::TypeId::of::<T>();
-        if let Some(v) = slots.get(&key).and_then(|v| v.clone().downcast::<T>().ok()) {
+        let mut slots = self.slots();
+        if let Some(v) = Self::find::<T>(&slots) {
             return Ok((v, false));
         }
         let v = Arc::new(init()?);
-        slots.insert(key, v.clone());
+        slots.insert(std::any::TypeId::of::<T>(), v.clone());
         Ok((v, true))
     }
 }

@@ -21,7 +21,7 @@ use super::linalg::{
     dense_cholesky, diagonal_positions, displacements, dot, finite, lumped_coupling,
     schur_complement, sparse_solve, PlateInverse, SparseCholesky, SpdSolve,
 };
-use super::rigid_split::{spring_total, RigidSplit, NEAR_RIGID};
+use super::rigid_split::{needs_split, RigidSplit};
 use super::solution::{Solution, SolveInfo, Status, Timings};
 use crate::error::Result;
 use crate::foundation::Compliance;
@@ -52,8 +52,9 @@ fn solve_springs(ops: &Operators, t: &[f64]) -> Result<Solution> {
         .zip(t)
         .map(|(&(eq, b), &tj)| (eq, b * b / tj))
         .collect();
-    if spring_total(&springs) < NEAR_RIGID {
-        // A nearly rigid plate: its rigid part split off and solved exactly.
+    if needs_split(ops, &springs) {
+        // A nearly rigid plate (or springs too soft in one of its rigid modes): its rigid
+        // part split off and solved exactly.
         let u = RigidSplit::new(ops)?.solve(ops, &springs, &ops.f)?;
         let sigma: Vec<f64> = coupling
             .iter()

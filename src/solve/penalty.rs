@@ -84,7 +84,7 @@ fn stage(
     // the contact edge uncertain) and to the tight one once it repeats (or cycles) again: only
     // a tight solve can confirm the set. `level` is the step's tolerance (None: tight, and
     // every step of the direct routes).
-    let ladder: Vec<f64> = backend.levels().map_or(Vec::new(), |(l, m)| vec![l, m]);
+    let ladder = backend.levels();
     let mut rung = 0;
     let level = |rung: usize| ladder.get(rung).copied();
     for _ in 0..cap {

@@ -19,7 +19,7 @@ use super::iterative::{CgSettings, IterativeSchur};
 use super::linalg::{diagonal_positions, lumped_coupling};
 use super::linalg::{faer_view, sparse_solve, SparseCholesky, SparseFactor};
 use super::low_rank::LowRankSchur;
-use super::rigid_split::{needs_split, spring_total, RigidSplit, NEAR_RIGID};
+use super::rigid_split::{needs_split, RigidSplit};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
 use crate::model::ConstraintPoints;
@@ -77,7 +77,7 @@ impl Backend {
                     .zip(t)
                     .map(|(&(eq, b), &c)| (eq, b * b / c))
                     .collect();
-                if spring_total(&bonded_springs) < NEAR_RIGID {
+                if needs_split(ops, &bonded_springs) {
                     // A nearly rigid plate: every step by the split solve, no plain factor.
                     let order = crate::mesh::equation_order(&ops.mesh, &ops.dofs, |_| true);
                     return Ok(Backend::Springs {
@@ -184,16 +184,17 @@ impl Backend {
         }
     }
 
-    /// The tolerances of the iterative route's steps while the set moves: loose, then medium
-    /// once a loose step sees no change (None on the direct routes: every step is exact).
-    pub(super) fn levels(&self) -> Option<(f64, f64)> {
+    /// The tolerances of the iterative route's steps while the set moves, in turn: loose, then
+    /// medium once a loose step sees no change; empty on the direct routes, whose every step is
+    /// exact.
+    pub(super) fn levels(&self) -> Vec<f64> {
         match self {
             Backend::Iterative(sys) => {
                 let s = sys.settings();
                 let loose = s.loose_tolerance.max(s.tolerance);
-                Some((loose, MEDIUM_TOLERANCE.clamp(s.tolerance, loose)))
+                vec![loose, MEDIUM_TOLERANCE.clamp(s.tolerance, loose)]
             }
-            _ => None,
+            _ => Vec::new(),
         }
     }
 
