@@ -140,7 +140,7 @@ pub fn iterative_bytes(mesh: &Mesh) -> f64 {
 pub fn toeplitz(model: &Model, method: &Method, route: Route) -> Result<bool> {
     let (mesh, _) = model.plan_mesh();
     let iterative = route.iterative(mesh.n_nodes(), method, model.constraint)?;
-    Ok(iterative && !model.groups.foundation.is_local())
+    Ok(iterative && !model.groups.foundation().is_local())
 }
 
 /// Refuse a (model, method) pair that will not fit in `limit` bytes on `route`; returns whether
@@ -170,7 +170,7 @@ pub fn check(model: &Model, method: &Method, limit: f64) -> Result<()> {
     let (mesh, _) = model.plan_mesh();
     check_mesh(
         &mesh,
-        model.groups.foundation,
+        model.groups.foundation(),
         model.constraint,
         method,
         limit,

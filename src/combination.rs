@@ -186,7 +186,7 @@ pub(crate) fn assemble_for(problem: &Problem, models: &[Model], what: &str) -> R
     let (mesh, _) = crate::model::plan_shared_mesh(models);
     let parallel = rayon::current_num_threads().min(models.len()).max(1) as f64;
     // The route of `[solver] route` (the half-space T by FFT beyond the size `auto` allows).
-    let toeplitz = !first.groups.foundation.is_local()
+    let toeplitz = !first.groups.foundation().is_local()
         && problem
             .route
             .iterative(mesh.n_nodes(), &problem.method, problem.model.constraint)?;
@@ -208,7 +208,7 @@ pub(crate) fn assemble_for(problem: &Problem, models: &[Model], what: &str) -> R
     } else {
         budget::check_mesh(
             &mesh,
-            first.groups.foundation,
+            first.groups.foundation(),
             first.constraint,
             &problem.method,
             problem.memory_limit / parallel,

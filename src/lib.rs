@@ -40,6 +40,7 @@
 
 pub mod analysis;
 pub mod budget;
+pub mod check;
 pub mod choice;
 pub mod combination;
 pub mod compare;

@@ -450,9 +450,7 @@ impl QpSettings {
             return QpSolver::Clarabel;
         }
         match self.solver {
-            QpSolver::Auto if foundation != FoundationKind::Winkler && !toeplitz => {
-                QpSolver::Clarabel
-            }
+            QpSolver::Auto if !foundation.is_local() && !toeplitz => QpSolver::Clarabel,
             QpSolver::Auto | QpSolver::ActiveSet => QpSolver::ActiveSet,
             QpSolver::Clarabel => QpSolver::Clarabel,
         }

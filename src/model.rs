@@ -17,7 +17,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::foundation::FoundationKind;
+use crate::foundation::{FoundationKind, Soil};
 use crate::layout::Layout;
 use crate::mesh::Mesh;
 
@@ -48,10 +48,7 @@ crate::names!(SymmetryMode, Auto => "auto", None => "none");
 /// summary.json's `dimensionless` writes them (in this serde form, beside what the solve adds).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Groups {
-    /// Foundation model (summary.json names it at its top level, `foundation`).
-    #[serde(skip)]
-    pub foundation: FoundationKind,
-    /// Γ_w or Γ_h (Pasternak: Γ_w of its springs, D/(k μ L⁴)).
+    /// Γ_w or Γ_h (Pasternak and Kerr: Γ_w of the (lower) springs, D/(k μ L⁴)).
     pub gamma: f64,
     /// Δ.
     pub delta: f64,
@@ -59,48 +56,21 @@ pub struct Groups {
     pub mu: f64,
     /// ν_p.
     pub nu: f64,
-    /// Pasternak only: the shear parameter Γ_g = G_p L²/D (None for the other soils).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub shear: Option<f64>,
-    /// Elastic layer only: the depth ratio h/L (None for the other soils).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub depth: Option<f64>,
-    /// Elastic layer only: the layer's Poisson's ratio ν_s, which shapes its kernel beyond
-    /// the factor 1 − ν_s² in Γ_h (None for the other soils).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub soil_nu: Option<f64>,
-    /// Elastic layer only: its rigid base, rough or smooth (None for the other soils).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub base: Option<crate::foundation::layer::Base>,
-    /// Kerr only: Γ_c = D/(c μ L⁴) of its upper springs c (None for the other soils; Γ is the
-    /// lower springs' Γ_w and `shear` its shear layer's Γ_g).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub upper: Option<f64>,
+    /// The soil with its own groups, written after these (summary.json names the soil at its
+    /// top level, `foundation`).
+    #[serde(flatten)]
+    pub soil: Soil,
 }
 
 impl Groups {
-    /// What the soil's kernel needs beyond Γ: the Pasternak decay length λ/L or the layer's
-    /// depth h/L with its ν_s.
-    pub fn soil_shape(&self) -> crate::foundation::SoilShape {
-        match self.depth {
-            Some(h) => crate::foundation::SoilShape {
-                length: h,
-                poisson: self.soil_nu.unwrap_or(0.0),
-                base: self.base.unwrap_or(crate::foundation::layer::Base::Rough),
-                local: 0.0,
-            },
-            None => crate::foundation::SoilShape {
-                // Kerr: the upper springs' compliance over the lower ones', k/c = Γ_c/Γ_w.
-                local: self.upper.map_or(0.0, |u| u / self.gamma),
-                ..crate::foundation::SoilShape::length(self.decay_length())
-            },
-        }
+    /// The soil's name.
+    pub fn foundation(&self) -> FoundationKind {
+        self.soil.kind()
     }
 
-    /// The Pasternak decay length λ/L = √(G_p/k)/L = √(Γ_g μ Γ_w); 0 for the other soils.
-    pub fn decay_length(&self) -> f64 {
-        self.shear
-            .map_or(0.0, |g| (g * self.mu * self.gamma).sqrt())
+    /// The soil's surface kernel in the unit system (None for the local Winkler soil).
+    pub fn kernel(&self) -> Option<crate::foundation::kernel::Kernel> {
+        self.soil.kernel(self.gamma, self.mu)
     }
 }
 

@@ -152,7 +152,7 @@ impl Summary {
             method: sol.method.solved_by(),
             contact: sol.method.contact(),
             symmetry: ops.mesh.symmetry_name().into(),
-            foundation: model.groups.foundation,
+            foundation: model.groups.foundation(),
             constraint: ops.constraints.kind,
             elements: model.elements,
             model_elements: [ops.mesh.nx, ops.mesh.ny],
@@ -160,7 +160,10 @@ impl Summary {
             dofs: ops.n_eq(),
             dimensionless: Dimensionless {
                 groups: model.groups,
-                decay_length: model.groups.shear.map(|_| model.groups.decay_length()),
+                decay_length: model
+                    .groups
+                    .soil
+                    .decay_length(model.groups.gamma, model.groups.mu),
                 penalty: sol.method.penalty_epsilon(),
                 reference: model.reference,
                 reference_force: model.load_scale,

@@ -156,7 +156,7 @@ fn equals_clarabel_on_pasternak_and_the_elastic_layer() {
         for symmetry in ["none", "auto"] {
             let p = problem(&text, 32, symmetry);
             assert_eq!(
-                p.model.groups.foundation.name(),
+                p.model.groups.foundation().name(),
                 if name == "Pasternak" {
                     "pasternak"
                 } else {

@@ -472,7 +472,8 @@ fn out_of_range_values_name_their_field() {
         (
             "winkler with a half-space key",
             physical(PLATE, &format!("{WINKLER}\npoissons_ratio = 0.3"), POINT),
-            "foundation.youngs_modulus",
+            // The key given, not its half-space sibling.
+            "foundation.poissons_ratio",
         ),
         (
             "half-space with a Winkler key",

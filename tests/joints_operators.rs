@@ -533,6 +533,7 @@ fn operators_dispatch_to_the_jointed_assembly() {
         mesh.clone(),
         section(),
         FoundationKind::Winkler,
+        None,
         1.0,
         &[Load::Point {
             x: 0.3,

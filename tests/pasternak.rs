@@ -55,7 +55,7 @@ fn solve(p: &Problem, method: &Method, toeplitz: bool) -> (Operators, Solution) 
         sol.status.converged(),
         "{} solve of {:?} (Γ = {:e}, toeplitz {toeplitz}): {}",
         method.name(),
-        p.model.groups.foundation,
+        p.model.groups.foundation(),
         p.model.groups.gamma,
         sol.status.describe()
     );

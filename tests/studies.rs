@@ -276,7 +276,7 @@ fn stability_sweep_rows_and_outcomes() {
                 case.param,
                 case.method,
                 case.value,
-                case.base.model.groups.foundation
+                case.base.model.groups.foundation()
             ),
             "row in plan order"
         );

@@ -208,7 +208,7 @@ fn check(py: Python<'_>, kind: &str, text: &str, options: &str) -> PyResult<Stri
     json(&serde_json::json!({
         "title": p.model.title,
         "elements": p.model.elements,
-        "foundation": p.model.groups.foundation.name(),
+        "foundation": p.model.groups.foundation().name(),
         "method": p.method.name(),
         "combinations": p.combinations.iter().map(|c| c.name.clone()).collect::<Vec<_>>(),
     }))

@@ -28,105 +28,71 @@ use std::sync::{Arc, OnceLock};
 /// Euler–Mascheroni constant γ.
 const EULER_GAMMA: f64 = 0.577_215_664_901_532_9;
 
-/// Beyond this many decay lengths a Pasternak kernel is below e⁻⁴⁰ ≈ 4e−18 of its value at one
-/// decay length: pairs farther apart are exactly zero in double precision for any use.
-pub const PASTERNAK_CUTOFF: f64 = 40.0;
+/// A radial surface kernel, normalised so that T = c · (pair integrals of the kernel): each
+/// soil's own in its file ([`super::halfspace`], [`super::pasternak`],
+/// [`super::elastic_layer`], [`super::kerr`]).
+pub trait Radial: std::fmt::Debug + Send + Sync {
+    /// Point value K(ρ), ρ > 0.
+    fn value(&self, rho: f64) -> f64;
 
-/// A non-local surface kernel, normalised so that T = c · (pair integrals of the kernel).
-#[derive(Debug, Clone, PartialEq)]
-pub enum Kernel {
-    /// Elastic half-space (Boussinesq): K(ρ) = 1/ρ, c = (1 − ν_s²)/(π E_s).
-    Boussinesq,
-    /// Two-parameter (Pasternak) foundation k u − G_p ∇²u = p on the whole plane:
-    /// K(ρ) = K₀(ρ/λ)/(2πλ²), λ = √(G_p/k), c = 1/k. The kernel has unit integral over the
-    /// plane, so as λ → 0 it tends to the Winkler law u = p/k.
-    Pasternak {
-        /// λ in the caller's length unit.
-        lambda: f64,
-    },
-    /// Elastic layer of depth h on a rigid base (rough or smooth): K(ρ) = 1/ρ − F(ρ/h)/h (the half-space
-    /// minus a smooth correction, [`super::layer`]), c = (1 − ν_s²)/(π E_s) as for the
-    /// half-space. Zero beyond [`super::layer::LAYER_CUTOFF`] depths.
-    ElasticLayer {
-        /// h in the caller's length unit.
-        depth: f64,
-        /// The correction F of the layer's Poisson's ratio.
-        table: Arc<super::layer::LayerTable>,
-    },
-    /// Kerr's soil: the Pasternak kernel of the lower springs k and shear layer G (λ = √(G/k),
-    /// c = 1/k) plus the upper springs' local part (k/c_u) δ(ρ): T = (1/k)·(Pasternak pairs +
-    /// (k/c_u) ∫ N_a N_b), the local part only in each element's pair with itself (the
-    /// consistent mass of the bilinear pressure).
-    Kerr {
-        /// λ in the caller's length unit.
-        lambda: f64,
-        /// k/c_u.
-        local: f64,
-    },
+    /// Distance beyond which the kernel is zero in double precision, if it decays that fast.
+    fn support(&self) -> Option<f64>;
+
+    /// Length over which the kernel varies by a factor e (∞ for the scale-free 1/ρ): the
+    /// generic rule grades its radial panels by it.
+    fn scale(&self) -> f64;
+
+    /// Pair block I[a][b] for the element e0 = [0, hx] × [0, hy] and e1 offset by (di, dj)
+    /// elements (di, dj ≥ 0): the generic rule of this module unless the soil knows better.
+    fn pair_block(&self, di: usize, dj: usize, hx: f64, hy: f64) -> [[f64; 4]; 4] {
+        generic_pair_block(self, di, dj, hx, hy)
+    }
 }
 
+/// A non-local surface kernel: a soil's [`Radial`] kernel, shared (cheap to clone).
+#[derive(Debug, Clone)]
+pub struct Kernel(Arc<dyn Radial>);
+
 impl Kernel {
+    /// The kernel `radial`.
+    pub fn new(radial: impl Radial + 'static) -> Self {
+        Kernel(Arc::new(radial))
+    }
+
     /// Point value K(ρ), ρ > 0.
     pub fn value(&self, rho: f64) -> f64 {
-        match self {
-            Kernel::Boussinesq => 1.0 / rho,
-            Kernel::Pasternak { lambda } => {
-                bessel_k0(rho / lambda) / (2.0 * std::f64::consts::PI * lambda * lambda)
-            }
-            Kernel::ElasticLayer { depth, table } => table.kernel(rho, *depth),
-            Kernel::Kerr { lambda, .. } => Kernel::Pasternak { lambda: *lambda }.value(rho),
-        }
+        self.0.value(rho)
     }
 
     /// Distance beyond which the kernel is zero in double precision, if it decays that fast.
     pub fn support(&self) -> Option<f64> {
-        match self {
-            Kernel::Boussinesq => None,
-            Kernel::Pasternak { lambda } => Some(PASTERNAK_CUTOFF * lambda),
-            Kernel::ElasticLayer { depth, .. } => Some(super::layer::LAYER_CUTOFF * depth),
-            Kernel::Kerr { lambda, .. } => Some(PASTERNAK_CUTOFF * lambda),
-        }
-    }
-
-    /// Length over which the kernel varies by a factor e (∞ for the scale-free 1/ρ).
-    fn scale(&self) -> f64 {
-        match self {
-            Kernel::Boussinesq => f64::INFINITY,
-            Kernel::Pasternak { lambda } => *lambda,
-            Kernel::ElasticLayer { depth, .. } => *depth,
-            Kernel::Kerr { lambda, .. } => *lambda,
-        }
+        self.0.support()
     }
 
     /// Pair block I[a][b] for the element e0 = [0, hx] × [0, hy] and e1 offset by (di, dj)
-    /// elements (di, dj ≥ 0). The half-space keeps its closed-form near field.
+    /// elements (di, dj ≥ 0).
     pub fn pair_block(&self, di: usize, dj: usize, hx: f64, hy: f64) -> [[f64; 4]; 4] {
-        match self {
-            Kernel::Boussinesq => super::boussinesq::pair_block(di, dj, hx, hy),
-            Kernel::Kerr { lambda, local } => {
-                let mut block =
-                    generic_pair_block(&Kernel::Pasternak { lambda: *lambda }, di, dj, hx, hy);
-                if di == 0 && dj == 0 {
-                    // ∫_e N_a N_b dA of bilinear shape functions: hx hy/36 · (4, 2, 1) for the
-                    // same, an edge-adjacent and the opposite corner.
-                    for (a, row) in block.iter_mut().enumerate() {
-                        for (b, v) in row.iter_mut().enumerate() {
-                            let same_x = NODE_XI[a] == NODE_XI[b];
-                            let same_y = NODE_ETA[a] == NODE_ETA[b];
-                            let weight = match (same_x, same_y) {
-                                (true, true) => 4.0,
-                                (false, false) => 1.0,
-                                _ => 2.0,
-                            };
-                            *v += local * weight * hx * hy / 36.0;
-                        }
-                    }
-                }
-                block
-            }
-            _ => generic_pair_block(self, di, dj, hx, hy),
+        self.0.pair_block(di, dj, hx, hy)
+    }
+}
+
+/// ∫_e N_a N_b dA of bilinear shape functions on an hx × hy element is hx hy/36 times these
+/// weights: 4, 2, 1 for the same, an edge-adjacent and the opposite corner (a local soil's part
+/// of a pair block).
+pub fn local_weights() -> [[f64; 4]; 4] {
+    let mut block = [[0.0; 4]; 4];
+    for (a, row) in block.iter_mut().enumerate() {
+        for (b, v) in row.iter_mut().enumerate() {
+            let same_x = NODE_XI[a] == NODE_XI[b];
+            let same_y = NODE_ETA[a] == NODE_ETA[b];
+            *v = match (same_x, same_y) {
+                (true, true) => 4.0,
+                (false, false) => 1.0,
+                _ => 2.0,
+            };
         }
     }
+    block
 }
 
 /// Chebyshev coefficients of eˣ √x K₀(x) on 2 ≤ x < ∞ in the variable 8/x − 2 (Moshier 1989,
@@ -262,7 +228,13 @@ fn radial_nodes(r: f64) -> Vec<(f64, f64)> {
 }
 
 /// Generic pair block (module docs).
-fn generic_pair_block(k: &Kernel, di: usize, dj: usize, hx: f64, hy: f64) -> [[f64; 4]; 4] {
+pub fn generic_pair_block<K: Radial + ?Sized>(
+    k: &K,
+    di: usize,
+    dj: usize,
+    hx: f64,
+    hy: f64,
+) -> [[f64; 4]; 4] {
     let dx = di as f64 * hx;
     let dy = dj as f64 * hy;
     let mut out = [[0.0; 4]; 4];
@@ -379,6 +351,8 @@ fn generic_pair_block(k: &Kernel, di: usize, dj: usize, hx: f64, hy: f64) -> [[f
 
 #[cfg(test)]
 mod tests {
+    use super::super::halfspace::Boussinesq;
+    use super::super::pasternak::{PasternakKernel, PASTERNAK_CUTOFF};
     use super::*;
 
     /// K₀ against tabulated values (A&S Table 9.8, DLMF; K₀(1) = 0.42102443824070834,
@@ -436,7 +410,7 @@ mod tests {
     #[test]
     fn generic_rule_is_exact_on_the_square_double_integral() {
         let exact = 4.0 / 3.0 * (1.0 - 2f64.sqrt()) + 4.0 * (1.0 + 2f64.sqrt()).ln();
-        let g = generic_pair_block(&Kernel::Boussinesq, 0, 0, 1.0, 1.0);
+        let g = generic_pair_block(&Boussinesq, 0, 0, 1.0, 1.0);
         let sum: f64 = g.iter().flatten().sum();
         assert!((sum - exact).abs() < 1e-12 * exact, "{sum} vs {exact}");
     }
@@ -454,7 +428,7 @@ mod tests {
         for (hx, hy) in [(1.0, 1.0), (0.5, 1.0), (1.0, 0.3)] {
             for (di, dj) in [(0, 0), (1, 0), (0, 1), (1, 1), (2, 1), (3, 0), (6, 4)] {
                 let exact = super::super::boussinesq::pair_block(di, dj, hx, hy);
-                let generic = generic_pair_block(&Kernel::Boussinesq, di, dj, hx, hy);
+                let generic = generic_pair_block(&Boussinesq, di, dj, hx, hy);
                 let big = exact.iter().flatten().fold(0.0_f64, |m, v| m.max(v.abs()));
                 let tol = if di <= 1 && dj <= 1 { 5e-5 } else { 5e-7 };
                 for a in 0..4 {
@@ -477,7 +451,7 @@ mod tests {
     #[test]
     fn pasternak_pair_blocks_sum_to_the_element_area() {
         for (hx, hy, lambda) in [(1.0, 1.0, 0.1), (1.0, 1.0, 0.7), (0.5, 1.0, 2.0)] {
-            let k = Kernel::Pasternak { lambda };
+            let k = PasternakKernel { lambda };
             let reach_x = (PASTERNAK_CUTOFF * lambda / hx).ceil() as isize + 1;
             let reach_y = (PASTERNAK_CUTOFF * lambda / hy).ceil() as isize + 1;
             let mut sum = 0.0;
@@ -501,7 +475,7 @@ mod tests {
     #[test]
     fn pasternak_self_block_matches_brute_force() {
         let (hx, hy, lambda) = (1.0, 0.6, 0.4);
-        let k = Kernel::Pasternak { lambda };
+        let k = PasternakKernel { lambda };
         let block = k.pair_block(0, 0, hx, hy);
         let g = GaussRule::new(12);
         let shape = crate::plate::shape;

@@ -8,97 +8,143 @@
 //! g = Tσ − Bᵀu and the plate feels the load −Bσ.
 
 pub mod boussinesq;
+pub mod elastic_layer;
 pub mod fft;
 pub mod halfspace;
 pub mod kernel;
+pub mod kerr;
 pub mod layer;
 pub mod pairs;
+pub mod pasternak;
+pub mod soil;
 pub mod winkler;
 
 use crate::mesh::{Dof, DofMap, Mesh};
+use soil::{Key, KeyMap, PlateScale, SoilKeys, SoilModel, SoilNames};
 
-/// Which foundation model.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum FoundationKind {
-    /// Winkler subgrade: settlement = pressure / K at each point (paper eq. 2.8).
-    Winkler,
-    /// Homogeneous isotropic elastic half-space (Boussinesq kernel, paper eq. 2.6).
-    HalfSpace,
-    /// Two-parameter (Pasternak) soil k u − G_p ∇²u = p on the whole plane: springs coupled by
-    /// a shear layer, kernel K₀(ρ/λ)/(2π G_p), λ = √(G_p/k) ([`kernel::Kernel::Pasternak`]).
-    Pasternak,
-    /// Homogeneous elastic layer of depth h on a rigid base (rough or smooth): the half-space's kernel
-    /// minus a smooth correction from Burmister's symbol ([`layer`]).
-    ElasticLayer,
-    /// Kerr's three-parameter soil: springs c (upper) in series with a Pasternak soil (lower
-    /// springs k, shear layer G): compliance 1/c + 1/(k + Gξ²), a local part and the Pasternak
-    /// kernel ([`kernel::Kernel::Kerr`]). Reissner's continuum-derived foundation is one.
-    Kerr,
-}
-
-crate::names!(FoundationKind, Winkler => "winkler", HalfSpace => "half-space",
-    Pasternak => "pasternak", ElasticLayer => "elastic-layer", Kerr => "kerr");
-
-impl FoundationKind {
-    /// True for the local (Winkler) soil, whose T is diagonal; every other soil is a non-local
-    /// surface kernel with a dense (or FFT-applied) T.
-    pub fn is_local(self) -> bool {
-        self == FoundationKind::Winkler
-    }
-
-    /// The surface kernel of a non-local soil. None for Winkler.
-    pub fn kernel(self, shape: SoilShape) -> Option<kernel::Kernel> {
-        match self {
-            FoundationKind::Winkler => None,
-            FoundationKind::HalfSpace => Some(kernel::Kernel::Boussinesq),
-            FoundationKind::Pasternak => Some(kernel::Kernel::Pasternak {
-                lambda: shape.length,
-            }),
-            FoundationKind::ElasticLayer => Some(kernel::Kernel::ElasticLayer {
-                depth: shape.length,
-                table: layer::LayerTable::shared(shape.poisson, shape.base),
-            }),
-            FoundationKind::Kerr => Some(kernel::Kernel::Kerr {
-                lambda: shape.length,
-                local: shape.local,
-            }),
+/// The soils, one line each: the variant, the type in its own file that implements
+/// [`SoilModel`], and its name in scene files and reports. Makes [`FoundationKind`] (the name
+/// alone) and [`Soil`] (the value with its constants), and dispatches every question to the
+/// soil's file: a new soil is its file and its line here.
+macro_rules! soils {
+    ($($v:ident($t:ty) => $name:literal, $doc:literal;)+) => {
+        /// Which foundation model: the name alone ([`Soil`] is the value with its constants).
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+        pub enum FoundationKind {
+            $(
+                #[doc = $doc]
+                #[serde(rename = $name)]
+                $v,
+            )+
         }
-    }
-}
 
-/// What a soil's kernel needs beyond its constant c: its length (the Pasternak decay length
-/// √(G_p/k), the layer's depth h; in the caller's length unit) and the layer's Poisson's ratio
-/// ν_s (its symbol depends on ν_s apart from the factor 1 − ν_s² in c). Ignored where a soil
-/// has no such property.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SoilShape {
-    /// λ (Pasternak) or h (elastic layer).
-    pub length: f64,
-    /// ν_s (elastic layer).
-    pub poisson: f64,
-    /// The layer's base.
-    pub base: layer::Base,
-    /// Kerr: the compliance of the upper springs over the lower ones', k/c.
-    pub local: f64,
-}
+        crate::names!(FoundationKind, $($v => $name),+);
 
-impl Default for SoilShape {
-    fn default() -> Self {
-        Self::length(0.0)
-    }
-}
-
-impl SoilShape {
-    /// A kernel length alone.
-    pub fn length(length: f64) -> Self {
-        Self {
-            length,
-            poisson: 0.0,
-            base: layer::Base::Rough,
-            local: 0.0,
+        /// A soil with its own constants as dimensionless groups (Γ beside it, in
+        /// [`crate::model::Groups`]). Serialised as its constants alone (summary.json's
+        /// `dimensionless`, flattened), its name written beside it as `foundation`.
+        #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+        #[serde(untagged)]
+        pub enum Soil {
+            $(
+                #[doc = $doc]
+                $v($t),
+            )+
         }
-    }
+
+        impl FoundationKind {
+            /// True for the local (Winkler) soil, whose T is diagonal; every other soil is a
+            /// non-local surface kernel with a dense (or FFT-applied) T.
+            pub fn is_local(self) -> bool {
+                match self { $(Self::$v => <$t as SoilModel>::LOCAL),+ }
+            }
+
+            /// The soil's names in the paper's outputs.
+            pub fn names(self) -> SoilNames {
+                match self { $(Self::$v => <$t as SoilModel>::NAMES),+ }
+            }
+
+            /// The keys the soil reads: of `[foundation]` (SI) or of `[dimensionless]`.
+            pub fn keys(self, dimensionless: bool) -> &'static [Key] {
+                match (self, dimensionless) {
+                    $(
+                        (Self::$v, false) => <$t as SoilModel>::SI_KEYS,
+                        (Self::$v, true) => <$t as SoilModel>::GROUP_KEYS,
+                    )+
+                }
+            }
+
+            /// Elements per side of the stability study's mesh sweep on this soil.
+            pub fn stability_meshes(self) -> Vec<f64> {
+                match self { $(Self::$v => <$t as SoilModel>::stability_meshes()),+ }
+            }
+
+            /// The soil and its Γ from `[foundation]` (SI units), `keys` its own keys.
+            pub fn from_si(self, keys: &KeyMap, plate: &PlateScale) -> crate::error::Result<(f64, Soil)> {
+                let k = SoilKeys { section: "foundation", kind: self, keys };
+                match self {
+                    $(Self::$v => {
+                        k.only(<$t as SoilModel>::SI_KEYS)?;
+                        let (gamma, soil) = <$t as SoilModel>::from_si(&k, plate)?;
+                        Ok((gamma, Soil::$v(soil)))
+                    }),+
+                }
+            }
+
+            /// The soil from `[dimensionless]`, `keys` its own keys, Γ = `gamma` checked.
+            pub fn from_groups(self, keys: &KeyMap, plate: &PlateScale, gamma: f64) -> crate::error::Result<Soil> {
+                let k = SoilKeys { section: "dimensionless", kind: self, keys };
+                match self {
+                    $(Self::$v => {
+                        k.only(<$t as SoilModel>::GROUP_KEYS)?;
+                        Ok(Soil::$v(<$t as SoilModel>::from_groups(&k, plate, gamma)?))
+                    }),+
+                }
+            }
+        }
+
+        impl Soil {
+            /// Its name.
+            pub fn kind(&self) -> FoundationKind {
+                match self { $(Soil::$v(_) => FoundationKind::$v),+ }
+            }
+
+            /// Its surface kernel in the unit system for Γ = `gamma`, aspect `mu` (None for a
+            /// local soil).
+            pub fn kernel(&self, gamma: f64, mu: f64) -> Option<kernel::Kernel> {
+                match self { $(Soil::$v(s) => s.kernel(gamma, mu)),+ }
+            }
+
+            /// The mean settlement (units of V) under the unit resultant spread over the
+            /// plate, constant `c` = μΓ ([`SoilModel::settlement`]).
+            pub fn settlement(&self, c: f64, mu: f64) -> f64 {
+                match self { $(Soil::$v(s) => s.settlement(c, mu)),+ }
+            }
+
+            /// What the solve table adds after Γ.
+            pub fn describe(&self, gamma: f64, mu: f64) -> String {
+                match self { $(Soil::$v(s) => s.describe(gamma, mu)),+ }
+            }
+
+            /// A length the soil derives for summary.json (the Pasternak decay length λ/L).
+            pub fn decay_length(&self, gamma: f64, mu: f64) -> Option<f64> {
+                match self { $(Soil::$v(s) => s.decay_length(gamma, mu)),+ }
+            }
+        }
+    };
+}
+
+soils! {
+    Winkler(winkler::Winkler) => "winkler",
+        "Winkler subgrade: settlement = pressure / K at each point (paper eq. 2.8).";
+    HalfSpace(halfspace::HalfSpace) => "half-space",
+        "Homogeneous isotropic elastic half-space (Boussinesq kernel, paper eq. 2.6).";
+    Pasternak(pasternak::Pasternak) => "pasternak",
+        "Two-parameter (Pasternak) soil k u − G_p ∇²u = p on the whole plane: springs coupled by a shear layer.";
+    ElasticLayer(elastic_layer::ElasticLayer) => "elastic-layer",
+        "Homogeneous elastic layer of depth h on a rigid base (rough or smooth).";
+    Kerr(kerr::Kerr) => "kerr",
+        "Kerr's three-parameter soil: springs c (upper) in series with a Pasternak soil.";
 }
 
 /// The compliance operator T.

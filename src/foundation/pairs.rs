@@ -157,7 +157,11 @@ mod tests {
     fn dense_bytes_is_the_size_of_the_dense_matrix() {
         for (sym_x, sym_y) in [(false, false), (true, true)] {
             let mesh = Mesh::new(2.0, 1.5, [6, 4], sym_x, sym_y);
-            let t = dense_matrix(&mesh, 1.0, &Kernel::Boussinesq);
+            let t = dense_matrix(
+                &mesh,
+                1.0,
+                &Kernel::new(crate::foundation::halfspace::Boussinesq),
+            );
             assert_eq!(t.nrows(), mesh.n_nodes());
             assert_eq!(
                 dense_bytes(&mesh),

@@ -13,7 +13,7 @@ pub mod modes;
 use std::sync::Arc;
 
 use crate::foundation::kernel::Kernel;
-use crate::foundation::{self, fft, pairs, winkler, Compliance, FoundationKind, SoilShape};
+use crate::foundation::{self, fft, pairs, winkler, Compliance, FoundationKind};
 use crate::integrals::{line_integrals, patch_integrals};
 use crate::mesh::{Dof, DofMap, Mesh};
 use crate::model::{ConstraintPoints, Load, Model, Void, Zone};
@@ -183,6 +183,7 @@ impl Operators {
                     poisson: 0.0,
                 },
                 FoundationKind::Winkler,
+                None,
                 1.0,
                 &[],
                 ConstraintPoints::Nodal,
@@ -199,9 +200,9 @@ impl Operators {
         let mut ops = Self::build_all(
             mesh,
             section,
-            g.foundation,
+            g.foundation(),
+            g.kernel(),
             c,
-            g.soil_shape(),
             &model.zones,
             &model.loads,
             model.constraint,
@@ -222,14 +223,16 @@ impl Operators {
         }
     }
 
-    /// Assemble from parts: a mesh, a section, the foundation and its constant
-    /// (1/K for Winkler, (1 − ν_s²)/(π E_s) for the half-space, in consistent units), whole-plate
-    /// loads and the constraint points. Not for a Pasternak soil, which needs its decay length
-    /// ([`Self::build_all`]).
+    /// Assemble from parts: a mesh, a section, the foundation with its kernel (None for the
+    /// local Winkler soil; [`crate::model::Groups::kernel`]) and its constant (1/K for Winkler,
+    /// (1 − ν_s²)/(π E_s) for the half-space, in consistent units), whole-plate loads and the
+    /// constraint points.
+    #[allow(clippy::too_many_arguments)]
     pub fn build(
         mesh: Mesh,
         section: Section,
         foundation: FoundationKind,
+        kernel: Option<Kernel>,
         foundation_constant: f64,
         loads: &[Load],
         constraint: ConstraintPoints,
@@ -239,8 +242,8 @@ impl Operators {
             mesh,
             section,
             foundation,
+            kernel,
             foundation_constant,
-            SoilShape::default(),
             &[],
             loads,
             constraint,
@@ -249,17 +252,15 @@ impl Operators {
         )
     }
 
-    /// [`Self::build`] with Winkler zones of another modulus, the soil's `shape` (the Pasternak
-    /// decay length √(G_p/k) in the unit system, the constant then 1/k; the layer's depth and
-    /// ν_s, the constant as for the half-space; ignored by the other soils), and a non-local T dense or, `toeplitz`, as the FFT operator of the
-    /// iterative route ([`fft::ToeplitzCompliance`]).
+    /// [`Self::build`] with Winkler zones of another modulus, and a non-local T dense or,
+    /// `toeplitz`, as the FFT operator of the iterative route ([`fft::ToeplitzCompliance`]).
     #[allow(clippy::too_many_arguments)]
     pub fn build_all(
         mesh: Mesh,
         section: Section,
         foundation: FoundationKind,
+        kernel: Option<Kernel>,
         foundation_constant: f64,
-        shape: SoilShape,
         zones: &[Zone],
         loads: &[Load],
         constraint: ConstraintPoints,
@@ -273,7 +274,6 @@ impl Operators {
             None => plate::assemble_stiffness(&mesh, &dofs, &section),
         };
         let f = load_vector_with(&mesh, &dofs, &section, loads);
-        let kernel = foundation.kernel(shape);
         let (b, t) = match &kernel {
             None => (
                 foundation::coupling(&mesh, &dofs, true),

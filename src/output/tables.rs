@@ -135,24 +135,10 @@ fn stress_line(s: &Summary, units: &Units) -> String {
 pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
     let g = &s.dimensionless;
     let mut l = vec![format!("liftoff — {}", s.title)];
-    // A Pasternak soil's second group and its decay length.
-    let shear = match (g.shear, g.decay_length) {
-        (Some(sh), Some(lambda)) => format!(", Γ_g = {sh:.4e}, λ/L = {lambda:.4}"),
-        _ => match (g.depth, g.soil_nu) {
-            // An elastic layer's depth ratio, Poisson's ratio and base.
-            (Some(h), Some(nu_s)) => format!(
-                ", h/L = {h:.4}, ν_s = {nu_s}, {} base",
-                g.base.map_or("rough", |b| b.name())
-            ),
-            _ => String::new(),
-        },
-    };
-    // A Kerr soil's upper springs.
-    let upper = g
-        .upper
-        .map_or(String::new(), |u| format!(", Γ_c = {u:.4e}"));
+    // The soil's own groups.
+    let own = g.soil.describe(g.gamma, g.mu);
     l.push(format!(
-        "  foundation : {} (Γ = {:.4e}{shear}{upper}, Δ = {:.4e}, μ = {:.4}, ν = {})",
+        "  foundation : {} (Γ = {:.4e}{own}, Δ = {:.4e}, μ = {:.4}, ν = {})",
         s.foundation, g.gamma, g.delta, g.mu, g.nu
     ));
     l.push(format!(

@@ -173,7 +173,7 @@ impl Case {
         format!(
             "Paper Fig. {}: {plate}, {}, {load}, {} contact, Γ = {:e}",
             self.figure,
-            foundation_names(self.foundation).label,
+            self.foundation.names().label,
             self.contact.name(),
             self.gamma
         )
@@ -219,28 +219,6 @@ impl Case {
 /// The paper's penalty iteration: ε̄ = [`PENALTY`].
 pub(super) fn paper_penalty() -> Method {
     Method::Penalty(PenaltySettings::fixed(PENALTY))
-}
-
-/// A foundation's names in the paper's outputs.
-pub(super) struct FoundationNames {
-    /// In captions and titles ("elastic half-space").
-    pub(super) label: &'static str,
-    /// In paper.md's tables ("half-space").
-    pub(super) short: &'static str,
-    /// In file names ("halfspace").
-    pub(super) tag: &'static str,
-}
-
-/// The names of `f` in the paper's outputs, one arm per soil.
-pub(super) fn foundation_names(f: FoundationKind) -> FoundationNames {
-    let (label, short, tag) = match f {
-        FoundationKind::HalfSpace => ("elastic half-space", "half-space", "halfspace"),
-        FoundationKind::Winkler => ("Winkler subgrade", "Winkler", "winkler"),
-        FoundationKind::Pasternak => ("Pasternak soil", "Pasternak", "pasternak"),
-        FoundationKind::ElasticLayer => ("elastic layer", "elastic layer", "layer"),
-        FoundationKind::Kerr => ("Kerr soil", "Kerr", "kerr"),
-    };
-    FoundationNames { label, short, tag }
 }
 
 /// The unbonded cases of Figs. 3–5 (Fig. 6 reuses Fig. 5) and the bonded ones of Fig. 7.

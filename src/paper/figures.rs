@@ -4,7 +4,7 @@ use std::path::Path;
 
 use plotters::style::RGBColor;
 
-use super::cases::{foundation_names, FOUNDATIONS};
+use super::cases::FOUNDATIONS;
 use super::solved::Solved;
 use super::{LoadCondition2, PaperFigure};
 use crate::error::Result;
@@ -27,7 +27,7 @@ pub(super) fn draw(
     let mut files = Vec::new();
     for fig in figures.iter_mut() {
         for foundation in FOUNDATIONS {
-            let tag = format!("fig{}-{}", fig.number, foundation_names(foundation).tag);
+            let tag = format!("fig{}-{}", fig.number, foundation.names().stem);
             let (svg_name, png_name) = (format!("{tag}.svg"), format!("{tag}.png"));
             let svg_path = staged.path(&svg_name);
             let png_path = staged.path(&png_name);
@@ -90,7 +90,7 @@ impl Chart<'_> {
             format!(
                 "Fig. 6: contact regions, μ = 0.5, load condition 2 (γ = {}), {}, {} × {} elements",
                 self.load2.gamma(foundation),
-                foundation_names(foundation).label,
+                foundation.names().label,
                 elements[0],
                 elements[1]
             )
@@ -99,7 +99,7 @@ impl Chart<'_> {
                 "Fig. {}: {}, {}, {} × {} elements",
                 fig.number,
                 fig.title,
-                foundation_names(foundation).label,
+                foundation.names().label,
                 elements[0],
                 elements[1]
             )

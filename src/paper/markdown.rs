@@ -1,7 +1,7 @@
 //! `paper.md`: per figure, the tables of the runs, the foundations and the bonded comparison,
 //! then what the paper states next to what we find.
 
-use super::cases::{foundation_names, FOUNDATIONS};
+use super::cases::FOUNDATIONS;
 use super::{
     paper_quarter_elements, PaperFigure, PaperReport, PaperRun, DELTA, NU, PAPER_CONTACT_RADIUS,
     PAPER_STEPS, PENALTY, SVEC_CONTACT_RADIUS, WINKLER_INFINITE_PLATE_RADIUS,
@@ -86,7 +86,7 @@ fn runs_table(md: &mut String, fig: &PaperFigure) {
             md,
             &format!(
                 "| {} | {} | {} = {:.2e} | {} × {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
-                foundation_names(r.foundation).short,
+                r.foundation.names().short,
                 r.contact.name(),
                 gamma_name(r.gamma_index),
                 r.gamma,
@@ -153,7 +153,7 @@ fn bonded_table(md: &mut String, fig: &PaperFigure) {
                 md,
                 &format!(
                     "| {} | {} | {} / {} | {} / {} | {} / {} | {} | {:.1} % | {:.1} % | {:.1} % | {:.1} % |",
-                    foundation_names(b.foundation).short,
+                    b.foundation.names().short,
                     b.refine,
                     e3(b.v_max_bonded),
                     e3(b.v_max_unbonded),
@@ -349,7 +349,7 @@ fn bonded_statement(md: &mut String, fig: &PaperFigure, max_level: usize) {
                 md,
                 &format!(
                     "| \"bonded and unbonded solutions … differ mainly in displacements\" ({}) | rms difference {:.0} % in V against {:.0} % in σ; corner V {} bonded vs {} unbonded |",
-                    foundation_names(b.foundation).short,
+                    b.foundation.names().short,
                     100.0 * b.v_rms_difference,
                     100.0 * b.sigma_rms_difference,
                     e3(b.v_corner_bonded),
@@ -411,7 +411,7 @@ fn ordering(fig: &PaperFigure) -> (bool, Vec<String>) {
                 ok = false;
                 notes.push(format!(
                     "{} at refine {level}: radii {:?}",
-                    foundation_names(f).short,
+                    f.names().short,
                     radii.iter().map(|p| f3(p.1)).collect::<Vec<_>>()
                 ));
             }

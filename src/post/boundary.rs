@@ -93,7 +93,11 @@ pub fn self_compliance(ops: &Operators) -> f64 {
 /// ∫∫ f(x) f(x') / |x − x'| dA' dA for the bilinear pyramid f of an interior node of a grid of
 /// hx × hy elements, summed from the tabulated element-pair blocks.
 pub fn pyramid_self_integral(hx: f64, hy: f64) -> f64 {
-    pyramid_self_integral_of(&Kernel::Boussinesq, hx, hy)
+    pyramid_self_integral_of(
+        &Kernel::new(crate::foundation::halfspace::Boussinesq),
+        hx,
+        hy,
+    )
 }
 
 /// The same with any surface kernel K(|x − x'|) in place of 1/|x − x'|.

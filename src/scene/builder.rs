@@ -82,16 +82,12 @@ impl ModelBuilder {
         self.file.dimensionless = Some(DimensionlessSpec {
             foundation,
             gamma,
-            shear: None,
-            upper: None,
-            depth: None,
-            soil_nu: None,
-            base: None,
             delta,
             mu,
             nu,
             allowable_pressure: None,
             zone: Vec::new(),
+            soil: Default::default(),
         });
         self
     }
@@ -100,7 +96,7 @@ impl ModelBuilder {
     /// [`Self::dimensionless`] with `FoundationKind::Pasternak`).
     pub fn shear(mut self, shear: f64) -> Self {
         if let Some(d) = self.file.dimensionless.as_mut() {
-            d.shear = Some(shear);
+            d.soil.insert("shear".into(), shear.into());
         }
         self
     }
@@ -109,8 +105,8 @@ impl ModelBuilder {
     /// (after [`Self::dimensionless`] with `FoundationKind::ElasticLayer`).
     pub fn layer(mut self, depth: f64, soil_nu: f64) -> Self {
         if let Some(d) = self.file.dimensionless.as_mut() {
-            d.depth = Some(depth);
-            d.soil_nu = Some(soil_nu);
+            d.soil.insert("depth".into(), depth.into());
+            d.soil.insert("soil_nu".into(), soil_nu.into());
         }
         self
     }
@@ -119,7 +115,7 @@ impl ModelBuilder {
     /// (after [`Self::layer`]).
     pub fn base(mut self, base: crate::foundation::layer::Base) -> Self {
         if let Some(d) = self.file.dimensionless.as_mut() {
-            d.base = Some(base.name().to_string());
+            d.soil.insert("base".into(), base.name().into());
         }
         self
     }

@@ -7,8 +7,8 @@
 //! line, a panel narrower than one element), E56 (a parameter missing, not positive or not for
 //! that kind; a name used twice), E57 (the bars of a doweled joint).
 
-use super::numbers::finite_positive;
 use super::spec::{JointSpec, SceneFile};
+use crate::check::finite_positive;
 use crate::error::{Error, Result};
 use crate::layout::{Axis, DowelBar, Joint, JointKind, JointType, Layout};
 

@@ -2,12 +2,11 @@
 //! the Winkler zones and the allowable pressure — in unit geometry with magnitudes not yet
 //! divided by P, since every combination has its own P ([`super::validate`] does that).
 
-use super::numbers::finite_positive;
 use super::spec::{Coord, LoadKind, LoadSpec};
 use super::temperature::Thermal;
 use super::SceneFile;
+use crate::check::finite_positive;
 use crate::error::{Error, Result};
-use crate::foundation::FoundationKind;
 use crate::model::{Groups, Load, LoadReference, Void, Zone};
 
 /// A load as written, in unit-system geometry, its magnitude not yet divided by P: newtons (SI
@@ -460,14 +459,7 @@ pub(super) fn voids_for(
     what: &str,
 ) -> Result<Vec<Void>> {
     let c = groups.mu * groups.gamma;
-    let area = 4.0 * groups.mu;
-    let settlement = match groups.foundation {
-        // Pasternak: its springs' settlement, an upper bound (the shear layer spreads the load).
-        FoundationKind::Winkler | FoundationKind::Pasternak => 4.0 * c / area,
-        // Kerr: both spring layers in series (Γ_c beside Γ_w).
-        FoundationKind::Kerr => 4.0 * (c + groups.mu * groups.upper.unwrap_or(0.0)) / area,
-        FoundationKind::HalfSpace | FoundationKind::ElasticLayer => 3.0 * c * 4.0 / area.sqrt(),
-    };
+    let settlement = groups.soil.settlement(c, groups.mu);
     raw.iter()
         .enumerate()
         .map(|(k, v)| {
@@ -505,14 +497,14 @@ pub const ZONE_RATIO_RANGE: [f64; 2] = [1e-6, 1e6];
 /// ratio (reference modulus over the zone's).
 pub(super) fn zones(file: &SceneFile, groups: &Groups, scale_xy: [f64; 2]) -> Result<Vec<Zone>> {
     let (specs, reference, prefix, physical) = match (&file.foundation, &file.dimensionless) {
-        (Some(f), _) => (&f.zone, f.modulus, "foundation.zone", true),
+        (Some(f), _) => (&f.zone, f.number("modulus"), "foundation.zone", true),
         (None, Some(d)) => (&d.zone, Some(groups.gamma), "dimensionless.zone", false),
         (None, None) => return Ok(Vec::new()),
     };
     if specs.is_empty() {
         return Ok(Vec::new());
     }
-    if groups.foundation != FoundationKind::Winkler {
+    if !groups.foundation().is_local() {
         return Err(Error::invalid(
             format!("{prefix}[0]"),
             "zones of another modulus apply to a Winkler subgrade only; a half-space, a Pasternak soil or an elastic layer is homogeneous (model the soft patch with a Winkler foundation, or leave the zone out)",

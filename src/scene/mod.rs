@@ -8,7 +8,7 @@
 //!
 //! * [`spec`]: the serde types of the sections, with their defaults;
 //! * [`validate`]: one function per section;
-//! * [`soils`]: one function per soil, in SI units and in the paper's groups;
+//! * the soils read their own keys ([`crate::foundation::soil`]);
 //! * `joints` and `panels`: `[[joint]]` and `[[panel]]` into the model's
 //!   [`crate::layout::Layout`], and the loads a joint line would split;
 //! * [`builder`]: [`Model::builder`], the same validation from Rust without writing TOML.
@@ -17,10 +17,8 @@ pub mod builder;
 mod joints;
 mod load_spec;
 mod loads;
-mod numbers;
 pub mod overrides;
 mod panels;
-pub mod soils;
 pub mod spec;
 pub mod temperature;
 pub mod validate;

@@ -2,8 +2,8 @@
 //! (E59), after the joints ([`super::joints`]).
 
 use super::joints::{Frame, TOL};
-use super::numbers::finite_positive;
 use super::spec::{PanelSpec, SceneFile};
+use crate::check::finite_positive;
 use crate::error::{Error, Result};
 use crate::layout::{Axis, Layout, PanelOverride, PanelSection};
 use crate::model::Load;

@@ -2,6 +2,7 @@
 
 use serde::Deserialize;
 
+use crate::foundation::soil::{KeyMap, KeyValue};
 use crate::foundation::FoundationKind;
 use crate::layout::{Axis, JointType};
 use crate::method::{Contact, MethodKind, QpForm, QpSolver, Route, Start};
@@ -51,92 +52,77 @@ impl PlateSpec {
     }
 }
 
-/// `[foundation]` in SI units.
+/// `[foundation]` in SI units: the soil's `model`, the keys common to every soil, and the soil's
+/// own keys, which the soil reads and checks ([`crate::foundation::soil`]: each soil's file
+/// lists its keys with their units).
 #[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
 pub struct FoundationSpec {
-    /// "winkler", "half-space", "pasternak" or "elastic-layer".
+    /// "winkler", "half-space", "pasternak", "elastic-layer" or "kerr".
     pub model: FoundationKind,
-    /// Winkler (or Pasternak spring) subgrade modulus K, N/m³.
-    #[serde(default)]
-    pub modulus: Option<f64>,
-    /// Pasternak shear-layer modulus G_p, N/m (force per unit length).
-    #[serde(default)]
-    pub shear_modulus: Option<f64>,
-    /// Kerr: the upper springs' modulus c, N/m³.
-    #[serde(default)]
-    pub upper_modulus: Option<f64>,
-    /// Half-space or elastic layer E_s, Pa.
-    #[serde(default)]
-    pub youngs_modulus: Option<f64>,
-    /// Half-space or elastic layer ν_s.
-    #[serde(default)]
-    pub poissons_ratio: Option<f64>,
-    /// Elastic layer: its depth h down to the rigid base, m.
-    #[serde(default)]
-    pub depth: Option<f64>,
-    /// Elastic layer: the base, "rough" (bonded: u = w = 0; the default) or "smooth"
-    /// (frictionless: τ = w = 0).
-    #[serde(default)]
-    pub base: Option<String>,
     /// Pressure the soil may take, Pa: the bearing check (optional).
     #[serde(default)]
     pub allowable_pressure: Option<f64>,
     /// Softer or stiffer patches of a Winkler subgrade.
     #[serde(default)]
     pub zone: Vec<ZoneSpec>,
+    /// The soil's own keys (`modulus`, `youngs_modulus`, …): every other key of the section.
+    #[serde(flatten)]
+    pub soil: KeyMap,
 }
 
 impl FoundationSpec {
-    /// A Winkler subgrade of modulus `k`, N/m³.
-    pub fn winkler(k: f64) -> Self {
+    /// A soil `model` with its own `keys` (SI units, as in a scene file).
+    pub fn soil<K: Into<KeyValue>>(
+        model: FoundationKind,
+        keys: impl IntoIterator<Item = (&'static str, K)>,
+    ) -> Self {
         Self {
-            model: FoundationKind::Winkler,
-            modulus: Some(k),
-            shear_modulus: None,
-            upper_modulus: None,
-            youngs_modulus: None,
-            poissons_ratio: None,
-            depth: None,
-            base: None,
+            model,
             allowable_pressure: None,
             zone: Vec::new(),
+            soil: keys
+                .into_iter()
+                .map(|(k, v)| (k.to_string(), v.into()))
+                .collect(),
         }
+    }
+
+    /// A Winkler subgrade of modulus `k`, N/m³.
+    pub fn winkler(k: f64) -> Self {
+        Self::soil(FoundationKind::Winkler, [("modulus", k)])
     }
 
     /// An elastic half-space of Young's modulus `e` (Pa) and Poisson's ratio `nu`.
     pub fn half_space(e: f64, nu: f64) -> Self {
-        Self {
-            model: FoundationKind::HalfSpace,
-            modulus: None,
-            shear_modulus: None,
-            upper_modulus: None,
-            youngs_modulus: Some(e),
-            poissons_ratio: Some(nu),
-            depth: None,
-            base: None,
-            allowable_pressure: None,
-            zone: Vec::new(),
-        }
+        Self::soil(
+            FoundationKind::HalfSpace,
+            [("youngs_modulus", e), ("poissons_ratio", nu)],
+        )
     }
 
     /// A Pasternak soil: springs of modulus `k` (N/m³) coupled by a shear layer of modulus
     /// `g_p` (N/m).
     pub fn pasternak(k: f64, g_p: f64) -> Self {
-        Self {
-            model: FoundationKind::Pasternak,
-            shear_modulus: Some(g_p),
-            ..Self::winkler(k)
-        }
+        Self::soil(
+            FoundationKind::Pasternak,
+            [("modulus", k), ("shear_modulus", g_p)],
+        )
     }
 
     /// An elastic layer of Young's modulus `e` (Pa), Poisson's ratio `nu` and depth `h` (m)
     /// on a rough rigid base.
     pub fn elastic_layer(e: f64, nu: f64, h: f64) -> Self {
-        Self {
-            model: FoundationKind::ElasticLayer,
-            depth: Some(h),
-            ..Self::half_space(e, nu)
+        Self::soil(
+            FoundationKind::ElasticLayer,
+            [("youngs_modulus", e), ("poissons_ratio", nu), ("depth", h)],
+        )
+    }
+
+    /// The number `key` of the soil's own keys, if given as a number.
+    pub fn number(&self, key: &str) -> Option<f64> {
+        match self.soil.get(key) {
+            Some(KeyValue::Number(v)) => Some(*v),
+            _ => None,
         }
     }
 }
@@ -182,29 +168,15 @@ pub struct CombinationSpec {
     pub factors: std::collections::BTreeMap<String, f64>,
 }
 
-/// `[dimensionless]`: the paper's groups (eq. 4.1).
+/// `[dimensionless]`: the paper's groups (eq. 4.1); the soil's own groups (`shear`, `depth`, …)
+/// are read and checked by the soil ([`crate::foundation::soil`]).
 #[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
 pub struct DimensionlessSpec {
-    /// "winkler", "half-space", "pasternak" or "elastic-layer".
+    /// "winkler", "half-space", "pasternak", "elastic-layer" or "kerr".
     pub foundation: FoundationKind,
-    /// Γ_w or Γ_h (Pasternak: Γ_w of its springs; elastic layer: Γ_h of its E_s, ν_s).
+    /// Γ_w or Γ_h (Pasternak, Kerr: Γ_w of its (lower) springs; elastic layer: Γ_h of its E_s,
+    /// ν_s).
     pub gamma: f64,
-    /// Pasternak only: the shear parameter Γ_g = G_p L²/D.
-    #[serde(default)]
-    pub shear: Option<f64>,
-    /// Kerr: Γ_c = D/(c μ L⁴) of the upper springs.
-    #[serde(default)]
-    pub upper: Option<f64>,
-    /// Elastic layer only: the depth ratio h/L (layer depth over the plate's half-length).
-    #[serde(default)]
-    pub depth: Option<f64>,
-    /// Elastic layer only: the layer's Poisson's ratio ν_s.
-    #[serde(default)]
-    pub soil_nu: Option<f64>,
-    /// Elastic layer only: its rigid base, "rough" (default) or "smooth".
-    #[serde(default)]
-    pub base: Option<String>,
     /// Δ.
     pub delta: f64,
     /// μ = width / length.
@@ -217,6 +189,9 @@ pub struct DimensionlessSpec {
     /// Patches with another Γ_w (Winkler only).
     #[serde(default)]
     pub zone: Vec<ZoneSpec>,
+    /// The soil's own groups: every other key of the section.
+    #[serde(flatten)]
+    pub soil: KeyMap,
 }
 
 /// One `[[joint]]`: a line across the whole plate, `x = …` or `y = …` (m from the plate's

@@ -5,16 +5,16 @@ use super::loads::{
     normalise, raw_allowable, raw_loads, raw_voids, voids_for, zones, RawLoad, RawVoid,
     DEFAULT_CASE,
 };
-pub(super) use super::numbers::finite_positive;
-use super::numbers::poisson;
-use super::soils::{self, PlateGroups};
 use super::spec::{
     DimensionlessSpec, FoundationSpec, LoadKind, MeshSpec, PenaltySpec, PlateSpec, SolverSpec,
 };
 use super::temperature::Thermal;
 use super::{Combination, Problem, SceneFile};
 use crate::budget::default_memory_limit;
+pub(super) use crate::check::finite_positive;
+use crate::check::poisson;
 use crate::error::{Error, Result};
+use crate::foundation::soil::PlateScale;
 use crate::method::{Contact, Method, PenaltySettings, QpSettings};
 use crate::model::{Groups, Load, LoadReference, Model, Physical, Zone};
 
@@ -91,7 +91,21 @@ fn si_groups(p: &PlateSpec, f: &FoundationSpec) -> Result<(Groups, f64, f64)> {
     let mu = aspect_ratio("plate.width", width / length)?;
     let d = e * h.powi(3) / (12.0 * (1.0 - nu * nu));
     let delta = h * h / (6.0 * chi * (1.0 - nu) * mu * l * l);
-    let groups = soils::si(f, PlateGroups { delta, mu, nu }, l, d)?;
+    let plate = PlateScale {
+        delta,
+        mu,
+        nu,
+        half_length: l,
+        rigidity: d,
+    };
+    let (gamma, soil) = f.model.from_si(&f.soil, &plate)?;
+    let groups = Groups {
+        gamma,
+        delta,
+        mu,
+        nu,
+        soil,
+    };
     // Each input is finite and positive, but their combination may still underflow or overflow
     // (a 1e308 m plate, a 1e-200 m thickness).
     for (name, v) in [("rigidity D", d), ("Δ", delta), ("Γ", groups.gamma)] {
@@ -116,7 +130,21 @@ fn dimensionless_groups(g: &DimensionlessSpec) -> Result<Groups> {
         finite_positive("dimensionless.mu", g.mu, "width/length")?,
     )?;
     let nu = poisson("dimensionless.nu", g.nu)?;
-    soils::dimensionless(g, PlateGroups { delta, mu, nu }, gamma)
+    let plate = PlateScale {
+        delta,
+        mu,
+        nu,
+        half_length: 1.0,
+        rigidity: 1.0,
+    };
+    let soil = g.foundation.from_groups(&g.soil, &plate, gamma)?;
+    Ok(Groups {
+        gamma,
+        delta,
+        mu,
+        nu,
+        soil,
+    })
 }
 
 /// `[mesh] elements`: two positive element counts.

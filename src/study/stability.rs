@@ -52,20 +52,7 @@ impl StabilityParam {
             StabilityParam::Penalty => log_space(1e-2, 1e-14, 13),
             StabilityParam::Position => vec![0.0, 0.25, 0.5, 0.75, 0.9, 1.0],
             StabilityParam::Mu => vec![0.1, 0.25, 0.5, 0.75, 1.0],
-            StabilityParam::Mesh => match foundation {
-                // Winkler: sparse penalty up to 512 per side; the dense QP is refused beyond
-                // its limit.
-                FoundationKind::Winkler => vec![8.0, 16.0, 32.0, 64.0, 128.0, 256.0, 512.0],
-                // Half-space: the QP is dense and refused at 512 per side; the penalty takes
-                // the iterative route there (`Route::Auto`) and solves it.
-                // (the other non-local soils, Pasternak and the elastic layer, likewise).
-                FoundationKind::HalfSpace
-                | FoundationKind::Pasternak
-                | FoundationKind::ElasticLayer
-                | FoundationKind::Kerr => {
-                    vec![8.0, 16.0, 32.0, 64.0, 128.0, 512.0]
-                }
-            },
+            StabilityParam::Mesh => foundation.stability_meshes(),
         }
     }
 
@@ -96,7 +83,7 @@ pub fn stability_plan(bases: &[Problem]) -> Vec<StabilityCase<'_>> {
     let mut plan = Vec::new();
     for base in bases {
         for param in StabilityParam::ALL {
-            for value in param.values(base.model.groups.foundation) {
+            for value in param.values(base.model.groups.foundation()) {
                 for &method in param.methods() {
                     plan.push(StabilityCase {
                         base,
@@ -186,7 +173,7 @@ pub fn stability_run(case: &StabilityCase<'_>) -> StabilityRow {
             model.elements = [n, n];
         }
     }
-    let foundation = model.groups.foundation;
+    let foundation = model.groups.foundation();
     let t = Instant::now();
     let result = crate::analysis::prepare(
         &model,
@@ -246,7 +233,7 @@ pub fn stability_sweep(
         .map(|case| {
             cases.start(&format!(
                 "{} {} = {:.2e} ({})",
-                case.base.model.groups.foundation.name(),
+                case.base.model.groups.foundation().name(),
                 case.param.name(),
                 case.value,
                 case.method.name()

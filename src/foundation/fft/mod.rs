@@ -160,7 +160,7 @@ fn preimages(mesh: &Mesh, shift: [usize; 2], i: usize, j: usize) -> Vec<(usize, 
 impl ToeplitzCompliance {
     /// Tabulate the pair kernels of `mesh` with the half-space constant `c` and transform them.
     pub fn new(mesh: &Mesh, c: f64) -> Self {
-        Self::with_kernel(mesh, c, &Kernel::Boussinesq)
+        Self::with_kernel(mesh, c, &Kernel::new(super::halfspace::Boussinesq))
     }
 
     /// The same for any surface kernel ([`Kernel`]) with its constant `c`.

@@ -29,15 +29,27 @@ fn check(a: f64, b: f64, full: [usize; 2], sym_x: bool, sym_y: bool) {
 /// [`check`] on a mesh with a layout.
 fn check_layout(a: f64, b: f64, full: [usize; 2], sym_x: bool, sym_y: bool, layout: &Layout) {
     let mesh = Mesh::new(a, b, full, sym_x, sym_y).with_layout(layout);
-    check_mesh(&mesh, b / a, &Kernel::Boussinesq);
+    check_mesh(
+        &mesh,
+        b / a,
+        &Kernel::new(crate::foundation::halfspace::Boussinesq),
+    );
     // A Pasternak kernel decaying within the plate (λ = 0.3) and one reaching beyond it.
     for lambda in [0.3, 3.0] {
-        check_mesh(&mesh, b / a, &Kernel::Pasternak { lambda });
+        check_mesh(
+            &mesh,
+            b / a,
+            &Kernel::new(crate::foundation::pasternak::PasternakKernel { lambda }),
+        );
     }
     // A layer whose kernel is cut within the plate (40 h = 0.8) and a deep one.
     for depth in [0.02, 0.7] {
         let table = super::super::layer::LayerTable::shared(0.3, super::super::layer::Base::Rough);
-        check_mesh(&mesh, b / a, &Kernel::ElasticLayer { depth, table });
+        check_mesh(
+            &mesh,
+            b / a,
+            &Kernel::new(crate::foundation::elastic_layer::LayerKernel { depth, table }),
+        );
     }
 }
 
@@ -160,7 +172,10 @@ fn merging_the_copies_gives_the_plain_compliance() {
         let plain = Mesh::new(2.0, 1.5, [8, 8], sx, sy);
         let jointed = plain.clone().with_layout(&l);
         assert!(jointed.n_nodes() > plain.n_nodes());
-        for kernel in [Kernel::Boussinesq, Kernel::Pasternak { lambda: 0.4 }] {
+        for kernel in [
+            Kernel::new(crate::foundation::halfspace::Boussinesq),
+            Kernel::new(crate::foundation::pasternak::PasternakKernel { lambda: 0.4 }),
+        ] {
             let t0 = dense(&plain, 1.0, &kernel);
             let t = dense(&jointed, 1.0, &kernel);
             let n0 = plain.n_nodes();

@@ -1,10 +1,10 @@
-//! Checks of single numbers shared by the scene's readers ([`super::validate`], [`super::soils`],
-//! [`super::loads`]).
+//! Checks of single numbers shared by the scene's readers ([`crate::scene`]) and the soils'
+//! own keys ([`crate::foundation::soil`]): a floor below both.
 
 use crate::error::{Error, Result};
 
 /// `v` if it is finite and positive, else an error naming `field` and the `unit` expected.
-pub(super) fn finite_positive(field: &str, v: f64, unit: &str) -> Result<f64> {
+pub(crate) fn finite_positive(field: &str, v: f64, unit: &str) -> Result<f64> {
     if !v.is_finite() {
         return Err(Error::invalid(
             field,
@@ -21,7 +21,7 @@ pub(super) fn finite_positive(field: &str, v: f64, unit: &str) -> Result<f64> {
 }
 
 /// `v` if it is a Poisson's ratio, in (−1, 0.5), else an error naming `field`.
-pub(super) fn poisson(field: &str, v: f64) -> Result<f64> {
+pub(crate) fn poisson(field: &str, v: f64) -> Result<f64> {
     if !v.is_finite() || v <= -1.0 || v >= 0.5 {
         return Err(Error::invalid(
             field,
