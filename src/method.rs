@@ -28,7 +28,7 @@ pub enum MethodKind {
     Qp,
 }
 
-crate::names!(Contact, Bonded => "bonded", Unbonded => "unbonded");
+crate::choice::names!(Contact, Bonded => "bonded", Unbonded => "unbonded");
 
 /// Which method produced a solution, as reports name it: bonded contact is one direct solve.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -42,8 +42,8 @@ pub enum SolvedBy {
     Qp,
 }
 
-crate::names!(SolvedBy, Direct => "direct", Penalty => "penalty", Qp => "qp");
-crate::names!(MethodKind, Penalty => "penalty", Qp => "qp");
+crate::choice::names!(SolvedBy, Direct => "direct", Penalty => "penalty", Qp => "qp");
+crate::choice::names!(MethodKind, Penalty => "penalty", Qp => "qp");
 
 /// Where an iterative method starts on a large grid (the scene's `[solver] start`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, Default)]
@@ -59,7 +59,7 @@ pub enum Start {
     Cold,
 }
 
-crate::names!(Start, Nested => "nested", Cold => "cold");
+crate::choice::names!(Start, Nested => "nested", Cold => "cold");
 
 /// Settings of the penalty iteration.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -126,7 +126,7 @@ pub enum Route {
     Iterative,
 }
 
-crate::names!(Route, Auto => "auto", Dense => "dense", Iterative => "iterative");
+crate::choice::names!(Route, Auto => "auto", Dense => "dense", Iterative => "iterative");
 
 impl Route {
     /// Largest half-space model (pressure nodes) that `auto` solves densely. The iterative
@@ -262,7 +262,7 @@ pub enum QpForm {
     Primal,
 }
 
-crate::names!(QpForm, Auto => "auto", Schur => "schur", Lifted => "lifted", Primal => "primal");
+crate::choice::names!(QpForm, Auto => "auto", Schur => "schur", Lifted => "lifted", Primal => "primal");
 
 impl QpForm {
     /// The form used for a compliance T: `Auto` becomes `Primal` (diagonal T) or `Schur`.
@@ -305,7 +305,7 @@ pub enum QpSolver {
     ActiveSet,
 }
 
-crate::names!(QpSolver, Auto => "auto", Clarabel => "clarabel", ActiveSet => "active-set");
+crate::choice::names!(QpSolver, Auto => "auto", Clarabel => "clarabel", ActiveSet => "active-set");
 
 /// Settings of the matrix-free active-set QP solver ([`crate::solve::qp::active_set`]).
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -37,7 +37,7 @@ pub enum FoundationKind {
     Kerr,
 }
 
-crate::names!(FoundationKind, Winkler => "winkler", HalfSpace => "half-space",
+crate::choice::names!(FoundationKind, Winkler => "winkler", HalfSpace => "half-space",
     Pasternak => "pasternak", ElasticLayer => "elastic-layer", Kerr => "kerr");
 
 impl FoundationKind {
