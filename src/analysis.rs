@@ -8,11 +8,11 @@ use crate::error::Result;
 use crate::method::{Method, Route};
 use crate::model::Model;
 use crate::monitor::Monitor;
+use crate::operators::Operators;
 use crate::post::{self, Report};
 use crate::scene::Problem;
 use crate::solve::{self, Solution};
 use crate::summary::{Summary, Times};
-use crate::Operators;
 
 /// Operators, solution, report and summary of one solve.
 pub struct Analysis {

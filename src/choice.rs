@@ -22,8 +22,8 @@ pub trait Choice: Copy + PartialEq + Sized + 'static {
 }
 
 /// `name()`, `Display`, `FromStr` and [`Choice`] for the small enums of scene files and reports,
-/// from one list of `Variant => "name"`.
-#[macro_export]
+/// from one list of `Variant => "name"`. Crate-private: called as `crate::choice::names!`, so
+/// that its callers depend on this module, not on the crate root, and it is no public API.
 macro_rules! names {
     ($t:ty, $($v:ident => $s:literal),+) => {
         impl $t {
@@ -56,3 +56,5 @@ macro_rules! names {
         }
     };
 }
+
+pub(crate) use names;

@@ -13,8 +13,8 @@ use crate::budget;
 use crate::error::{Error, Result};
 use crate::model::Model;
 use crate::monitor::{Cases, Monitor};
+use crate::operators::Operators;
 use crate::scene::{Combination, Problem};
-use crate::Operators;
 
 /// One combination's run.
 pub struct CombinationRun {

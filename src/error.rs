@@ -105,7 +105,7 @@ pub enum ErrorKind {
     Cancelled,
 }
 
-crate::names!(ErrorKind, Invalid => "invalid", TooLarge => "too-large", Infeasible => "infeasible",
+crate::choice::names!(ErrorKind, Invalid => "invalid", TooLarge => "too-large", Infeasible => "infeasible",
     Numerical => "numerical", Io => "io", Cancelled => "cancelled");
 
 /// Result alias of the library.

@@ -47,7 +47,7 @@ pub enum JointType {
     Dowels,
 }
 
-crate::names!(JointType, Free => "free", Continuous => "continuous", Aggregate => "aggregate",
+crate::choice::names!(JointType, Free => "free", Continuous => "continuous", Aggregate => "aggregate",
     Tied => "tied", Dowels => "dowels");
 
 /// A joint's transfer with its constants in the unit system.

@@ -28,7 +28,7 @@ pub enum MethodKind {
     Qp,
 }
 
-crate::names!(Contact, Bonded => "bonded", Unbonded => "unbonded");
+crate::choice::names!(Contact, Bonded => "bonded", Unbonded => "unbonded");
 
 /// Which method produced a solution, as reports name it: bonded contact is one direct solve.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -42,8 +42,8 @@ pub enum SolvedBy {
     Qp,
 }
 
-crate::names!(SolvedBy, Direct => "direct", Penalty => "penalty", Qp => "qp");
-crate::names!(MethodKind, Penalty => "penalty", Qp => "qp");
+crate::choice::names!(SolvedBy, Direct => "direct", Penalty => "penalty", Qp => "qp");
+crate::choice::names!(MethodKind, Penalty => "penalty", Qp => "qp");
 
 /// Where an iterative method starts on a large grid (the scene's `[solver] start`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, Default)]
@@ -59,7 +59,7 @@ pub enum Start {
     Cold,
 }
 
-crate::names!(Start, Nested => "nested", Cold => "cold");
+crate::choice::names!(Start, Nested => "nested", Cold => "cold");
 
 /// Settings of the penalty iteration.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -111,31 +111,35 @@ impl Default for CgSettings {
     }
 }
 
-/// How the half-space compliance T is held and the penalty steps solved (the scene's
-/// `[solver] route`, the CLI's `--solver`).
+/// How a non-local soil's compliance T is held and the linear solves of the bonded, penalty and
+/// active-set methods run (the scene's `[solver] route`, the CLI's `--solver`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Route {
-    /// Dense up to [`Route::AUTO_DENSE_NODES`] pressure nodes (and always for the QP), iterative
-    /// beyond.
+    /// Dense up to [`Route::AUTO_DENSE_NODES`] pressure nodes, iterative beyond — for bonded
+    /// contact, the penalty and the matrix-free active-set QP, which is what the default QP
+    /// (`qp_solver = "auto"`, nodal constraints, no explicit `qp_form`) runs there. Always dense
+    /// for a QP that needs clarabel ([`QpSettings::needs_clarabel`]).
     Auto,
     /// Dense T and Schur complement, direct factorisations: memory ∝ n_σ², time ∝ n_σ³.
     Dense,
-    /// T applied by FFT, each penalty step by preconditioned conjugate gradients: memory and
-    /// time per iteration ∝ n_σ (log n_σ). Penalty and bonded contact only.
+    /// T applied by FFT, each linear solve (a bonded solve, a penalty step, an active-set face
+    /// solve) by preconditioned conjugate gradients: memory and time per iteration ∝ n_σ
+    /// (log n_σ). Bonded contact, the penalty and the matrix-free active-set QP; refused for a
+    /// QP that needs clarabel.
     Iterative,
 }
 
-crate::names!(Route, Auto => "auto", Dense => "dense", Iterative => "iterative");
+crate::choice::names!(Route, Auto => "auto", Dense => "dense", Iterative => "iterative");
 
 impl Route {
-    /// Largest half-space model (pressure nodes) that `auto` solves densely. The iterative
-    /// route is already faster from ~300 nodes (32 per side on the paper's case: 18 against
+    /// Largest non-local model (pressure nodes) that `auto` solves densely. The iterative route
+    /// is already faster from ~300 nodes (32 per side on the paper's case: 18 against
     /// 23 ms; 64 per side: 0.11 against 0.33 s), but the dense route is the reference and keeps
     /// the step counts of the direct iteration where its cost does not matter (≤ ~0.6 s).
     pub const AUTO_DENSE_NODES: usize = 1500;
 
-    /// Whether the half-space T of a model with `n_sigma` pressure nodes is held as a Toeplitz
+    /// Whether the non-local T of a model with `n_sigma` pressure nodes is held as a Toeplitz
     /// operator when solved with `method` under `constraint`. Refuses the iterative route for a
     /// QP that clarabel must solve (it needs the dense Schur complement); the matrix-free QP
     /// takes it like the penalty.
@@ -262,7 +266,7 @@ pub enum QpForm {
     Primal,
 }
 
-crate::names!(QpForm, Auto => "auto", Schur => "schur", Lifted => "lifted", Primal => "primal");
+crate::choice::names!(QpForm, Auto => "auto", Schur => "schur", Lifted => "lifted", Primal => "primal");
 
 impl QpForm {
     /// The form used for a compliance T: `Auto` becomes `Primal` (diagonal T) or `Schur`.
@@ -305,7 +309,7 @@ pub enum QpSolver {
     ActiveSet,
 }
 
-crate::names!(QpSolver, Auto => "auto", Clarabel => "clarabel", ActiveSet => "active-set");
+crate::choice::names!(QpSolver, Auto => "auto", Clarabel => "clarabel", ActiveSet => "active-set");
 
 /// Settings of the matrix-free active-set QP solver ([`crate::solve::qp::active_set`]).
 #[derive(Debug, Clone, Copy, PartialEq)]

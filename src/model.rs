@@ -41,8 +41,8 @@ pub enum SymmetryMode {
     None,
 }
 
-crate::names!(ConstraintPoints, Nodal => "nodal", Gauss => "gauss");
-crate::names!(SymmetryMode, Auto => "auto", None => "none");
+crate::choice::names!(ConstraintPoints, Nodal => "nodal", Gauss => "gauss");
+crate::choice::names!(SymmetryMode, Auto => "auto", None => "none");
 
 /// The paper's dimensionless groups of a problem, defined once: the model holds them and
 /// summary.json's `dimensionless` writes them (in this serde form, beside what the solve adds).

@@ -47,7 +47,7 @@ pub enum StepKind {
     ActiveSet,
 }
 
-crate::names!(StepKind, Penalty => "penalty step", ActiveSet => "active-set face solve");
+crate::choice::names!(StepKind, Penalty => "penalty step", ActiveSet => "active-set face solve");
 
 /// A cancel flag and a progress callback, either optional; passed by reference down every
 /// long loop.

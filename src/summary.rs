@@ -8,9 +8,9 @@ use crate::foundation::FoundationKind;
 use crate::method::{Contact, Method, QpSolver, SolvedBy};
 use crate::model::ConstraintPoints;
 use crate::model::{Groups, LoadReference, Model, Physical};
+use crate::operators::Operators;
 use crate::post::{Complementarity, Extent, Report, Resultant};
 use crate::solve::{Iteration, PenaltyStage, Solution};
-use crate::Operators;
 
 /// summary.json's `dimensionless`: the model's [`Groups`] (their foundation is the summary's
 /// own `foundation`), the Pasternak decay length, ε̄ and what P is. The groups read as its own

@@ -38,7 +38,7 @@ macro_rules! soils {
             )+
         }
 
-        crate::names!(FoundationKind, $($v => $name),+);
+        crate::choice::names!(FoundationKind, $($v => $name),+);
 
         /// A soil with its own constants as dimensionless groups (Γ beside it, in
         /// [`crate::model::Groups`]). Serialised as its constants alone (summary.json's

@@ -201,7 +201,7 @@ mod tests {
                 StabilityParam::Mesh,
                 MethodKind::Qp,
                 256.0,
-                RunOutcome::Failed(crate::ErrorKind::TooLarge),
+                RunOutcome::Failed(crate::error::ErrorKind::TooLarge),
             ),
         ];
         let want = "liftoff stability — 3 runs\n\

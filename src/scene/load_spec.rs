@@ -51,7 +51,7 @@ pub enum LoadKind {
     Gear,
 }
 
-crate::names!(LoadKind, Point => "point", Patch => "patch", Uniform => "uniform", Line => "line",
+crate::choice::names!(LoadKind, Point => "point", Patch => "patch", Uniform => "uniform", Line => "line",
     Temperature => "temperature", TemperatureProfile => "temperature-profile",
     Moisture => "moisture", BuiltInCurl => "built-in-curl", Axle => "axle", Gear => "gear");
 

@@ -98,7 +98,7 @@ pub enum StatusKind {
     SolverFailure,
 }
 
-crate::names!(StatusKind, Converged => "converged", Cycling => "cycling",
+crate::choice::names!(StatusKind, Converged => "converged", Cycling => "cycling",
     IterationLimit => "iteration-limit", PenaltyTooWeak => "penalty-too-weak",
     SolverFailure => "solver-failure");
 

@@ -22,7 +22,7 @@ pub enum ConstraintVariants {
     Both,
 }
 
-crate::names!(ConstraintVariants, Nodal => "nodal", Gauss => "gauss", Both => "both");
+crate::choice::names!(ConstraintVariants, Nodal => "nodal", Gauss => "gauss", Both => "both");
 
 impl ConstraintVariants {
     /// The constraint points swept, in order.

@@ -32,7 +32,7 @@ pub enum StabilityParam {
     Mesh,
 }
 
-crate::names!(StabilityParam, Gamma => "gamma", Penalty => "penalty", Position => "position", Mu => "mu", Mesh => "mesh");
+crate::choice::names!(StabilityParam, Gamma => "gamma", Penalty => "penalty", Position => "position", Mu => "mu", Mesh => "mesh");
 
 impl StabilityParam {
     /// Every parameter, in the order of the CSV and the maps.
@@ -184,7 +184,7 @@ pub fn stability_run(case: &StabilityCase<'_>) -> StabilityRow {
     .and_then(|ops| {
         // As a user's solve runs: from the coarser grid's answer where the method's start is
         // nested (the default), so the map shows the default path's failures.
-        let sol = solve::solve_nested(&model, &ops, &method, &crate::Monitor::NONE)?;
+        let sol = solve::solve_nested(&model, &ops, &method, &crate::monitor::Monitor::NONE)?;
         let rep = post::report(&model, &ops, &sol);
         Ok((sol, rep))
     });

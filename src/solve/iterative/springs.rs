@@ -316,7 +316,7 @@ mod tests {
 
     fn ops(n: usize) -> Operators {
         let text = crate::examples::scene("paper-halfspace").unwrap_or_default();
-        let p = crate::Problem::from_toml(
+        let p = crate::scene::Problem::from_toml(
             &text.replace("elements = [16, 16]", &format!("elements = [{n}, {n}]")),
         )
         .expect("paper scene");
@@ -381,7 +381,7 @@ mod tests {
         let text = crate::examples::scene("paper-halfspace").unwrap_or_default();
         let text = text.replace("elements = [16, 16]", &format!("elements = [{n}, {n}]"));
         let text = text.replace("[mesh]", &format!("{joints}\n[mesh]"));
-        let p = crate::Problem::from_toml(&text).expect("jointed paper scene");
+        let p = crate::scene::Problem::from_toml(&text).expect("jointed paper scene");
         Operators::assemble(&p.model)
     }
 

@@ -173,13 +173,13 @@ mod tests {
         let text = crate::examples::scene("paper-halfspace")
             .expect("bundled")
             .replace("elements = [16, 16]", "elements = [24, 24]");
-        let problem = crate::Problem::from_toml(&text).expect("scene");
+        let problem = crate::scene::Problem::from_toml(&text).expect("scene");
         let ops = Operators::assemble(&problem.model);
         let settings = QpSettings::default();
         let reference = crate::solve::qp::clarabel_dense::solve(&ops, &settings).expect("clarabel");
         let mut sys =
             IterativeSchur::with_any_compliance(&ops, settings.active_set.cg).expect("setup");
-        let mut run = Run::new(settings.active_set, crate::Monitor::NONE);
+        let mut run = Run::new(settings.active_set, crate::monitor::Monitor::NONE);
         let (point, _, k, status) = run
             .feasible(&mut sys, &ops, &vec![0.0; ops.n_sigma()])
             .expect("safeguard");
