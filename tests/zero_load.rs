@@ -271,9 +271,12 @@ fn unbonded_contact_still_refuses_loads_that_add_up_to_zero() {
         Method::Qp(Default::default()),
     ] {
         match liftoff::solve(&ops, &method) {
-            Err(Error::Infeasible(m)) => assert!(m.contains("upward or zero"), "{m}"),
+            // Curling alone: no net force and no couple. Zero pressure balances the plate, but
+            // where it rests on a soil that cannot pull is undetermined: ill-posed, not
+            // infeasible.
+            Err(Error::Unsupported(m)) => assert!(m.contains("carries no net load"), "{m}"),
             other => panic!(
-                "{}: expected Infeasible, got {:?}",
+                "{}: expected Unsupported, got {:?}",
                 method.name(),
                 other.map(|s| s.status)
             ),

@@ -2,7 +2,7 @@
 //! a reaction that balances it, and the discrete gap the methods share.
 
 use super::linalg;
-use super::projection::project;
+use super::projection::{cone_gap, project};
 use super::solution::Solution;
 use crate::error::{Error, Result};
 use crate::model::ConstraintPoints;
@@ -44,10 +44,7 @@ pub fn check_feasible(ops: &Operators) -> Result<()> {
     let total = rf[0];
     let scale: f64 = ops.f.iter().map(|v| v.abs()).sum();
     if total <= 1e-12 * scale {
-        return Err(Error::Infeasible(format!(
-            "the net load is upward or zero ({:.3e} in units of P on the model): a foundation that cannot pull cannot hold the plate down; bonded contact can",
-            total
-        )));
+        return Err(net_load_error("the plate", "it", total, scale, &rf[1..]));
     }
     // Resultant position, where the model keeps that rotation (x: mode 1 unless reduced about
     // x = 0; y: the next mode unless reduced about y = 0). A non-negative nodal pressure σ_j
@@ -146,11 +143,25 @@ pub fn check_feasible_jointed(ops: &Operators) -> Result<()> {
     }
     for (c, &t) in total.iter().enumerate() {
         if t <= 1e-12 * scale {
-            return Err(Error::Infeasible(format!(
-                "{} (joined to no other by a joint that transfers load): the net load is upward or zero ({t:.3e} in units of P on the model): a foundation that cannot pull cannot hold {} down — give every panel cut off by free joints its own downward load (its self-weight); bonded contact can",
-                panels(c),
-                if panels(c).starts_with("panels") { "them" } else { "it" }
-            )));
+            // The cluster's other modes (its tilts and hinges): what its loads turn.
+            let turns: Vec<f64> = ops
+                .rigid
+                .iter()
+                .zip(&ops.rigid_clusters)
+                .filter(|(_, &k)| k == c)
+                .skip(1)
+                .map(|(r, _)| linalg::dot(r, &ops.f))
+                .collect();
+            let them = if panels(c).starts_with("panels") {
+                "them"
+            } else {
+                "it"
+            };
+            let who = format!(
+                "{} (joined to no other by a joint that transfers load)",
+                panels(c)
+            );
+            return Err(net_load_error(&who, them, t, scale, &turns));
         }
     }
     if ops.constraints.kind != ConstraintPoints::Nodal {
@@ -167,7 +178,11 @@ pub fn check_feasible_jointed(ops: &Operators) -> Result<()> {
         let cols: Vec<Vec<f64>> = modes.iter().map(|r| ops.bt_times(r)).collect();
         let b: Vec<f64> = modes.iter().map(|r| linalg::dot(r, &ops.f)).collect();
         let zeros = vec![0.0; ops.n_sigma()];
-        if project(&zeros, &cols, &b).is_none() {
+        // The projection answers fast; when it does not converge, refuse only on a proof: b
+        // stands off the cone of the nodes' columns by more than round-off (a Farkas
+        // certificate, [`cone_gap`]). A resultant on the very edge of the reachable set is
+        // feasible (σ on the edge nodes) and passes.
+        if project(&zeros, &cols, &b).is_none() && cone_gap(&cols, &b) > FEASIBILITY_GAP {
             return Err(Error::Infeasible(format!(
                 "the loads on {} cannot be balanced by pressures that only push: a panel would tip over or turn about a joint (move the loads inwards, or use bonded contact)",
                 panels(c)
@@ -175,6 +190,34 @@ pub fn check_feasible_jointed(ops: &Operators) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// Relative distance of a cluster's load from the balances non-negative pressures can give
+/// beyond which it is refused (the same 1e-9 as the resultant's position on a plate of one piece).
+const FEASIBILITY_GAP: f64 = 1e-9;
+
+/// The error for a net load that does not push down: `who` ("the plate", "panel (1, 2)"),
+/// `total` its net load, `turns` its loads' work in its other rigid modes. Upward: no
+/// equilibrium. No net load and nothing that turns it (no load at all, or curling alone, whose
+/// moments are self-equilibrated): σ = 0 balances it, so equilibrium exists, but nothing presses
+/// it onto a soil that cannot pull and its rigid position (lift, tilts, hinge turns: the modes
+/// no spring holds) is undetermined — not infeasible, ill-posed. No net load but a couple: σ = 0
+/// is the only pressure with no resultant, and it balances no couple — infeasible.
+fn net_load_error(who: &str, them: &str, total: f64, scale: f64, turns: &[f64]) -> Error {
+    let tol = 1e-12 * scale;
+    if total < -tol {
+        Error::Infeasible(format!(
+            "{who}: the net load is upward ({total:.3e} in units of P on the model): a foundation that cannot pull cannot hold {them} down — give {them} a downward load (the self-weight); bonded contact can"
+        ))
+    } else if turns.iter().all(|t| t.abs() <= tol) {
+        Error::Unsupported(format!(
+            "{who} carries no net load: zero pressure balances {them}, but nothing presses {them} onto a foundation that cannot pull, so where {them} rests (lift and tilt) is undetermined — give {them} a downward load (the self-weight), or use bonded contact"
+        ))
+    } else {
+        Error::Infeasible(format!(
+            "{who}: the loads add up to no net force but turn {them} (a couple): pressures that only push cannot balance a couple — give {them} a downward load (the self-weight), or use bonded contact"
+        ))
+    }
 }
 
 /// Nodal gap and residual bookkeeping shared by the methods: g = T σ − Bᵀ u + g₀ (g₀ the
