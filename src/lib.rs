@@ -68,6 +68,7 @@ pub mod solve;
 pub mod study;
 pub mod summary;
 pub mod system;
+pub mod vehicle;
 
 pub use analysis::{analyse, Analysis};
 pub use entry::{load, run, Outcome, Source};
