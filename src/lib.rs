@@ -43,7 +43,6 @@ pub mod budget;
 pub mod choice;
 pub mod combination;
 pub mod compare;
-pub mod critical;
 pub mod entry;
 pub mod error;
 pub mod examples;
