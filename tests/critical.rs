@@ -373,3 +373,42 @@ fn moved_loads_and_answers_equal_the_scene_written_at_that_position() {
         }
     }
 }
+
+/// The runs of warm starts are cut from the grid, not from the cores: the search on one thread
+/// and on sixteen gives the same positions to the bit (step counts too), and a share of the
+/// grid that starts at a run's start (a Dask task's `indices`) gives what the whole search
+/// gives there.
+#[test]
+fn the_search_is_the_same_on_any_number_of_threads() {
+    let file = problem(SLAB);
+    let on = |threads: usize, options: &CriticalOptions| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("pool")
+            .install(|| critical(&file, options, &liftoff::Monitor::NONE))
+            .expect("search")
+    };
+    let all = options([5, 3], true);
+    let drop_time = |c: &liftoff::study::Critical| -> Vec<String> {
+        c.positions
+            .iter()
+            .map(|p| {
+                let mut v = serde_json::to_value(p).expect("json");
+                v.as_object_mut().map(|o| o.remove("time_s"));
+                v.to_string()
+            })
+            .collect()
+    };
+    let one = on(1, &all);
+    let many = on(16, &all);
+    assert_eq!(drop_time(&one), drop_time(&many));
+    assert_eq!((one.bottom, one.top), (many.bottom, many.top));
+    let run = CriticalOptions::RUN;
+    let share = CriticalOptions {
+        indices: Some((run..15).collect()),
+        ..all
+    };
+    let part = on(2, &share);
+    assert_eq!(drop_time(&part), drop_time(&one)[run..].to_vec());
+}

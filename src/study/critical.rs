@@ -1,8 +1,9 @@
 //! The critical position of a vehicle load (`liftoff critical`): the named `axle` or `gear`
 //! load moved over a grid of reference points inside the plate (and over headings where asked),
 //! the rest of its combination present, each position its own contact problem on operators
-//! assembled once (K, B, T shared; only the load vector changes), solved side by side on every
-//! core, each warm-started from the position before it; the positions that give the largest
+//! assembled once (K, B, T shared; only the load vector changes), in runs of
+//! [`CriticalOptions::RUN`] positions side by side, each warm-started from the position before
+//! it; the positions that give the largest
 //! tension at the bottom and at the top face and the largest deflection — and on a jointed
 //! plate the largest joint shear per length and the largest dowel force.
 //!
@@ -61,6 +62,15 @@ impl Default for CriticalOptions {
 }
 
 impl CriticalOptions {
+    /// Positions per warm-started run: the grid order (heading, then y, then x) is cut into runs
+    /// of this many, each started cold and each position in it from the one before; the runs
+    /// are solved side by side. Fixed, so that every answer and every step count is the same
+    /// on any number of cores (and a share of the grid in `indices` that starts at a multiple
+    /// of it and is a multiple of it long solves exactly what the whole search solves there).
+    /// Ten: the cold start of each run is a tenth of its work, and the default 11 × 9 grid
+    /// gives ten runs to share out.
+    pub const RUN: usize = 10;
+
     /// Check the options; errors name the field.
     pub fn validate(&self) -> Result<()> {
         if self.load.trim().is_empty() {
@@ -183,6 +193,23 @@ impl Critical {
             .max_by(|a, b| a.1.total_cmp(&b.1))
             .map(|(i, _)| i)
     }
+}
+
+/// The runs of `picked` (grid indices) that are warm-started in turn: consecutive indices in
+/// the same block of [`CriticalOptions::RUN`] of the grid, as ranges of `picked`.
+fn runs(picked: &[usize]) -> Vec<std::ops::Range<usize>> {
+    let mut out: Vec<std::ops::Range<usize>> = Vec::new();
+    for (j, &i) in picked.iter().enumerate() {
+        let continues = j > 0 && {
+            let prev = picked[j - 1];
+            i == prev + 1 && i / CriticalOptions::RUN == prev / CriticalOptions::RUN
+        };
+        match out.last_mut() {
+            Some(r) if continues => r.end = j + 1,
+            _ => out.push(j..j + 1),
+        }
+    }
+    out
 }
 
 /// The largest of some optional values (None when none is present).
@@ -381,15 +408,16 @@ pub fn critical(
         .collect::<Result<_>>()?;
     let base = assemble_for(problem, &models, "positions")?;
     let assemble_s = t0.elapsed().as_secs_f64();
-    // Contiguous runs of the grid order, one per core: each position starts from the answer of
-    // the one before it (a step of the grid away), the runs side by side.
-    let chunks = rayon::current_num_threads().clamp(1, models.len().max(1));
-    let per = models.len().div_ceil(chunks).max(1);
+    // Runs of the grid order, [`CriticalOptions::RUN`] long whatever the cores: each position
+    // starts from the answer of the one before it (a step of the grid away), the runs side by
+    // side.
+    let work: Vec<(usize, &Model)> = picked.iter().copied().zip(&models).collect();
+    let runs = runs(&picked);
     let cases = Cases::new(monitor, models.len());
     let inner = cases.inner();
-    let work: Vec<(usize, &Model)> = picked.iter().copied().zip(&models).collect();
-    let solved: Vec<Result<Vec<Position>>> = work
-        .par_chunks(per)
+    let solved: Vec<Result<Vec<Position>>> = runs
+        .par_iter()
+        .map(|r| &work[r.clone()])
         .map(|run| {
             let mut out = Vec::with_capacity(run.len());
             let mut start: Option<Vec<f64>> = None;
@@ -464,4 +492,20 @@ pub fn critical(
         assemble_s,
         total_s: t0.elapsed().as_secs_f64(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Runs are blocks of `RUN` grid indices, cut where a share of the grid skips an index.
+    #[test]
+    fn runs_are_cut_from_the_grid_not_the_cores() {
+        let r = CriticalOptions::RUN;
+        let all: Vec<usize> = (0..2 * r + 3).collect();
+        assert_eq!(runs(&all), vec![0..r, r..2 * r, 2 * r..2 * r + 3]);
+        let share = [r - 2, r - 1, r, r + 1, r + 5];
+        assert_eq!(runs(&share), vec![0..2, 2..4, 4..5]);
+        assert!(runs(&[]).is_empty());
+    }
 }
