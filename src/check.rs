@@ -1,5 +1,5 @@
 //! Checks of single numbers shared by the scene's readers ([`crate::scene`]) and the soils'
-//! own keys ([`crate::foundation::soil`]): a floor below both.
+//! own keys ([`crate::foundation::soil`]), and of the ranges of rectangles: a floor below both.
 
 use crate::error::{Error, Result};
 
@@ -29,4 +29,37 @@ pub(crate) fn poisson(field: &str, v: f64) -> Result<f64> {
         ));
     }
     Ok(v)
+}
+
+/// A range [lo, hi] of a rectangle, checked to be finite, increasing and on the plate, in unit
+/// geometry.
+pub(crate) fn rect_range(
+    field: &str,
+    r: [f64; 2],
+    scale: f64,
+    half: f64,
+    unit: &str,
+) -> Result<[f64; 2]> {
+    let [a, b] = r;
+    let tol = 1e-9;
+    if !a.is_finite() || !b.is_finite() {
+        return Err(Error::invalid(field, "range ends must be finite"));
+    }
+    if a >= b {
+        return Err(Error::invalid(
+            field,
+            format!("range [{a}, {b}] must be increasing"),
+        ));
+    }
+    let (ua, ub) = (a * scale, b * scale);
+    if ua < -half * (1.0 + tol) || ub > half * (1.0 + tol) {
+        return Err(Error::invalid(
+            field,
+            format!(
+                "range [{a}, {b}] {unit} leaves the plate (±{:.6})",
+                half / scale
+            ),
+        ));
+    }
+    Ok([ua.max(-half), ub.min(half)])
 }

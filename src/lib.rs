@@ -44,7 +44,6 @@ pub mod check;
 pub mod choice;
 pub mod combination;
 pub mod compare;
-pub mod critical;
 pub mod entry;
 pub mod error;
 pub mod examples;
@@ -69,6 +68,7 @@ pub mod solve;
 pub mod study;
 pub mod summary;
 pub mod system;
+pub mod vehicle;
 
 pub use analysis::{analyse, Analysis};
 pub use entry::{load, run, Outcome, Source};

@@ -17,9 +17,11 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::error::{Error, Result};
 use crate::foundation::{FoundationKind, Soil};
 use crate::layout::Layout;
 use crate::mesh::Mesh;
+use crate::vehicle::Vehicle;
 
 /// Where σ ≥ 0 is imposed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
@@ -377,6 +379,9 @@ pub struct Model {
     /// Joint lines and panels with their own section ([`crate::layout`]); empty for a plate of
     /// one piece.
     pub layout: Layout,
+    /// The axles and gears among the loads, each a group of `loads` that [`Model::place`]
+    /// moves.
+    pub vehicles: Vec<Vehicle>,
 }
 
 /// The force P that V = D w / (P L²) and σ = μ L² r / P are reported against.
@@ -462,6 +467,35 @@ impl Model {
             && rects_symmetric(&voids, about_x)
             && rects_symmetric(&zones, about_x)
             && self.layout.symmetric(about_x)
+    }
+
+    /// Move the vehicle `vehicle` (an index into [`Model::vehicles`]) to `at` = (x, y, heading),
+    /// m and degrees: its prints replace its loads, factored and in units of P as the scene made
+    /// them (P stays: moving a load changes no resultant). A print off the plate is refused.
+    pub fn place(&mut self, vehicle: usize, at: [f64; 3]) -> Result<()> {
+        let missing = || Error::invalid("load", format!("the model has no vehicle {vehicle}"));
+        let v = self.vehicles.get(vehicle).ok_or_else(missing)?;
+        let prints = v.prints(at)?;
+        let (factor, p) = (v.factor, self.load_scale);
+        let slots = (self.loads.get_mut(v.loads.clone()))
+            .filter(|s| s.len() == prints.len())
+            .ok_or_else(missing)?;
+        for (slot, print) in slots.iter_mut().zip(prints) {
+            let pressure = print.pressure * factor / p;
+            if !pressure.is_finite() {
+                return Err(Error::invalid(
+                    format!("load[{}].tire_pressure", v.entry),
+                    "the print's pressure overflows in units of the total load",
+                ));
+            }
+            *slot = Load::Patch {
+                x: print.x,
+                y: print.y,
+                pressure,
+            };
+        }
+        self.vehicles[vehicle].at = at;
+        Ok(())
     }
 
     /// The grid to solve on: a half or a quarter where the loads allow it and the element counts

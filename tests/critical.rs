@@ -3,9 +3,9 @@
 //! Packard & Tayabji 1985), the search against a solve of that position alone, and warm starts
 //! that change nothing but the number of steps.
 
-use liftoff::critical::{critical, CriticalOptions};
-use liftoff::scene::SceneFile;
+use liftoff::scene::Overrides;
 use liftoff::study::RunOutcome;
+use liftoff::study::{critical, CriticalOptions};
 
 mod common;
 
@@ -35,6 +35,11 @@ y = 0.0
 elements = [60, 48]
 "#;
 
+/// The scene validated as every front end does ([`liftoff::load`]).
+fn problem(text: &str) -> liftoff::Problem {
+    liftoff::load(&liftoff::Source::Toml(text), &Overrides::default()).expect("scene")
+}
+
 fn options(grid: [usize; 2], warm: bool) -> CriticalOptions {
     CriticalOptions {
         load: "truck".into(),
@@ -50,7 +55,7 @@ fn options(grid: [usize; 2], warm: bool) -> CriticalOptions {
 /// operators, solved again from scratch: to the penalty's own tolerance, 1e-9 relative).
 #[test]
 fn the_bottom_stress_is_critical_at_the_middle_of_the_free_edge() {
-    let file = SceneFile::parse(SLAB).expect("scene");
+    let file = problem(SLAB);
     let c = critical(&file, &options([7, 5], true), &liftoff::Monitor::NONE).expect("search");
     assert_eq!(c.positions.len(), 35, "7 × 5 positions");
     assert!(
@@ -110,7 +115,7 @@ fn warm_starts_change_no_digit() {
             "[mesh]",
             "[[load]]\nkind = \"temperature\"\ndifference = -10.0\n[mesh]",
         );
-    let file = SceneFile::parse(&night).expect("scene");
+    let file = problem(&night);
     let warm = critical(&file, &options([5, 3], true), &liftoff::Monitor::NONE).expect("warm");
     let cold = critical(&file, &options([5, 3], false), &liftoff::Monitor::NONE).expect("cold");
     for (w, c) in warm.positions.iter().zip(&cold.positions) {
@@ -128,9 +133,8 @@ fn warm_starts_change_no_digit() {
             );
         }
     }
-    let steps = |c: &liftoff::critical::Critical| -> usize {
-        c.positions.iter().map(|p| p.iterations).sum()
-    };
+    let steps =
+        |c: &liftoff::study::Critical| -> usize { c.positions.iter().map(|p| p.iterations).sum() };
     assert!(
         steps(&warm) < steps(&cold),
         "warm {} steps, cold {}",
@@ -142,7 +146,7 @@ fn warm_starts_change_no_digit() {
 /// A name that is no load, and a load that is no vehicle, are refused by name.
 #[test]
 fn the_moved_load_must_be_a_named_vehicle() {
-    let file = SceneFile::parse(SLAB).expect("scene");
+    let file = problem(SLAB);
     let missing = CriticalOptions {
         load: "bus".into(),
         ..CriticalOptions::default()
@@ -151,11 +155,10 @@ fn the_moved_load_must_be_a_named_vehicle() {
         .err()
         .map(|e| e.to_string());
     assert!(e.is_some_and(|m| m.contains("no load named `bus`") && m.contains("truck")));
-    let weight = SceneFile::parse(&SLAB.replace(
+    let weight = problem(&SLAB.replace(
         "kind = \"uniform\"\npressure = 6e3",
         "kind = \"uniform\"\npressure = 6e3\nname = \"weight\"",
-    ))
-    .expect("scene");
+    ));
     let e = critical(
         &weight,
         &CriticalOptions {
@@ -185,13 +188,13 @@ fn jointed_slabs_report_the_critical_joint_shear_and_dowel_force() {
         "[mesh]",
         "[[joint]]\nx = 0.0\nkind = \"dowels\"\nname = \"T\"\ndiameter = 0.032\nyoungs_modulus = 200e9\nopening = 0.006\nsupport_modulus = 4.07e11\nspacing = 0.3\n[[joint]]\ny = 0.0\nkind = \"aggregate\"\nname = \"L\"\nstiffness = 5e8\n[mesh]",
     );
-    let file = SceneFile::parse(&jointed).expect("scene");
+    let file = problem(&jointed);
     let c = critical(&file, &options([5, 3], true), &liftoff::Monitor::NONE).expect("search");
     assert!(c
         .positions
         .iter()
         .all(|p| p.outcome == RunOutcome::CONVERGED && p.joint_shear.is_some()));
-    let best = |f: fn(&liftoff::critical::Position) -> Option<f64>| {
+    let best = |f: fn(&liftoff::study::Position) -> Option<f64>| {
         c.positions
             .iter()
             .filter_map(f)
@@ -244,4 +247,168 @@ fn jointed_slabs_report_the_critical_joint_shear_and_dowel_force() {
         table.contains("joint shear") && table.contains("dowel force"),
         "{table}"
     );
+}
+
+/// The example pavement (3 × 3 jointed slabs, an axle, night curling) with a combination that
+/// factors the axle and the weight, on a coarser mesh (every joint still on an element edge).
+fn heavy_pavement() -> String {
+    include_str!("../examples/pavement-3x3.toml").replace(
+        "[mesh]",
+        "[[combination]]\nname = \"heavy\"\nfactors = { self-weight = 1.2, traffic = 1.5, night = 1.0 }\n\n[mesh]",
+    )
+}
+
+/// A load's numbers (kind, place, magnitude) in a row.
+fn numbers(l: &liftoff::model::Load) -> Vec<f64> {
+    use liftoff::model::Load;
+    match *l {
+        Load::Point { x, y, force } => vec![0.0, x, y, force],
+        Load::Patch { x, y, pressure } => vec![1.0, x[0], x[1], y[0], y[1], pressure],
+        Load::Line {
+            from,
+            to,
+            force_per_length,
+        } => vec![2.0, from[0], from[1], to[0], to[1], force_per_length],
+        Load::Temperature { curvature } => vec![3.0, curvature],
+        Load::FaceStress { top, bottom } => vec![4.0, top, bottom],
+    }
+}
+
+fn coarse() -> Overrides {
+    Overrides {
+        mesh: Some([45, 34]),
+        ..Overrides::default()
+    }
+}
+
+/// The search moves the axle in the model it was given (no scene file, no validation per
+/// position): at every position of a 3 × 2 grid, in a combination with factors other than 1,
+/// the moved model's loads are the ones a scene with the axle written at that position makes
+/// (the same patches; pressures to round-off, since P is added up in another order), and the
+/// search's answers equal that scene solved alone, cold, to 1e-9 relative.
+#[test]
+fn moved_loads_and_answers_equal_the_scene_written_at_that_position() {
+    let text = heavy_pavement();
+    let base = liftoff::load(&liftoff::Source::Toml(&text), &coarse()).expect("scene");
+    let options = CriticalOptions {
+        load: "axle".into(),
+        grid: [3, 2],
+        combination: Some("heavy".into()),
+        ..CriticalOptions::default()
+    };
+    let c = critical(&base, &options, &liftoff::Monitor::NONE).expect("search");
+    assert_eq!(c.positions.len(), 6);
+    let heavy = |p: &liftoff::Problem| -> liftoff::scene::Combination {
+        let mut c = p.combinations.clone();
+        c.retain(|c| c.name == "heavy");
+        c.pop().expect("combination heavy")
+    };
+    let mut moved = heavy(&base).model;
+    let k = moved
+        .vehicles
+        .iter()
+        .position(|v| v.name.as_deref() == Some("axle"))
+        .expect("the axle is a vehicle of the model");
+    assert_eq!(moved.vehicles[k].factor, 1.5);
+    for p in &c.positions {
+        moved.place(k, [p.x, p.y, p.heading]).expect("on the plate");
+        let written = text
+            .replace("x = 2.15 ", &format!("x = {} ", p.x))
+            .replace("y = -0.88 ", &format!("y = {} ", p.y));
+        let overrides = Overrides {
+            symmetry: Some(liftoff::model::SymmetryMode::None),
+            ..coarse()
+        };
+        let mut alone = liftoff::load(&liftoff::Source::Toml(&written), &overrides).expect("scene");
+        let combination = heavy(&alone);
+        let at = &combination.model.vehicles[k].at;
+        assert_eq!((at[0], at[1]), (p.x, p.y), "the scene puts the axle there");
+        assert_eq!(moved.loads.len(), combination.model.loads.len());
+        for (a, b) in moved.loads.iter().zip(&combination.model.loads) {
+            let (u, v) = (numbers(a), numbers(b));
+            assert!(
+                u.len() == v.len()
+                    && u.iter()
+                        .zip(&v)
+                        .all(|(x, y)| (x - y).abs() <= 1e-13 * y.abs()),
+                "moved {a:?}, written {b:?}"
+            );
+        }
+        // That position alone: its combination only, solved from scratch.
+        alone.model = combination.model.clone();
+        alone.combinations = vec![combination];
+        let liftoff::Outcome::Combinations(runs) =
+            liftoff::run(&alone, &liftoff::Monitor::NONE).expect("solve")
+        else {
+            panic!("a scene with combinations");
+        };
+        let s = &runs.runs[0].outcome.as_ref().expect("solved").summary;
+        let max_of = |f: fn(&liftoff::post::JointReport) -> Option<f64>| {
+            s.joints
+                .iter()
+                .filter_map(f)
+                .fold(f64::NEG_INFINITY, f64::max)
+        };
+        for (name, search, alone) in [
+            ("bottom", p.bottom, s.stresses.bottom.value),
+            ("top", p.top, s.stresses.top.value),
+            ("w_max", p.w_max, s.w_max),
+            (
+                "joint shear",
+                p.joint_shear.unwrap_or(f64::NAN),
+                max_of(|j| j.max_shear_per_length),
+            ),
+            (
+                "dowel force",
+                p.dowel_force.unwrap_or(f64::NAN),
+                max_of(|j| j.max_dowel_force),
+            ),
+        ] {
+            assert!(
+                (search - alone).abs() <= 1e-9 * alone.abs(),
+                "{name} at ({:.3}, {:.3}): search {search} vs alone {alone}",
+                p.x,
+                p.y
+            );
+        }
+    }
+}
+
+/// The runs of warm starts are cut from the grid, not from the cores: the search on one thread
+/// and on sixteen gives the same positions to the bit (step counts too), and a share of the
+/// grid that starts at a run's start (a Dask task's `indices`) gives what the whole search
+/// gives there.
+#[test]
+fn the_search_is_the_same_on_any_number_of_threads() {
+    let file = problem(SLAB);
+    let on = |threads: usize, options: &CriticalOptions| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("pool")
+            .install(|| critical(&file, options, &liftoff::Monitor::NONE))
+            .expect("search")
+    };
+    let all = options([5, 3], true);
+    let drop_time = |c: &liftoff::study::Critical| -> Vec<String> {
+        c.positions
+            .iter()
+            .map(|p| {
+                let mut v = serde_json::to_value(p).expect("json");
+                v.as_object_mut().map(|o| o.remove("time_s"));
+                v.to_string()
+            })
+            .collect()
+    };
+    let one = on(1, &all);
+    let many = on(16, &all);
+    assert_eq!(drop_time(&one), drop_time(&many));
+    assert_eq!((one.bottom, one.top), (many.bottom, many.top));
+    let run = CriticalOptions::RUN;
+    let share = CriticalOptions {
+        indices: Some((run..15).collect()),
+        ..all
+    };
+    let part = on(2, &share);
+    assert_eq!(drop_time(&part), drop_time(&one)[run..].to_vec());
 }

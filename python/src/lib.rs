@@ -436,15 +436,8 @@ fn study(
     }
 }
 
-/// The scene file of a (kind, text) pair with the options applied (not validated).
-fn scene_file(kind: &str, text: &str, options: &str) -> liftoff::Result<SceneFile> {
-    let mut file = source(kind, text).parse()?;
-    Overrides::from_json(options)?.apply(&mut file);
-    Ok(file)
-}
-
 /// `liftoff critical`: the search's result as JSON (`critical.json`), its options the JSON of
-/// [`liftoff::critical::CriticalOptions`] (`indices` for a share of the grid).
+/// [`liftoff::study::CriticalOptions`] (`indices` for a share of the grid).
 #[pyfunction]
 #[pyo3(signature = (kind, text, options, critical, progress=None))]
 fn critical(
@@ -455,10 +448,10 @@ fn critical(
     critical: &str,
     progress: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<String> {
-    let o: liftoff::critical::CriticalOptions = serde_json::from_str(critical)
+    let o: liftoff::study::CriticalOptions = serde_json::from_str(critical)
         .map_err(|e| to_py(Error::invalid("critical", e.to_string())))?;
     json(&run(py, progress, |m| {
-        liftoff::critical::critical(&scene_file(kind, text, options)?, &o, m)
+        o.run(&problem(kind, text, options)?, m)
     })?)
 }
 
@@ -471,11 +464,9 @@ fn critical_len(
     options: &str,
     critical: &str,
 ) -> PyResult<usize> {
-    let o: liftoff::critical::CriticalOptions = serde_json::from_str(critical)
+    let o: liftoff::study::CriticalOptions = serde_json::from_str(critical)
         .map_err(|e| to_py(Error::invalid("critical", e.to_string())))?;
-    run(py, None, |_| {
-        liftoff::critical::positions(&scene_file(kind, text, options)?, &o)
-    })
+    run(py, None, |_| o.positions(&problem(kind, text, options)?))
 }
 
 /// How many runs `liftoff stability` makes on these scenes (each a (kind, text) pair).

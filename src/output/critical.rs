@@ -7,9 +7,9 @@ use std::path::{Path, PathBuf};
 
 use super::chart::{self, Influence, Units};
 use super::Staged;
-use crate::critical::{Critical, Position};
 use crate::error::{Error, Result};
 use crate::model::Physical;
+use crate::study::{Critical, Position};
 
 /// critical.csv: one row per position.
 fn csv(c: &Critical) -> String {

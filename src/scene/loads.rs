@@ -5,7 +5,7 @@
 use super::spec::{Coord, LoadKind, LoadSpec};
 use super::temperature::Thermal;
 use super::SceneFile;
-use crate::check::finite_positive;
+use crate::check::{finite_positive, rect_range};
 use crate::error::{Error, Result};
 use crate::model::{Groups, Load, LoadReference, Void, Zone};
 
@@ -16,18 +16,22 @@ use crate::model::{Groups, Load, LoadReference, Void, Zone};
 pub(super) struct RawLoad {
     pub(super) load: Load,
     pub(super) case: String,
+    /// The `[[load]]` entry it comes from (an axle or gear gives one per tire).
+    pub(super) source: usize,
 }
 
 /// Name of the case of loads that name none.
 pub const DEFAULT_CASE: &str = "default";
 
-/// `[[load]]`: every load in unit geometry with its raw magnitude and its case.
+/// `[[load]]`: every load in unit geometry with its raw magnitude and its case; `plate` the
+/// sides in metres (SI scenes).
 pub(super) fn raw_loads(
     specs: &[LoadSpec],
     groups: &Groups,
     physical: Option<(f64, f64)>,
     thermal: Option<Thermal>,
     scale_xy: [f64; 2],
+    plate: [f64; 2],
 ) -> Result<Vec<RawLoad>> {
     let mu = groups.mu;
     let mut loads = Vec::with_capacity(specs.len());
@@ -163,10 +167,11 @@ pub(super) fn raw_loads(
                         l,
                         k,
                         physical.is_some(),
-                        &super::vehicles::Geometry {
+                        crate::vehicle::Frame {
                             scale_xy,
                             half: [hx, hy],
                             area_scale,
+                            plate,
                         },
                     )?,
                     _ => super::temperature::loads(l, k, thermal, physical.map(|p| p.0))?,
@@ -175,6 +180,7 @@ pub(super) fn raw_loads(
                     loads.push(RawLoad {
                         load,
                         case: case.clone(),
+                        source: k,
                     });
                 }
                 continue;
@@ -263,42 +269,13 @@ pub(super) fn raw_loads(
                 Load::Temperature { curvature }
             }
         };
-        loads.push(RawLoad { load, case });
+        loads.push(RawLoad {
+            load,
+            case,
+            source: k,
+        });
     }
     Ok(loads)
-}
-
-/// A range [lo, hi] of a rectangle, checked to be finite, increasing and on the plate, in unit
-/// geometry.
-pub(super) fn rect_range(
-    field: &str,
-    r: [f64; 2],
-    scale: f64,
-    half: f64,
-    unit: &str,
-) -> Result<[f64; 2]> {
-    let [a, b] = r;
-    let tol = 1e-9;
-    if !a.is_finite() || !b.is_finite() {
-        return Err(Error::invalid(field, "range ends must be finite"));
-    }
-    if a >= b {
-        return Err(Error::invalid(
-            field,
-            format!("range [{a}, {b}] must be increasing"),
-        ));
-    }
-    let (ua, ub) = (a * scale, b * scale);
-    if ua < -half * (1.0 + tol) || ub > half * (1.0 + tol) {
-        return Err(Error::invalid(
-            field,
-            format!(
-                "range [{a}, {b}] {unit} leaves the plate (±{:.6})",
-                half / scale
-            ),
-        ));
-    }
-    Ok([ua.max(-half), ub.min(half)])
 }
 
 /// Loads in units of P, and P (a quarter of the resultant, in the raw unit), for one set of

@@ -17,6 +17,7 @@ use crate::error::{Error, Result};
 use crate::foundation::soil::PlateScale;
 use crate::method::{Contact, Method, PenaltySettings, QpSettings};
 use crate::model::{Groups, Load, LoadReference, Model, Physical, Zone};
+use crate::vehicle::{Frame, Vehicle};
 
 /// Upper limit on elements per side: beyond it even a Winkler model exceeds any sane memory.
 pub const MAX_ELEMENTS_PER_SIDE: i64 = 4000;
@@ -230,6 +231,8 @@ struct Shared {
     allowable: Option<f64>,
     elements: [usize; 2],
     layout: crate::layout::Layout,
+    /// The axles and gears, each where its entry puts it, its `loads` not yet set.
+    vehicles: Vec<Vehicle>,
 }
 
 fn shared(file: &SceneFile) -> Result<Shared> {
@@ -250,7 +253,12 @@ fn shared(file: &SceneFile) -> Result<Shared> {
         }),
         _ => None,
     };
-    let raw = raw_loads(&file.load, &groups, physical, thermal, scale_xy)?;
+    let plate = file
+        .plate
+        .as_ref()
+        .map_or([0.0; 2], |p| [p.length, p.width]);
+    let raw = raw_loads(&file.load, &groups, physical, thermal, scale_xy, plate)?;
+    let vehicles = vehicles(file, &raw, &groups, physical, scale_xy, plate)?;
     let voids = raw_voids(file, &groups, physical, scale_xy)?;
     let zones = zones(file, &groups, scale_xy)?;
     let allowable = raw_allowable(file, &groups, physical)?;
@@ -279,7 +287,43 @@ fn shared(file: &SceneFile) -> Result<Shared> {
         allowable,
         elements,
         layout,
+        vehicles,
     })
+}
+
+/// The `axle` and `gear` entries as [`Vehicle`]s (their raw loads, one per tire, are already in
+/// `raw`: reading them again cannot fail where [`raw_loads`] did not).
+fn vehicles(
+    file: &SceneFile,
+    raw: &[RawLoad],
+    groups: &Groups,
+    physical: Option<(f64, f64)>,
+    scale_xy: [f64; 2],
+    plate: [f64; 2],
+) -> Result<Vec<Vehicle>> {
+    let Some((l, _)) = physical else {
+        return Ok(Vec::new());
+    };
+    let frame = Frame {
+        scale_xy,
+        half: [1.0, groups.mu],
+        area_scale: l * l,
+        plate,
+    };
+    let mut out = Vec::new();
+    for (k, spec) in file.load.iter().enumerate() {
+        let axle = match spec.kind {
+            LoadKind::Axle => true,
+            LoadKind::Gear => false,
+            _ => continue,
+        };
+        let case = raw
+            .iter()
+            .find(|r| r.source == k)
+            .map_or_else(|| DEFAULT_CASE.to_string(), |r| r.case.clone());
+        out.push(super::vehicles::vehicle(spec, k, axle, frame, case)?);
+    }
+    Ok(out)
 }
 
 impl Shared {
@@ -296,6 +340,22 @@ impl Shared {
             .map(|&(k, f)| (k, scale(self.raw[k].load, f)))
             .collect();
         let (loads, p_force, reference) = normalise(loads, what)?;
+        // Each axle and gear of this load set, with its factor and its prints' places (its raw
+        // loads are consecutive, and `factors` keeps the raw order).
+        let vehicles = self
+            .vehicles
+            .iter()
+            .filter_map(|v| {
+                let ours = |j: &usize| self.raw[factors[*j].0].source == v.entry;
+                let first = (0..factors.len()).find(ours)?;
+                let count = (first..factors.len()).take_while(ours).count();
+                Some(Vehicle {
+                    factor: factors[first].1,
+                    loads: first..first + count,
+                    ..v.clone()
+                })
+            })
+            .collect();
         let voids = voids_for(&self.voids, &self.groups, p_force, self.physical, what)?;
         Ok(Model {
             title,
@@ -315,6 +375,7 @@ impl Shared {
             load_scale: p_force,
             reference,
             layout: self.layout.clone(),
+            vehicles,
         })
     }
 }

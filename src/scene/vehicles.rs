@@ -1,32 +1,21 @@
-//! Vehicle loads (`kind = "axle"`, `"gear"`): a truck's axle group or an aircraft gear placed by
-//! a reference point and a heading, each tire a uniform pressure over a rectangle of its contact
-//! area (its load over the tire pressure).
-//!
-//! Tire prints follow the Portland Cement Association's rectangle (PCA 1984; Huang, *Pavement
-//! Analysis and Design*, 2004, §4.4): the print of area A is 0.8712 L along the travel by 0.6 L
-//! across, L = √(A/0.5227) — or a square of the same area (`contact_shape = "square"`, and for
-//! headings that are not a multiple of 90°, since the plate's load patches are rectangles along
-//! its axes).
+//! Vehicle loads (`kind = "axle"`, `"gear"`) as a scene writes them: a truck's axle group or an
+//! aircraft gear placed by a reference point and a heading, each tire a uniform pressure over a
+//! rectangle of its contact area (its load over the tire pressure). This module reads the
+//! `[[load]]` entry (its standard configuration, wheels and loads) into a [`Vehicle`]; the
+//! prints' shapes and their placing are [`crate::vehicle`]'s.
 
 use super::spec::LoadSpec;
 use crate::error::{Error, Result};
 use crate::model::Load;
-
-/// The plate in unit geometry, as the tire prints need it: metres to unit coordinates along x
-/// and y, the half sides, and metres² to unit areas.
-pub(super) struct Geometry {
-    pub(super) scale_xy: [f64; 2],
-    pub(super) half: [f64; 2],
-    pub(super) area_scale: f64,
-}
+pub use crate::vehicle::Tire;
+use crate::vehicle::{Frame, Vehicle, Wheel};
 
 /// The patches of an `axle` or `gear` entry `k` (SI scenes only): one per tire, in unit
 /// geometry, its pressure raw (N per unit area).
-pub(super) fn patches(l: &LoadSpec, k: usize, si: bool, g: &Geometry) -> Result<Vec<Load>> {
-    let field = |name: &str| format!("load[{k}].{name}");
+pub(super) fn patches(l: &LoadSpec, k: usize, si: bool, frame: Frame) -> Result<Vec<Load>> {
     if !si {
         return Err(Error::invalid(
-            field("kind"),
+            format!("load[{k}].kind"),
             format!(
                 "kind = \"{}\" belongs to SI scenes ([plate] and [foundation]): its tires are given in metres and newtons",
                 l.kind.name()
@@ -34,34 +23,15 @@ pub(super) fn patches(l: &LoadSpec, k: usize, si: bool, g: &Geometry) -> Result<
         ));
     }
     let axle = matches!(l.kind, super::spec::LoadKind::Axle);
-    let mut out = Vec::new();
-    for t in tires(l, k, axle)? {
-        let to_unit = |centre: f64, side: f64, axis: usize| -> Result<[f64; 2]> {
-            let (lo, hi) = (centre - side / 2.0, centre + side / 2.0);
-            let (ulo, uhi) = (lo * g.scale_xy[axis], hi * g.scale_xy[axis]);
-            let half = g.half[axis];
-            if ulo < -half * (1.0 + 1e-9) || uhi > half * (1.0 + 1e-9) {
-                return Err(Error::invalid(
-                    field(if axis == 0 { "x" } else { "y" }),
-                    format!(
-                        "the tire print at ({:.3}, {:.3}) m reaches [{lo:.3}, {hi:.3}] m, off the plate (±{:.3} m): move the reference point or turn the heading",
-                        t.centre[0],
-                        t.centre[1],
-                        half / g.scale_xy[axis]
-                    ),
-                ));
-            }
-            Ok([ulo.max(-half), uhi.min(half)])
-        };
-        let x = to_unit(t.centre[0], t.size[0], 0)?;
-        let y = to_unit(t.centre[1], t.size[1], 1)?;
-        out.push(Load::Patch {
-            x,
-            y,
-            pressure: t.force / (t.size[0] * t.size[1]) * g.area_scale,
-        });
-    }
-    Ok(out)
+    let v = vehicle(l, k, axle, frame, String::new())?;
+    Ok(v.prints(v.at)?
+        .into_iter()
+        .map(|p| Load::Patch {
+            x: p.x,
+            y: p.y,
+            pressure: p.pressure,
+        })
+        .collect())
 }
 
 /// A bundled configuration: name, what it is, where its numbers come from, and the keys it sets.
@@ -144,19 +114,28 @@ pub const STANDARDS: &[Standard] = &[
     },
 ];
 
-/// One tire's print on the plate: its centre (m), its sides along x and y (m) and its load (N).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Tire {
-    /// Centre (x, y), m.
-    pub centre: [f64; 2],
-    /// Sides along x and y, m.
-    pub size: [f64; 2],
-    /// Load, N.
-    pub force: f64,
-}
-
 /// The tires of an `axle` or `gear` entry `k`, in metres about the plate's centre.
 pub fn tires(spec: &LoadSpec, k: usize, axle: bool) -> Result<Vec<Tire>> {
+    let frame = Frame {
+        scale_xy: [1.0; 2],
+        half: [f64::INFINITY; 2],
+        area_scale: 1.0,
+        plate: [f64::INFINITY; 2],
+    };
+    let v = vehicle(spec, k, axle, frame, String::new())?;
+    v.tires(v.at)
+}
+
+/// The `axle` (`axle` true) or `gear` entry `k` of case `case` as a [`Vehicle`] on the plate
+/// `frame`, standing where the entry puts it: its wheels (from its `standard` configuration and
+/// the keys that override it), tire pressure and print shape, checked.
+pub fn vehicle(
+    spec: &LoadSpec,
+    k: usize,
+    axle: bool,
+    frame: Frame,
+    case: String,
+) -> Result<Vehicle> {
     let field = |n: &str| format!("load[{k}].{n}");
     let standard = match &spec.standard {
         Some(name) => {
@@ -322,46 +301,25 @@ pub fn tires(spec: &LoadSpec, k: usize, axle: bool) -> Result<Vec<Tire>> {
             format!("`{shape}` is not one of pca, square"),
         ));
     }
-    let (s, c) = heading.to_radians().sin_cos();
-    let quarter = (heading / 90.0).round();
-    let axis_aligned = (heading / 90.0 - quarter).abs() < 1e-9;
-    let across_x = axis_aligned && (quarter as i64).rem_euclid(2) == 1;
-    let tires: Vec<Tire> = wheels
-        .iter()
-        .map(|&([u, v], force)| {
-            let area = force / pressure;
-            let size = if shape == "square" || !axis_aligned {
-                [area.sqrt(); 2]
-            } else {
-                let l = (area / 0.5227).sqrt();
-                let (along, across) = (0.8712 * l, 0.6 * l);
-                if across_x {
-                    [across, along]
-                } else {
-                    [along, across]
-                }
-            };
-            Tire {
-                centre: [x0 + u * c - v * s, y0 + u * s + v * c],
-                size,
-                force,
-            }
-        })
-        .collect();
-    // Two prints must not overlap: the loads would add where the tires cannot.
-    for (i, a) in tires.iter().enumerate() {
-        for b in &tires[i + 1..] {
-            let gap_x = (a.centre[0] - b.centre[0]).abs() - (a.size[0] + b.size[0]) / 2.0;
-            let gap_y = (a.centre[1] - b.centre[1]).abs() - (a.size[1] + b.size[1]) / 2.0;
-            if gap_x < -1e-9 && gap_y < -1e-9 {
-                return Err(Error::invalid(
-                    field("tire_pressure"),
-                    format!("two tire prints overlap (at ({:.3}, {:.3}) and ({:.3}, {:.3}) m): the pressure is too low for the spacing, or the wheels too close", a.centre[0], a.centre[1], b.centre[0], b.centre[1]),
-                ));
-            }
-        }
-    }
-    Ok(tires)
+    let vehicle = Vehicle {
+        name: spec.name.clone(),
+        entry: k,
+        case,
+        axle,
+        at: [x0, y0, heading],
+        wheels: wheels
+            .into_iter()
+            .map(|(offset, force)| Wheel { offset, force })
+            .collect(),
+        pressure,
+        square: shape == "square",
+        frame,
+        factor: 1.0,
+        loads: 0..0,
+    };
+    // The prints where the entry puts them: two must not overlap.
+    vehicle.tires(vehicle.at)?;
+    Ok(vehicle)
 }
 
 #[cfg(test)]

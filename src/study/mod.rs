@@ -1,20 +1,28 @@
-//! Studies of the methods: the penalty limit ε̄ → 0 against the QP (`eps-sweep`), speed against
-//! accuracy over meshes (`tradeoff`), and the regimes where each method breaks (`stability`).
+//! The studies that run many solves of one validated [`crate::Problem`]: of the methods — the
+//! penalty limit ε̄ → 0 against the QP (`eps-sweep`), speed against accuracy over meshes
+//! (`tradeoff`), the regimes where each method breaks (`stability`) — and of the loads: the
+//! critical position of a vehicle (`critical`).
 //!
-//! Every study assembles its operators once per model and hands the same value to both methods,
-//! so differences between methods are differences of method, never of discretisation.
+//! Every study assembles its operators once per model and hands the same value to every solve,
+//! so differences between methods are differences of method, never of discretisation. Each has
+//! the same shape: options with `validate()` and `run(&problem, &monitor)`, the monitor's
+//! [`crate::monitor::Cases`] counting its solves and able to stop them, and a result struct that
+//! serialises and that the `output` module writes.
 //!
-//! Layout: `eps_sweep.rs`, `tradeoff.rs` and `stability.rs` hold one study each,
-//! `options.rs` the validated options the CLI builds them from.
+//! Layout: `eps_sweep.rs`, `tradeoff.rs`, `stability.rs` and `critical.rs` hold one study each
+//! (`critical.rs` with its options), `options.rs` the validated options the CLI builds the
+//! method studies from.
 
 use crate::error::ErrorKind;
 use crate::solve::StatusKind;
 
+mod critical;
 mod eps_sweep;
 mod options;
 mod stability;
 mod tradeoff;
 
+pub use critical::{critical, critical_positions, Critical, CriticalOptions, Position};
 pub use eps_sweep::{eps_sweep, Sweep, SweepRow};
 pub use options::{ConstraintVariants, EpsSweepOptions, TradeoffOptions};
 pub use stability::{

@@ -212,7 +212,7 @@ fn parse_penalty(s: &str) -> Result<PenaltySpec, String> {
     }
 }
 
-/// The flags of `critical`; the defaults are [`liftoff::critical::CriticalOptions`]'s.
+/// The flags of `critical`; the defaults are [`liftoff::study::CriticalOptions`]'s.
 #[derive(clap::Args)]
 pub(crate) struct CriticalArgs {
     /// Scene file (TOML), or `example:NAME`.

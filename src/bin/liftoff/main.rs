@@ -249,11 +249,7 @@ fn critical(args: CriticalArgs) -> Result<(), Failure> {
         method: args.method,
         ..args.overrides.library()
     };
-    let mut file = Source::from_arg(&args.scene)
-        .parse()
-        .map_err(|e| Failure::in_scene(&args.scene, e))?;
-    overrides.apply(&mut file);
-    let options = liftoff::critical::CriticalOptions {
+    let options = study::CriticalOptions {
         load: args.load,
         grid: args.grid,
         headings: args.headings,
@@ -262,14 +258,18 @@ fn critical(args: CriticalArgs) -> Result<(), Failure> {
         indices: None,
     };
     options.validate().map_err(Failure::option)?;
+    let problem = load_problem(&args.scene, &overrides)?;
     if let Some(dir) = &args.out {
         output::prepare_dir(dir)?;
     }
-    let c = with_progress(false, |m| liftoff::critical::critical(&file, &options, m))
+    let c = with_progress(false, |m| options.run(&problem, m))
         .map_err(|e| Failure::in_scene(&args.scene, e))?;
-    let title = file.title.clone().unwrap_or_else(|| args.scene.clone());
+    let title = match &c.combination {
+        Some(name) => liftoff::scene::scene_title(&problem.model.title, name),
+        None => &problem.model.title,
+    };
     let written = match &args.out {
-        Some(dir) => output::critical::write_critical(dir, &c, &title)?.len(),
+        Some(dir) => output::critical::write_critical(dir, &c, title)?.len(),
         None => 0,
     };
     if args.json {
@@ -278,7 +278,7 @@ fn critical(args: CriticalArgs) -> Result<(), Failure> {
         println!("{json}");
     } else {
         let files = args.out.as_deref().map(|dir| (written, dir));
-        print!("{}", output::critical::critical_table(&title, &c, files));
+        print!("{}", output::critical::critical_table(title, &c, files));
     }
     Ok(())
 }

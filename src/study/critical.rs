@@ -1,29 +1,32 @@
 //! The critical position of a vehicle load (`liftoff critical`): the named `axle` or `gear`
 //! load moved over a grid of reference points inside the plate (and over headings where asked),
 //! the rest of its combination present, each position its own contact problem on operators
-//! assembled once (K, B, T shared; only the load vector changes), solved side by side on every
-//! core, each warm-started from the position before it; the positions that give the largest
+//! assembled once (K, B, T shared; only the load vector changes), in runs of
+//! [`CriticalOptions::RUN`] positions side by side, each warm-started from the position before
+//! it; the positions that give the largest
 //! tension at the bottom and at the top face and the largest deflection — and on a jointed
 //! plate the largest joint shear per length and the largest dowel force.
 //!
 //! The grid runs, for each heading, from the position where the prints touch one edge of the
 //! plate to where they touch the other, so the edge positions of the classical critical cases
 //! (the outer tire on the free edge) are on it.
+//!
+//! The scene is validated once ([`crate::load`]); the load is the model's [`Vehicle`], moved to
+//! each position by [`Model::place`].
 
 use std::time::Instant;
 
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
+use super::RunOutcome;
 use crate::analysis;
 use crate::combination::assemble_for;
 use crate::error::{Error, Result};
 use crate::model::{Model, SymmetryMode};
 use crate::monitor::{Cases, Monitor};
-use crate::scene::spec::{Coord, LoadKind};
-use crate::scene::vehicles::tires;
-use crate::scene::SceneFile;
-use crate::study::RunOutcome;
+use crate::scene::Problem;
+use crate::vehicle::Vehicle;
 
 /// What to move and over what.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
@@ -59,6 +62,15 @@ impl Default for CriticalOptions {
 }
 
 impl CriticalOptions {
+    /// Positions per warm-started run: the grid order (heading, then y, then x) is cut into runs
+    /// of this many, each started cold and each position in it from the one before; the runs
+    /// are solved side by side. Fixed, so that every answer and every step count is the same
+    /// on any number of cores (and a share of the grid in `indices` that starts at a multiple
+    /// of it and is a multiple of it long solves exactly what the whole search solves there).
+    /// Ten: the cold start of each run is a tenth of its work, and the default 11 × 9 grid
+    /// gives ten runs to share out.
+    pub const RUN: usize = 10;
+
     /// Check the options; errors name the field.
     pub fn validate(&self) -> Result<()> {
         if self.load.trim().is_empty() {
@@ -80,6 +92,16 @@ impl CriticalOptions {
             ));
         }
         Ok(())
+    }
+
+    /// Validate, then run [`critical`] on `problem`.
+    pub fn run(&self, problem: &Problem, monitor: &Monitor<'_>) -> Result<Critical> {
+        critical(problem, self, monitor)
+    }
+
+    /// How many positions the search has on `problem` ([`critical_positions`]).
+    pub fn positions(&self, problem: &Problem) -> Result<usize> {
+        critical_positions(problem, self)
     }
 }
 
@@ -173,6 +195,23 @@ impl Critical {
     }
 }
 
+/// The runs of `picked` (grid indices) that are warm-started in turn: consecutive indices in
+/// the same block of [`CriticalOptions::RUN`] of the grid, as ranges of `picked`.
+fn runs(picked: &[usize]) -> Vec<std::ops::Range<usize>> {
+    let mut out: Vec<std::ops::Range<usize>> = Vec::new();
+    for (j, &i) in picked.iter().enumerate() {
+        let continues = j > 0 && {
+            let prev = picked[j - 1];
+            i == prev + 1 && i / CriticalOptions::RUN == prev / CriticalOptions::RUN
+        };
+        match out.last_mut() {
+            Some(r) if continues => r.end = j + 1,
+            _ => out.push(j..j + 1),
+        }
+    }
+    out
+}
+
 /// The largest of some optional values (None when none is present).
 fn largest(values: impl Iterator<Item = Option<f64>>) -> Option<f64> {
     values.flatten().reduce(f64::max)
@@ -182,33 +221,20 @@ fn largest(values: impl Iterator<Item = Option<f64>>) -> Option<f64> {
 /// first heading's grid.
 type Grid = (Vec<[f64; 3]>, [f64; 2], [f64; 2]);
 
-/// The grid of reference points for each heading: (x, y, heading) in grid order, and the
-/// spacing of the first heading's grid.
-fn grid(file: &SceneFile, k: usize, options: &CriticalOptions) -> Result<Grid> {
-    let spec = &file.load[k];
-    let plate = file.plate.as_ref().ok_or_else(|| {
-        Error::invalid(
-            "plate",
-            "the critical position needs an SI scene ([plate] and [foundation])",
-        )
-    })?;
-    let (a, b) = (plate.length, plate.width);
-    let own = spec.heading.unwrap_or(0.0);
+/// The grid of reference points of vehicle `v` for each heading: (x, y, heading) in grid
+/// order, and the spacing of the first heading's grid.
+fn grid(v: &Vehicle, options: &CriticalOptions) -> Result<Grid> {
+    let [a, b] = v.frame.plate;
+    let [own_x, own_y, own] = v.at;
     let headings = if options.headings.is_empty() {
         vec![own]
     } else {
         options.headings.clone()
     };
-    let axle = spec.kind == LoadKind::Axle;
-    let coordinate = |c: &Option<Coord>| c.as_ref().and_then(Coord::value).unwrap_or(0.0);
     let mut points = Vec::new();
     let mut spacing = [0.0; 2];
     for (h, &heading) in headings.iter().enumerate() {
-        let mut at_origin = spec.clone();
-        at_origin.x = Some(Coord::Value(0.0));
-        at_origin.y = Some(Coord::Value(0.0));
-        at_origin.heading = Some(heading);
-        let prints = tires(&at_origin, k, axle)?;
+        let prints = v.tires([0.0, 0.0, heading])?;
         let lo = |axis: usize| {
             prints
                 .iter()
@@ -247,8 +273,8 @@ fn grid(file: &SceneFile, k: usize, options: &CriticalOptions) -> Result<Grid> {
                     .collect()
             }
         };
-        let xs = along(rx, options.grid[0], coordinate(&spec.x));
-        let ys = along(ry, options.grid[1], coordinate(&spec.y));
+        let xs = along(rx, options.grid[0], own_x);
+        let ys = along(ry, options.grid[1], own_y);
         if h == 0 {
             spacing = [
                 xs.get(1).map_or(0.0, |x1| x1 - xs[0]),
@@ -264,114 +290,101 @@ fn grid(file: &SceneFile, k: usize, options: &CriticalOptions) -> Result<Grid> {
     Ok((points, [a, b], spacing))
 }
 
-/// The scene to solve at every position: the combination the load acts in alone, the whole
-/// plate modelled (a moving load has no symmetry). Returns it with the load's index and the
-/// combination's name.
-fn scene_for(
-    file: &SceneFile,
-    options: &CriticalOptions,
-) -> Result<(SceneFile, usize, Option<String>)> {
-    let names: Vec<&str> = file.load.iter().filter_map(|l| l.name.as_deref()).collect();
-    let k = file
-        .load
+/// The model to move the load in: the problem's (or, with combinations, the one the load acts
+/// in), the whole plate modelled (a moving load has no symmetry). Returns it with the load's
+/// index among its vehicles and the combination's name.
+fn chosen(problem: &Problem, options: &CriticalOptions) -> Result<(Model, usize, Option<String>)> {
+    let name = options.load.as_str();
+    let find = |m: &Model| {
+        m.vehicles
+            .iter()
+            .position(|v| v.name.as_deref() == Some(name))
+    };
+    let models: Vec<&Model> = match problem.combinations.is_empty() {
+        true => vec![&problem.model],
+        false => problem.combinations.iter().map(|c| &c.model).collect(),
+    };
+    let Some(case) = models
         .iter()
-        .position(|l| l.name.as_deref() == Some(options.load.as_str()))
-        .ok_or_else(|| {
-            Error::invalid(
-                "load",
-                format!(
-                    "no load named `{}` in the scene; named loads: {}",
-                    options.load,
-                    if names.is_empty() {
-                        "none (give the axle or gear a `name`)".to_string()
-                    } else {
-                        names.join(", ")
-                    }
-                ),
-            )
-        })?;
-    if !matches!(file.load[k].kind, LoadKind::Axle | LoadKind::Gear) {
+        .find_map(|m| find(m).map(|i| m.vehicles[i].case.clone()))
+    else {
+        let mut names: Vec<&str> = Vec::new();
+        for v in models.iter().flat_map(|m| &m.vehicles) {
+            if let Some(n) = v.name.as_deref().filter(|n| !names.contains(n)) {
+                names.push(n);
+            }
+        }
         return Err(Error::invalid(
-            format!("load[{k}].kind"),
+            "load",
             format!(
-                "`{}` is a {} load: the critical position moves an axle or a gear",
-                options.load, file.load[k].kind
+                "no load named `{name}` among the scene's axles and gears (the critical position moves an axle or a gear); named axles and gears: {}",
+                if names.is_empty() {
+                    "none (give the axle or gear a `name`)".to_string()
+                } else {
+                    names.join(", ")
+                }
             ),
         ));
-    }
-    let mut scene = file.clone();
-    scene.mesh.symmetry = SymmetryMode::None;
-    let mut combination = None;
-    if !file.combination.is_empty() {
-        let case = file.load[k]
-            .case
-            .clone()
-            .unwrap_or_else(|| crate::scene::DEFAULT_CASE.into());
-        let chosen = match &options.combination {
-            Some(name) => file
-                .combination
+    };
+    let (mut model, combination) = if problem.combinations.is_empty() {
+        if options.combination.is_some() {
+            return Err(Error::invalid(
+                "combination",
+                "the scene has no [[combination]]",
+            ));
+        }
+        (problem.model.clone(), None)
+    } else {
+        let acts =
+            |c: &&crate::scene::Combination| c.factors.iter().any(|(k, f)| *k == case && *f != 0.0);
+        let c = match &options.combination {
+            Some(wanted) => problem
+                .combinations
                 .iter()
-                .find(|c| &c.name == name)
+                .find(|c| &c.name == wanted)
                 .ok_or_else(|| {
-                    Error::invalid("combination", format!("no combination named `{name}`"))
+                    Error::invalid("combination", format!("no combination named `{wanted}`"))
                 })?,
-            None => file
-                .combination
-                .iter()
-                .find(|c| c.factors.get(&case).is_some_and(|&f| f != 0.0))
-                .ok_or_else(|| {
-                    Error::invalid(
-                        "combination",
-                        format!(
-                            "no combination has the case `{case}` of load `{}`",
-                            options.load
-                        ),
-                    )
-                })?,
+            None => problem.combinations.iter().find(acts).ok_or_else(|| {
+                Error::invalid(
+                    "combination",
+                    format!("no combination has the case `{case}` of load `{name}`"),
+                )
+            })?,
         };
-        combination = Some(chosen.name.clone());
-        scene.combination = vec![chosen.clone()];
-    } else if options.combination.is_some() {
-        return Err(Error::invalid(
+        (c.model.clone(), Some(c.name.clone()))
+    };
+    let k = find(&model).ok_or_else(|| {
+        Error::invalid(
             "combination",
-            "the scene has no [[combination]]",
-        ));
-    }
-    Ok((scene, k, combination))
-}
-
-/// The model of the scene with the load `k` at `p` = (x, y, heading).
-fn model_at(scene: &SceneFile, k: usize, p: [f64; 3]) -> Result<Model> {
-    let mut s = scene.clone();
-    s.load[k].x = Some(Coord::Value(p[0]));
-    s.load[k].y = Some(Coord::Value(p[1]));
-    s.load[k].heading = Some(p[2]);
-    let problem = s.validate()?;
-    Ok(match problem.combinations.into_iter().next() {
-        Some(c) => c.model,
-        None => problem.model,
-    })
+            format!(
+                "combination `{}` has no factor on the case `{case}` of load `{name}`",
+                combination.as_deref().unwrap_or_default()
+            ),
+        )
+    })?;
+    model.symmetry = SymmetryMode::None;
+    Ok((model, k, combination))
 }
 
 /// How many positions the search of `options` has (every heading's grid): what a caller that
 /// spreads them over workers (`options.indices`) splits.
-pub fn positions(file: &SceneFile, options: &CriticalOptions) -> Result<usize> {
+pub fn critical_positions(problem: &Problem, options: &CriticalOptions) -> Result<usize> {
     options.validate()?;
-    let (scene, k, _) = scene_for(file, options)?;
-    Ok(grid(&scene, k, options)?.0.len())
+    let (model, k, _) = chosen(problem, options)?;
+    Ok(grid(&model.vehicles[k], options)?.0.len())
 }
 
 /// Move the load over the grid and solve every position; see the module's description.
 pub fn critical(
-    file: &SceneFile,
+    problem: &Problem,
     options: &CriticalOptions,
     monitor: &Monitor<'_>,
 ) -> Result<Critical> {
     options.validate()?;
     let t0 = Instant::now();
-    let (scene, k, combination) = scene_for(file, options)?;
-    let problem = scene.validate()?;
-    let (points, plate, spacing) = grid(&scene, k, options)?;
+    let (model, k, combination) = chosen(problem, options)?;
+    let (points, plate, spacing) = grid(&model.vehicles[k], options)?;
     let picked: Vec<usize> = match &options.indices {
         Some(ix) => {
             if let Some(&bad) = ix.iter().find(|&&i| i >= points.len()) {
@@ -384,21 +397,27 @@ pub fn critical(
         }
         None => (0..points.len()).collect(),
     };
+    // The model with the load at each position: its prints moved, nothing validated again.
     let models: Vec<Model> = picked
         .iter()
-        .map(|&i| model_at(&scene, k, points[i]))
+        .map(|&i| {
+            let mut m = model.clone();
+            m.place(k, points[i])?;
+            Ok(m)
+        })
         .collect::<Result<_>>()?;
-    let base = assemble_for(&problem, &models, "positions")?;
+    let base = assemble_for(problem, &models, "positions")?;
     let assemble_s = t0.elapsed().as_secs_f64();
-    // Contiguous runs of the grid order, one per core: each position starts from the answer of
-    // the one before it (a step of the grid away), the runs side by side.
-    let chunks = rayon::current_num_threads().clamp(1, models.len().max(1));
-    let per = models.len().div_ceil(chunks).max(1);
+    // Runs of the grid order, [`CriticalOptions::RUN`] long whatever the cores: each position
+    // starts from the answer of the one before it (a step of the grid away), the runs side by
+    // side.
+    let work: Vec<(usize, &Model)> = picked.iter().copied().zip(&models).collect();
+    let runs = runs(&picked);
     let cases = Cases::new(monitor, models.len());
     let inner = cases.inner();
-    let work: Vec<(usize, &Model)> = picked.iter().copied().zip(&models).collect();
-    let solved: Vec<Result<Vec<Position>>> = work
-        .par_chunks(per)
+    let solved: Vec<Result<Vec<Position>>> = runs
+        .par_iter()
+        .map(|r| &work[r.clone()])
         .map(|run| {
             let mut out = Vec::with_capacity(run.len());
             let mut start: Option<Vec<f64>> = None;
@@ -473,4 +492,20 @@ pub fn critical(
         assemble_s,
         total_s: t0.elapsed().as_secs_f64(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Runs are blocks of `RUN` grid indices, cut where a share of the grid skips an index.
+    #[test]
+    fn runs_are_cut_from_the_grid_not_the_cores() {
+        let r = CriticalOptions::RUN;
+        let all: Vec<usize> = (0..2 * r + 3).collect();
+        assert_eq!(runs(&all), vec![0..r, r..2 * r, 2 * r..2 * r + 3]);
+        let share = [r - 2, r - 1, r, r + 1, r + 5];
+        assert_eq!(runs(&share), vec![0..2, 2..4, 4..5]);
+        assert!(runs(&[]).is_empty());
+    }
 }
