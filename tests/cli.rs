@@ -610,3 +610,39 @@ fn bad_options_exit_2_and_write_nothing(
         assert!(!bad.exists(), "{a:?}: nothing written");
     }
 }
+
+/// A solve that did not converge prints its diagnosis and no result: no deflection, pressure
+/// or stress line (its last iterate is not a solution), no files, exit 4 (issue 32 §1.2).
+#[test]
+fn a_solve_that_did_not_converge_shows_no_result() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let scene = liftoff::examples::scene("footing")
+        .unwrap_or_default()
+        .replace("[solver]", "[solver]\nmax_iterations = 1");
+    let path = dir.path().join("footing.toml");
+    std::fs::write(&path, scene).expect("write scene");
+    let out = dir.path().join("out");
+    let o = liftoff(&[
+        "solve",
+        path.to_str().unwrap_or_default(),
+        "--out",
+        out.to_str().unwrap_or_default(),
+    ]);
+    let (text, err) = (stdout(&o), stderr(&o));
+    assert_eq!(o.status.code(), Some(4), "{text}{err}");
+    assert!(text.contains("not converged"), "{text}");
+    assert!(text.contains("result     : none"), "{text}");
+    for line in [
+        "deflection :",
+        "pressure   :",
+        "stress     :",
+        "files      :",
+    ] {
+        assert!(
+            !text.contains(line),
+            "`{line}` shown for a solve that did not converge:\n{text}"
+        );
+    }
+    assert!(err.contains("no result is shown"), "{err}");
+    assert!(!out.join("summary.json").exists(), "files written");
+}

@@ -113,6 +113,10 @@ impl SoilModel for ElasticLayer {
         })
     }
 
+    fn stiffness_length(c: f64) -> f64 {
+        (2.0 * std::f64::consts::PI * c).cbrt()
+    }
+
     fn kernel(&self, _: f64, _: f64) -> Option<Kernel> {
         Some(Kernel::new(LayerKernel {
             depth: self.depth,

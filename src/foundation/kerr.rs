@@ -103,6 +103,10 @@ impl SoilModel for Kerr {
         Ok(Kerr { shear, upper })
     }
 
+    fn stiffness_length(c: f64) -> f64 {
+        c.powf(0.25)
+    }
+
     fn kernel(&self, gamma: f64, mu: f64) -> Option<Kernel> {
         Some(Kernel::new(KerrKernel {
             lambda: decay_length(self.shear, gamma, mu),

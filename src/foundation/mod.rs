@@ -74,6 +74,12 @@ macro_rules! soils {
                 }
             }
 
+            /// The plate's radius of relative stiffness on this soil in the unit system for the
+            /// foundation constant `c` ([`SoilModel::stiffness_length`]).
+            pub fn stiffness_length(self, c: f64) -> f64 {
+                match self { $(Self::$v => <$t as SoilModel>::stiffness_length(c)),+ }
+            }
+
             /// Elements per side of the stability study's mesh sweep on this soil.
             pub fn stability_meshes(self) -> Vec<f64> {
                 match self { $(Self::$v => <$t as SoilModel>::stability_meshes()),+ }

@@ -67,6 +67,10 @@ impl SoilModel for Pasternak {
         Ok(Pasternak { shear })
     }
 
+    fn stiffness_length(c: f64) -> f64 {
+        c.powf(0.25)
+    }
+
     fn kernel(&self, gamma: f64, mu: f64) -> Option<Kernel> {
         Some(Kernel::new(PasternakKernel {
             lambda: decay_length(self.shear, gamma, mu),

@@ -329,6 +329,13 @@ pub trait SoilModel: Sized + Copy {
     /// depth is checked.
     fn settlement(&self, c: f64, mu: f64) -> f64;
 
+    /// The plate's radius of relative stiffness on this soil in the unit system (L = D = 1),
+    /// for the foundation constant `c` = μΓ: the length below which the plate's bending
+    /// compliance exceeds the soil's (a pressure wave of wavenumber ξ > 1/ℓ is carried by the
+    /// soil's compliance less than by the plate's). Springs: ℓ⁴ = D/k = c; elastic soils:
+    /// ℓ³ = 2(1 − ν_s²)D/E_s = 2πc.
+    fn stiffness_length(c: f64) -> f64;
+
     /// What the solve table adds after Γ (", Γ_g = …"); empty for a soil of Γ alone.
     fn describe(&self, gamma: f64, mu: f64) -> String {
         let _ = (gamma, mu);

@@ -35,6 +35,10 @@ impl SoilModel for Winkler {
         Ok(Winkler {})
     }
 
+    fn stiffness_length(c: f64) -> f64 {
+        c.powf(0.25)
+    }
+
     fn kernel(&self, _: f64, _: f64) -> Option<Kernel> {
         None
     }

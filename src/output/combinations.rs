@@ -302,6 +302,15 @@ pub fn combinations_table(title: &str, c: &Combinations, files: Option<(usize, &
     for r in &c.runs {
         let factors: Vec<String> = r.factors.iter().map(|(k, v)| format!("{v}×{k}")).collect();
         match &r.outcome {
+            Ok(o) if !o.summary.converged => {
+                // No result lines for a solve that did not converge: its last iterate is not
+                // a solution.
+                let _ = writeln!(
+                    s,
+                    "  {:<16} {:<12} {:>7.3}  (no result: {})",
+                    r.name, "NOT CONVERGED", r.seconds, o.summary.status
+                );
+            }
             Ok(o) => {
                 let sm = &o.summary;
                 let (w, p, m) = if physical {
@@ -320,11 +329,7 @@ pub fn combinations_table(title: &str, c: &Combinations, files: Option<(usize, &
                 let bearing = sm.bearing.map_or("—".to_string(), |b| {
                     format!("{:.0} %", 100.0 * b.utilisation)
                 });
-                let status = if sm.converged {
-                    "converged"
-                } else {
-                    "NOT CONVERGED"
-                };
+                let status = "converged";
                 let _ = writeln!(
                     s,
                     "  {:<16} {:<12} {:>7.3} {:>10.4} {:>10.2} {:>12.3} {:>7.1}% {:>9}  {}",

@@ -133,6 +133,7 @@ fn stress_line(s: &Summary, units: &Units) -> String {
 /// fractions of L for a dimensionless one — and residuals (dimensionless: they measure the
 /// solver); then `files` (how many were written, and where) if any, and the sign convention.
 pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
+    // A solve that did not converge writes no files: `files` is not shown for it.
     let g = &s.dimensionless;
     let mut l = vec![format!("liftoff — {}", s.title)];
     // The soil's own groups.
@@ -242,6 +243,21 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
         s.time_s.assemble, s.time_s.solve, s.time_s.total
     ));
     let r = &s.resultant;
+    if !s.converged {
+        // A solve that did not converge has no result: its last iterate's deflection, pressure
+        // and stresses are not a solution, so only the diagnosis is shown (the status and
+        // history above, the residuals here).
+        let c = &s.complementarity;
+        l.push(
+            "  result     : none — the solve did not converge, and its last iterate is not a solution (no deflection, pressure or stress is shown)"
+                .into(),
+        );
+        l.push(format!(
+            "  residuals  : equilibrium {:.2e} (relative), min σ {:.2e}, min gap {:.2e}, max |σ·gap| {:.2e}",
+            r.relative_error, c.min_pressure, c.min_gap, c.max_product
+        ));
+        return text(l);
+    }
     if g.reference != LoadReference::NetLoad {
         let unit = if s.physical.is_some() { " N" } else { "" };
         l.push(format!(

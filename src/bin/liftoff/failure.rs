@@ -71,7 +71,7 @@ impl Failure {
             _ => "\nhint: --method qp solves the same operators as a convex QP".into(),
         };
         Failure::new(exit::SOLVER, format!(
-            "the {} method did not converge ({}); the numbers above are not a solution and no files were written{hint}",
+            "the {} method did not converge ({}); no result is shown (its last iterate is not a solution) and no files were written{hint}",
             a.summary.method, a.summary.status
         ))
     }

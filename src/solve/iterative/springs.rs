@@ -52,10 +52,29 @@ fn position(m: &sprs::CsMat<f64>, i: usize, j: usize) -> Option<usize> {
     rows.binary_search(&i).ok().map(|p| ptr[j] + p)
 }
 
+/// The plate's radius of relative stiffness on the soil, in fine element sizes, below which the
+/// preconditioner keeps the fine plate. Where ℓ is shorter than a coarse element, the plate's
+/// compliance exceeds the soil's at wavelengths the coarse plate cannot carry, so the coarse
+/// preconditioner misses what dominates the Schur complement there: on a nearly membrane plate
+/// (ℓ = 0.07 h: 0.05 m of 1 MPa on a 30 MPa half-space, 96 × 64 elements) conjugate gradients
+/// stalled at 2000 iterations, and with the fine plate they take 134 (BENCHMARKS.md).
+pub const COARSE_MIN_STIFFNESS_LENGTH: f64 = 2.0;
+
+/// Whether a coarse preconditioner plate carries the plate where it matters: ℓ of the
+/// reference plate on its soil at least [`COARSE_MIN_STIFFNESS_LENGTH`] fine elements (always
+/// on a local soil, whose preconditioner is exact with the fine plate anyway).
+pub fn coarse_resolves(ops: &Operators) -> bool {
+    let ell = ops.foundation.stiffness_length(ops.foundation_constant);
+    let h = ops.mesh.hx.max(ops.mesh.hy);
+    ell >= COARSE_MIN_STIFFNESS_LENGTH * h
+}
+
 impl SpringPlate {
-    /// The preconditioner's plate for `ops`: coarse when `coarse` is asked and the model's
-    /// element counts are even, fine otherwise.
+    /// The preconditioner's plate for `ops`: coarse when `coarse` is asked, the model's
+    /// element counts are even and the plate is stiff at the coarse grid's scale
+    /// ([`coarse_resolves`]), fine otherwise.
     pub fn new(ops: &Operators, coarse: bool) -> Result<Self> {
+        let coarse = coarse && coarse_resolves(ops);
         let m = &ops.mesh;
         if m.topo.is_some() {
             return if coarse {
