@@ -22,6 +22,9 @@ use crate::solve;
 pub enum StabilityParam {
     /// Γ (plate-to-foundation stiffness).
     Gamma,
+    /// Γ again, on the iterative route (T by FFT, conjugate gradients: what meshes beyond
+    /// 1 500 pressure nodes take) at [`ITERATIVE_MESH`] elements per side.
+    GammaIterative,
     /// ε̄ (penalty only).
     Penalty,
     /// A single point load at (s, s).
@@ -32,12 +35,13 @@ pub enum StabilityParam {
     Mesh,
 }
 
-crate::choice::names!(StabilityParam, Gamma => "gamma", Penalty => "penalty", Position => "position", Mu => "mu", Mesh => "mesh");
+crate::choice::names!(StabilityParam, Gamma => "gamma", GammaIterative => "gamma-iterative", Penalty => "penalty", Position => "position", Mu => "mu", Mesh => "mesh");
 
 impl StabilityParam {
     /// Every parameter, in the order of the CSV and the maps.
-    pub const ALL: [StabilityParam; 5] = [
+    pub const ALL: [StabilityParam; 6] = [
         StabilityParam::Gamma,
+        StabilityParam::GammaIterative,
         StabilityParam::Penalty,
         StabilityParam::Position,
         StabilityParam::Mu,
@@ -48,7 +52,9 @@ impl StabilityParam {
     /// load, μ = 1, 16 × 16 elements).
     pub fn values(self, foundation: FoundationKind) -> Vec<f64> {
         match self {
-            StabilityParam::Gamma => log_space(1e-10, 1e8, 10),
+            // From nearly membranes (a steel tank bottom on sand is Γ ≈ 1e-9) to nearly rigid
+            // plates, two decades beyond each end of the paper's range.
+            StabilityParam::Gamma | StabilityParam::GammaIterative => log_space(1e-12, 1e10, 12),
             StabilityParam::Penalty => log_space(1e-2, 1e-14, 13),
             StabilityParam::Position => vec![0.0, 0.25, 0.5, 0.75, 0.9, 1.0],
             StabilityParam::Mu => vec![0.1, 0.25, 0.5, 0.75, 1.0],
@@ -64,6 +70,11 @@ impl StabilityParam {
         }
     }
 }
+
+/// Elements per side of the Γ sweep on the iterative route: large enough for the coarse
+/// preconditioner plate and the nested start to take part (64 per side, a quarter model of
+/// 33 × 33 nodes), small enough for a map of runs.
+pub const ITERATIVE_MESH: usize = 64;
 
 /// One planned run of the stability sweep.
 #[derive(Debug, Clone, Copy)]
@@ -143,6 +154,10 @@ pub fn stability_run(case: &StabilityCase<'_>) -> StabilityRow {
     };
     match case.param {
         StabilityParam::Gamma => model.groups.gamma = value,
+        StabilityParam::GammaIterative => {
+            model.groups.gamma = value;
+            model.elements = [ITERATIVE_MESH, ITERATIVE_MESH];
+        }
         StabilityParam::Penalty => {
             // The sweep studies a fixed ε̄, as in the paper.
             if let Method::Penalty(s) = &mut method {
@@ -175,19 +190,19 @@ pub fn stability_run(case: &StabilityCase<'_>) -> StabilityRow {
     }
     let foundation = model.groups.foundation();
     let t = Instant::now();
-    let result = crate::analysis::prepare(
-        &model,
-        &method,
-        crate::method::Route::Auto,
-        case.base.memory_limit,
-    )
-    .and_then(|ops| {
-        // As a user's solve runs: from the coarser grid's answer where the method's start is
-        // nested (the default), so the map shows the default path's failures.
-        let sol = solve::solve_nested(&model, &ops, &method, &crate::monitor::Monitor::NONE)?;
-        let rep = post::report(&model, &ops, &sol);
-        Ok((sol, rep))
-    });
+    let route = if case.param == StabilityParam::GammaIterative {
+        crate::method::Route::Iterative
+    } else {
+        crate::method::Route::Auto
+    };
+    let result =
+        crate::analysis::prepare(&model, &method, route, case.base.memory_limit).and_then(|ops| {
+            // As a user's solve runs: from the coarser grid's answer where the method's start is
+            // nested (the default), so the map shows the default path's failures.
+            let sol = solve::solve_nested(&model, &ops, &method, &crate::monitor::Monitor::NONE)?;
+            let rep = post::report(&model, &ops, &sol);
+            Ok((sol, rep))
+        });
     let time_s = t.elapsed().as_secs_f64();
     let (sweep, method) = (case.param, case.method);
     match result {
