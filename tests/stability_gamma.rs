@@ -50,7 +50,10 @@ fn the_gamma_sweep_converges_on_the_iterative_route_on_every_continuum_soil() {
     let rows = stability_sweep(&plan, &Monitor::NONE).unwrap_or_else(|e| panic!("{e}"));
     let failed: Vec<String> = rows
         .iter()
-        .filter(|r| r.outcome != RunOutcome::CONVERGED || !(r.equilibrium < 1e-6))
+        // NaN equilibrium (no solve) fails too.
+        .filter(|r| {
+            r.outcome != RunOutcome::CONVERGED || r.equilibrium.is_nan() || r.equilibrium >= 1e-6
+        })
         .map(|r| {
             format!(
                 "{} {} {} Γ = {:.0e}: {} ({}; equilibrium {:e})",
