@@ -618,8 +618,10 @@ fn coarse_pasternak_slabs_are_slow_under_the_sanitizer_but_solve() {
         let t = std::time::Instant::now();
         check(&[(name, text, Expect::Solved("converged"))]);
         let took = t.elapsed().as_secs_f64();
-        // Measured 0.4 s and 1.2 s per pipeline, and the case runs through both; 10 s is the
-        // fuzzer's per-input limit.
-        assert!(took < 10.0, "{name}: {took:.1} s");
+        // Measured 0.4 s and 1.2 s per pipeline on a quiet machine, and the case runs through
+        // both. The fuzzer found it as a run past its 10 s per-input limit (a hang); 60 s is
+        // 50 times the measured time, a margin no loaded two-core machine breaks, and still
+        // catches the hang coming back.
+        assert!(took < 60.0, "{name}: {took:.1} s");
     }
 }

@@ -1,7 +1,7 @@
 //! The nested start (`[solver] start = "nested"`, the default): on a large grid the penalty
 //! iteration and the active-set QP start from the same plate solved on a grid twice as coarse.
 //! The answer is the cold start's — the penalised problem is strictly convex and the QP's
-//! solution unique — and the fine grid takes fewer steps.
+//! solution unique. (That the fine grid takes fewer steps is measured in BENCHMARKS.md.)
 
 use liftoff::method::Start;
 use liftoff::scene::Overrides;
@@ -22,7 +22,7 @@ fn solve(source: &Source<'_>, extra: Overrides) -> liftoff::Analysis {
 /// by the penalty and by the QP: nested and cold starts give the same pressures — to the
 /// iterative route's conjugate-gradient tolerance (1e-10 of the right-hand side: σ to ~1e-9
 /// of its peak) on the half-space, to round-off of the direct solves on Winkler — the same
-/// contact set, and the nested start takes fewer steps on the fine grid.
+/// contact set.
 #[test]
 fn nested_and_cold_starts_give_the_same_answer() {
     for (name, mesh, tol) in [
@@ -62,24 +62,9 @@ fn nested_and_cold_starts_give_the_same_answer() {
                 nested.report.field.contact, cold.report.field.contact,
                 "{what}: the same contact set"
             );
-            assert!(
-                nested.summary.iterations < cold.summary.iterations,
-                "{what}: nested {} steps, cold {}",
-                nested.summary.iterations,
-                cold.summary.iterations
-            );
-            // Issue 26's target for the penalty: at most 5 steps on the fine grid. Its start is
-            // the coarse answer's contact edge (σ − g/T_ii interpolated), not its pressure
-            // alone, which marked a ring of fine nodes too many as in contact (the half-space
-            // here takes 4 steps, as before, one of them the medium-tolerance look that spares
-            // a second tight solve elsewhere; at 256², 3 steps, 8 before).
-            if method == liftoff::method::MethodKind::Penalty {
-                assert!(
-                    nested.summary.iterations <= 5,
-                    "{what}: {} fine steps",
-                    nested.summary.iterations
-                );
-            }
+            // How many fine steps the nested start saves is a matter of tuning, not of
+            // correctness: BENCHMARKS.md records it (issue 26's target of at most 5 penalty
+            // steps on the fine grid, met at 128² to 1024²), no test asserts it.
         }
     }
 }
