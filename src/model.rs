@@ -370,6 +370,9 @@ pub struct Model {
     pub zones: Vec<Zone>,
     /// Pressure the soil may take, in units of P / L² (the bearing check), if given.
     pub allowable_pressure: Option<f64>,
+    /// The side of the square over which the bearing check averages the contact pressure, in
+    /// units of L (the scene's `bearing_length`, by default the plate's thickness).
+    pub bearing_length: f64,
     /// P in the scene's own force unit (N for SI scenes; the loads' relative unit for
     /// dimensionless ones): what makes models of different load sets comparable.
     pub load_scale: f64,

@@ -204,7 +204,13 @@ impl Summary {
             bearing: report.bearing,
             stresses: report.stress,
             joints: report.joints.clone(),
-            notes: ops.notes.iter().chain(&sol.info.notes).cloned().collect(),
+            notes: ops
+                .notes
+                .iter()
+                .chain(&sol.info.notes)
+                .chain(&report.notes)
+                .cloned()
+                .collect(),
         }
     }
 

@@ -50,7 +50,7 @@ fn physical_table_is_in_engineering_units() {
     }
     // Peak pressure in kPa from the largest nodal σ (1 decimal).
     let sigma_max = a.report.field.sigma.iter().cloned().fold(0.0, f64::max);
-    let pr = numbers_after(&table, "pressure   : max");
+    let pr = numbers_after(&table, "pressure   : nodal peak");
     assert!(
         (pr[0] - sigma_max * kpa_per_sigma).abs() <= 0.05 + 1e-9,
         "pressure {} kPa vs {}",

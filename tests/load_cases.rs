@@ -1176,6 +1176,16 @@ fn bearing_under_uniform_pressure_is_all_or_nothing() {
             bearing.area_exceeding
         );
         assert!((bearing.fraction_exceeding - area / 24.0).abs() < 1e-12);
+        // A uniform pressure averages to itself: averaged = nodal peak = q, over squares of
+        // the default side, the slab's thickness.
+        assert!((bearing.length - H).abs() < 1e-12 * H, "{}", bearing.length);
+        assert!(
+            (bearing.average - q).abs() < 1e-10 * q,
+            "{}",
+            bearing.average
+        );
+        assert!((bearing.max - q).abs() < 1e-10 * q, "{}", bearing.max);
+        assert!((bearing.nodal_utilisation - bearing.utilisation).abs() < 1e-10);
     }
     // Without an allowable pressure there is no check.
     let a = solve_with(
@@ -1190,8 +1200,11 @@ fn bearing_under_uniform_pressure_is_all_or_nothing() {
 /// I = Σ A_i x_i² of the lumped springs (the trapezoid weights of the grid). The allowable
 /// pressure p(1 m) is then exceeded exactly on 1 m < x ≤ 2 m: a quarter of the plate, 2 m²
 /// (a linear nodal field has a straight contour, so the bilinear area is exact), and the
-/// utilisation is p(2 m) / p(1 m). Bending and shear bend the pressure by ~1e-3 of F/A, which
-/// moves the contour by ~1e-3 I / (A e) ≈ 3 mm, 0.3 % of the area: tolerance 1 %.
+/// nodal utilisation is p(2 m) / p(1 m). The check averages the pressure over squares of the
+/// plate's thickness, 1 m: a linear field's average over a square is its value at the centre,
+/// so the largest is p(1.5 m), on a square at the edge x = 2 m. Bending and shear bend the
+/// pressure by ~1e-3 of F/A, which moves the contour by ~1e-3 I / (A e) ≈ 3 mm, 0.3 % of the
+/// area: tolerance 1 %.
 #[test]
 fn bearing_exceedance_area_of_a_rigid_plate_under_an_eccentric_load() {
     let (force, e, k) = (1.0e5, 0.5, 1.0e6);
@@ -1223,6 +1236,7 @@ fn bearing_exceedance_area_of_a_rigid_plate_under_an_eccentric_load() {
             .bearing
             .unwrap_or_else(|| panic!("no bearing check"));
         let want_util = p_of(half_l, i_lumped) / allowable;
+        let want_average = p_of(1.5, i_lumped);
         eprintln!(
             "{} rigid-plate bearing: {bearing:?}; want area 2, utilisation {want_util:.5}, min p {:.1}",
             method.name(),
@@ -1235,10 +1249,19 @@ fn bearing_exceedance_area_of_a_rigid_plate_under_an_eccentric_load() {
             bearing.area_exceeding
         );
         assert!(
-            (bearing.utilisation - want_util).abs() < 0.01 * want_util,
-            "{}: utilisation {}, want {want_util}",
+            (bearing.nodal_utilisation - want_util).abs() < 0.01 * want_util,
+            "{}: nodal utilisation {}, want {want_util}",
             method.name(),
-            bearing.utilisation
+            bearing.nodal_utilisation
         );
+        assert!(
+            (bearing.average - want_average).abs() < 0.01 * want_average
+                && (bearing.average_at[0] - 1.5).abs() < 1e-12,
+            "{}: averaged {} Pa at {:?}, want {want_average} at x = 1.5 m",
+            method.name(),
+            bearing.average,
+            bearing.average_at
+        );
+        assert!((bearing.utilisation - want_average / allowable).abs() < 0.01 * want_util);
     }
 }

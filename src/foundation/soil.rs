@@ -292,7 +292,7 @@ impl SoilKeys<'_> {
                     self.chooser(),
                     self.chooser()
                 ),
-                None => format!("unknown field `{name}`: {takes}, beside `allowable_pressure` and `zone`"),
+                None => format!("unknown field `{name}`: {takes}, beside `allowable_pressure`, `bearing_length` and `zone`"),
             },
         ))
     }
@@ -307,11 +307,12 @@ pub trait SoilModel: Sized + Copy {
     /// Its names in the paper's outputs.
     const NAMES: SoilNames;
 
-    /// The keys of `[foundation]` it reads (SI), beyond `model`, `allowable_pressure`, `zone`.
+    /// The keys of `[foundation]` it reads (SI), beyond `model`, `allowable_pressure`,
+    /// `bearing_length`, `zone`.
     const SI_KEYS: &'static [Key];
 
     /// The keys of `[dimensionless]` it reads, beyond `foundation`, `gamma`, `delta`, `mu`,
-    /// `nu`, `allowable_pressure`, `zone`.
+    /// `nu`, `allowable_pressure`, `bearing_length`, `zone`.
     const GROUP_KEYS: &'static [Key];
 
     /// The soil and its Γ from `[foundation]` in SI units under `plate`.

@@ -284,9 +284,14 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
             u = defl.unit
         ));
         l.push(format!(
-            "  pressure   : max {:.1} {}",
+            "  pressure   : nodal peak {:.1} {}{}",
             pres.apply(s.pressure_max),
-            pres.unit
+            pres.unit,
+            if crate::post::average::edge_singularity(s.foundation).is_some() {
+                " (at the plate's edge it depends on the mesh: see the note)"
+            } else {
+                ""
+            }
         ));
         l.push(format!(
             "  moments    : mx {:.1} … {:.1} {u}, my {:.1} … {:.1} {u} (positive: tension on the soil side)",
@@ -338,19 +343,27 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
     l.extend(crate::output::joints::joint_lines(&s.joints, &units));
     if let Some(b) = &s.bearing {
         // Dimensionless scenes show σ = μ r, as the contact map does.
-        let (scale, unit, area) = if s.physical.is_some() {
-            (1e-3, "kPa", "m²")
+        let (scale, unit, area, len_unit) = if s.physical.is_some() {
+            (1e-3, "kPa", "m²", "m")
         } else {
-            (g.mu, "(σ)", "L²")
+            (g.mu, "(σ)", "L²", "L")
         };
         l.push(format!(
-            "  bearing    : max {:.3} of {:.3} {unit} allowed, utilisation {:.0} %, {:.3} {area} ({:.1} % of the plate) above it{}",
-            b.max * scale,
+            "  bearing    : averaged over {:.3} {len_unit} squares {:.3} of {:.3} {unit} allowed (square centred at ({:.3}, {:.3}) {len_unit}), utilisation {:.0} %{}",
+            b.length,
+            b.average * scale,
             b.allowable * scale,
+            b.average_at[0],
+            b.average_at[1],
             100.0 * b.utilisation,
+            if b.utilisation > 1.0 { " — EXCEEDED" } else { "" }
+        ));
+        l.push(format!(
+            "               nodal peak {:.3} {unit} ({:.0} % of the allowable), {:.3} {area} ({:.1} % of the plate) above the allowable",
+            b.max * scale,
+            100.0 * b.nodal_utilisation,
             b.area_exceeding,
             100.0 * b.fraction_exceeding,
-            if b.utilisation > 1.0 { " — EXCEEDED" } else { "" }
         ));
     }
     let c = &s.complementarity;

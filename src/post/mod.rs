@@ -9,6 +9,7 @@
 //! L = P = D = 1 for a dimensionless scene. Dimensionless ones follow the paper (eq. 4.1):
 //! V = D w / (P L²), σ = μ L² r / P.
 
+pub mod average;
 pub mod boundary;
 pub mod exceed;
 pub mod field;
@@ -148,17 +149,31 @@ pub struct Report {
     pub stress: StressSummary,
     /// What each cutting joint carries (empty without joints).
     pub joints: Vec<JointReport>,
+    /// Notes on reading the results (on a continuum soil: the nodal edge pressure is
+    /// mesh-dependent, [`average::edge_note`]).
+    pub notes: Vec<String>,
 }
 
-/// The soil pressure against what the soil may take.
+/// The soil pressure against what the soil may take: the largest pressure averaged over a
+/// square of side `length` ([`average::largest_square_average`]), and the nodal peak beside it.
 #[derive(Debug, Clone, Copy, Serialize)]
 pub struct Bearing {
     /// Allowable pressure (physical: Pa; dimensionless scenes: units of P / L²).
     pub allowable: f64,
-    /// Largest pressure, same unit.
+    /// Side of the averaging square: m, or L units (the scene's `bearing_length`).
+    pub length: f64,
+    /// The largest average of the pressure over a square of side `length` on the plate, same
+    /// unit as `allowable`.
+    pub average: f64,
+    /// [x, y] of that square's centre: m, or L units.
+    pub average_at: [f64; 2],
+    /// average / allowable: the check.
+    pub utilisation: f64,
+    /// The nodal peak pressure, same unit (on a continuum soil, at the plate's edge, it grows
+    /// with the mesh: not a design number).
     pub max: f64,
     /// max / allowable.
-    pub utilisation: f64,
+    pub nodal_utilisation: f64,
     /// Area where the (bilinear) pressure exceeds the allowable one: m², or L² units.
     pub area_exceeding: f64,
     /// That area over the plate's.
@@ -287,15 +302,33 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
         // The field's arrays all have one entry per node copy: area_above cannot fail here.
         let area = exceed::area_above(&field, &field.pressure, allowable).unwrap_or(f64::NAN);
         let (lx, ly) = plate_sides(&field);
+        let length = model.bearing_length * ph.half_length;
+        // The side is at most the plate's smaller side (checked with the scene): None only on
+        // a field of NaN.
+        let (average, average_at) =
+            average::largest_square_average(&field, &field.pressure, length)
+                .unwrap_or((f64::NAN, [f64::NAN; 2]));
         Bearing {
             allowable,
+            length,
+            average,
+            average_at,
+            utilisation: average / allowable,
             max: pressure_max,
-            utilisation: pressure_max / allowable,
+            nodal_utilisation: pressure_max / allowable,
             area_exceeding: area,
             fraction_exceeding: area / (lx * ly),
         }
     });
+    let length = match model.physical {
+        Some(p) => format!("{:.3} m", model.bearing_length * p.half_length),
+        None => format!("{:.4} L", model.bearing_length),
+    };
+    let notes = average::edge_note(model.groups.foundation(), &length)
+        .into_iter()
+        .collect();
     Report {
+        notes,
         joints,
         stress,
         bearing,

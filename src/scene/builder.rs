@@ -86,6 +86,7 @@ impl ModelBuilder {
             mu,
             nu,
             allowable_pressure: None,
+            bearing_length: None,
             zone: Vec::new(),
             soil: Default::default(),
         });
@@ -210,6 +211,18 @@ impl ModelBuilder {
             f.allowable_pressure = Some(p);
         } else if let Some(d) = self.file.dimensionless.as_mut() {
             d.allowable_pressure = Some(p);
+        }
+        self
+    }
+
+    /// The side of the square over which the bearing check averages the contact pressure (m
+    /// in SI scenes, units of L in dimensionless ones; default the plate's thickness). Give
+    /// the foundation (or the groups) first.
+    pub fn bearing_length(mut self, a: f64) -> Self {
+        if let Some(f) = self.file.foundation.as_mut() {
+            f.bearing_length = Some(a);
+        } else if let Some(d) = self.file.dimensionless.as_mut() {
+            d.bearing_length = Some(a);
         }
         self
     }

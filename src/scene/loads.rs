@@ -1,5 +1,5 @@
 //! Validation of the load-related sections of a scene: `[[load]]` with its cases, `[[void]]`,
-//! the Winkler zones and the allowable pressure — in unit geometry with magnitudes not yet
+//! the Winkler zones — in unit geometry with magnitudes not yet
 //! divided by P, since every combination has its own P ([`super::validate`] does that).
 
 use super::spec::{Coord, LoadKind, LoadSpec};
@@ -535,34 +535,4 @@ pub(super) fn zones(file: &SceneFile, groups: &Groups, scale_xy: [f64; 2]) -> Re
         });
     }
     Ok(out)
-}
-
-/// Allowable pressure, raw (SI: r L² in N; dimensionless: in the units of patch pressures).
-pub(super) fn raw_allowable(
-    file: &SceneFile,
-    groups: &Groups,
-    physical: Option<(f64, f64)>,
-) -> Result<Option<f64>> {
-    let (value, field) = match (&file.foundation, &file.dimensionless) {
-        (Some(f), _) => (f.allowable_pressure, "foundation.allowable_pressure"),
-        (None, Some(d)) => (d.allowable_pressure, "dimensionless.allowable_pressure"),
-        (None, None) => (None, ""),
-    };
-    value
-        .map(|v| {
-            let v = finite_positive(
-                field,
-                v,
-                if physical.is_some() {
-                    "Pa"
-                } else {
-                    "the units of patch pressures"
-                },
-            )?;
-            Ok(match physical {
-                Some((l, _)) => v * l * l,
-                None => v / groups.mu,
-            })
-        })
-        .transpose()
 }

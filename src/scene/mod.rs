@@ -8,11 +8,13 @@
 //!
 //! * [`spec`]: the serde types of the sections, with their defaults;
 //! * [`validate`]: one function per section;
+//! * `bearing`: the bearing check's `allowable_pressure` and `bearing_length`;
 //! * the soils read their own keys ([`crate::foundation::soil`]);
 //! * `joints` and `panels`: `[[joint]]` and `[[panel]]` into the model's
 //!   [`crate::layout::Layout`], and the loads a joint line would split;
 //! * [`builder`]: [`Model::builder`], the same validation from Rust without writing TOML.
 
+mod bearing;
 pub mod builder;
 mod joints;
 mod load_spec;

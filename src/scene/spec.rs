@@ -62,6 +62,10 @@ pub struct FoundationSpec {
     /// Pressure the soil may take, Pa: the bearing check (optional).
     #[serde(default)]
     pub allowable_pressure: Option<f64>,
+    /// Side of the square over which the bearing check averages the contact pressure, m
+    /// (default: the plate's thickness; README, "bearing").
+    #[serde(default)]
+    pub bearing_length: Option<f64>,
     /// Softer or stiffer patches of a Winkler subgrade.
     #[serde(default)]
     pub zone: Vec<ZoneSpec>,
@@ -79,6 +83,7 @@ impl FoundationSpec {
         Self {
             model,
             allowable_pressure: None,
+            bearing_length: None,
             zone: Vec::new(),
             soil: keys
                 .into_iter()
@@ -186,6 +191,10 @@ pub struct DimensionlessSpec {
     /// Allowable pressure in the units of patch pressures (bearing check, optional).
     #[serde(default)]
     pub allowable_pressure: Option<f64>,
+    /// Side of the bearing check's averaging square, in units of L (default: the thickness
+    /// H/L that Δ gives).
+    #[serde(default)]
+    pub bearing_length: Option<f64>,
     /// Patches with another Γ_w (Winkler only).
     #[serde(default)]
     pub zone: Vec<ZoneSpec>,

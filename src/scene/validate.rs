@@ -1,9 +1,9 @@
 //! Validation of a scene file into a [`Problem`]: one function per section, each naming the
 //! field and the fix in its errors.
 
+use super::bearing::{bearing_length, raw_allowable};
 use super::loads::{
-    normalise, raw_allowable, raw_loads, raw_voids, voids_for, zones, RawLoad, RawVoid,
-    DEFAULT_CASE,
+    normalise, raw_loads, raw_voids, voids_for, zones, RawLoad, RawVoid, DEFAULT_CASE,
 };
 use super::spec::{
     DimensionlessSpec, FoundationSpec, LoadKind, MeshSpec, PenaltySpec, PlateSpec, SolverSpec,
@@ -229,6 +229,8 @@ struct Shared {
     voids: Vec<RawVoid>,
     zones: Vec<Zone>,
     allowable: Option<f64>,
+    /// The bearing check's averaging length, units of L.
+    bearing_length: f64,
     elements: [usize; 2],
     layout: crate::layout::Layout,
     /// The axles and gears, each where its entry puts it, its `loads` not yet set.
@@ -262,6 +264,7 @@ fn shared(file: &SceneFile) -> Result<Shared> {
     let voids = raw_voids(file, &groups, physical, scale_xy)?;
     let zones = zones(file, &groups, scale_xy)?;
     let allowable = raw_allowable(file, &groups, physical)?;
+    let bearing_length = bearing_length(file, &groups, physical)?;
     let elements = elements(&file.mesh)?;
     let frame = super::joints::Frame {
         half: [1.0, groups.mu],
@@ -285,6 +288,7 @@ fn shared(file: &SceneFile) -> Result<Shared> {
         voids,
         zones,
         allowable,
+        bearing_length,
         elements,
         layout,
         vehicles,
@@ -372,6 +376,7 @@ impl Shared {
             voids,
             zones: self.zones.clone(),
             allowable_pressure: self.allowable.map(|a| a / p_force),
+            bearing_length: self.bearing_length,
             load_scale: p_force,
             reference,
             layout: self.layout.clone(),
