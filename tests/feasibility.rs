@@ -170,3 +170,37 @@ fn two_lanes_with_a_tied_joint_are_balanced() {
         );
     }
 }
+
+/// `critical` over the row of its default 11 × 9 grid that holds the position (the
+/// tandem's outer print ending on the plate's end at its last x), every combination the axle
+/// acts in, both methods: every position converges — none is reported infeasible.
+#[test]
+fn critical_reports_no_feasible_position_as_infeasible() {
+    use liftoff::study::{CriticalOptions, RunOutcome};
+    for method in ["qp", "penalty"] {
+        let scene = lane(0.0, 0.0, 3.6, [90, 24], "", method);
+        let problem = liftoff::load(&Source::Toml(&scene), &Default::default())
+            .unwrap_or_else(|e| panic!("{e}"));
+        for combination in ["axle", "axle-night", "axle-day"] {
+            let options = CriticalOptions {
+                load: "axle".into(),
+                combination: Some(combination.into()),
+                // The 7th row of y (index 6) of the default grid, all 11 x.
+                indices: Some((66..77).collect()),
+                ..CriticalOptions::default()
+            };
+            let c = options
+                .run(&problem, &Monitor::NONE)
+                .unwrap_or_else(|e| panic!("{method} {combination}: {e}"));
+            for p in &c.positions {
+                assert_eq!(
+                    p.outcome,
+                    RunOutcome::CONVERGED,
+                    "{method} {combination} at ({}, {})",
+                    p.x,
+                    p.y
+                );
+            }
+        }
+    }
+}
