@@ -57,6 +57,9 @@ enum Soil {
     Pasternak(f64),
     /// Depth h/L, ν_s, base.
     Layer(f64, f64, Base),
+    /// Decay length λ/L of the shear layer, and the upper springs' compliance over the lower
+    /// ones' (Γ_c/Γ_w).
+    Kerr(f64, f64),
 }
 
 impl Soil {
@@ -66,6 +69,7 @@ impl Soil {
             Soil::HalfSpace => "half-space",
             Soil::Pasternak(_) => "pasternak",
             Soil::Layer(..) => "elastic-layer",
+            Soil::Kerr(..) => "kerr",
         }
     }
 
@@ -97,6 +101,11 @@ impl Scene {
             Soil::Pasternak(lambda) => {
                 format!("shear = {:e}\n", lambda * lambda / (self.mu * self.gamma))
             }
+            Soil::Kerr(lambda, upper) => format!(
+                "shear = {:e}\nupper = {:e}\n",
+                lambda * lambda / (self.mu * self.gamma),
+                upper * self.gamma
+            ),
             Soil::Layer(h, nu, base) => format!(
                 "depth = {h:e}\nsoil_nu = {nu}\nbase = \"{}\"\n",
                 base.name()
@@ -146,6 +155,12 @@ fn soils() -> Vec<(&'static str, BoxedStrategy<Soil>)> {
         (
             "pasternak",
             (0.05f64..0.5).prop_map(Soil::Pasternak).boxed(),
+        ),
+        (
+            "kerr",
+            (0.05f64..0.5, 0.1f64..10.0)
+                .prop_map(|(lambda, upper)| Soil::Kerr(lambda, upper))
+                .boxed(),
         ),
         (
             "layer, rough base",

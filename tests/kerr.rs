@@ -50,9 +50,16 @@ fn stiff_upper_springs_give_the_pasternak_soil() {
 /// spring layers in series, k c/(k + c): Winkler with Γ = Γ_w + Γ_c. They differ by the
 /// discretisation of the springs — consistent (Kerr, a continuum kernel) against lumped
 /// (Winkler) pressure — which falls at second order: from 16 to 32 elements the difference in V
-/// falls by about 4 (rate within 0.4 of 2) and is below 1 % at 32.
+/// falls by about 4 (rate within 0.4 of 2) and is below 1.5 % at 32. In bonded contact and in
+/// unbonded contact alike (a limit of the tensionless problem that is not the Pasternak one).
 #[test]
 fn a_vanishing_shear_layer_gives_springs_in_series() {
+    for contact in ["bonded", "unbonded"] {
+        springs_in_series(contact);
+    }
+}
+
+fn springs_in_series(contact: &str) {
     let diff = |n: usize| {
         // λ/L = √(Γ_g μ Γ_w): Γ_g = (1e-3 h / L)² / Γ_w with h = 2/n.
         let lambda = 1e-3 * 2.0 / n as f64;
@@ -60,22 +67,24 @@ fn a_vanishing_shear_layer_gives_springs_in_series() {
         let kerr = solve(&scene(
             "kerr",
             &format!("shear = {shear:e}\nupper = 2e-3"),
-            "bonded",
+            contact,
             n,
         ));
         let springs =
-            solve(&scene("winkler", "", "bonded", n).replace("gamma = 1e-3", "gamma = 3e-3"));
+            solve(&scene("winkler", "", contact, n).replace("gamma = 1e-3", "gamma = 3e-3"));
         rel_l2(&kerr.report.field.v, &springs.report.field.v)
     };
     let (coarse, fine) = (diff(16), diff(32));
     let rate = (coarse / fine).log2();
+    // Measured 0.61 % bonded and 1.1 % unbonded at 32 (2.6 % and 4.7 % at 16, rate 2.07 and
+    // 2.08): the tensionless limit converges at the same second order.
     assert!(
-        fine < 1e-2,
-        "Kerr (G → 0) against springs in series at 32: ΔV {fine:.2e}"
+        fine < 1.5e-2,
+        "{contact}: Kerr (G → 0) against springs in series at 32: ΔV {fine:.2e}"
     );
     assert!(
         (rate - 2.0).abs() < 0.4,
-        "ΔV {coarse:.2e} → {fine:.2e}: rate {rate:.2}"
+        "{contact}: ΔV {coarse:.2e} → {fine:.2e}: rate {rate:.2}"
     );
 }
 
