@@ -1,8 +1,9 @@
 //! The operators of jointed plates (issue 23): the stiffness of panels joined by joint elements
 //! and dowels, its zero-energy modes, per-panel sections, and the soil under doubled nodes —
 //! each against a reference the code does not produce: an independent triplet assembly, the
-//! eigenvalues of the dense K, the mode counts of the design's `ref_modes.py` (the same
-//! algorithm in numpy), the stress-free curl of a free panel, the unjointed operators.
+//! eigenvalues of the dense K (the mode counts are checked against the dimension of K's null
+//! space computed from its own eigenvalues), the stress-free curl of a free panel, the
+//! unjointed operators.
 
 use liftoff::foundation::FoundationKind;
 use liftoff::layout::{Axis, Joint, JointKind, Layout, PanelOverride, PanelSection};
@@ -30,8 +31,8 @@ fn tied(c: f64, c_r: f64) -> JointKind {
     JointKind::Tied { c, c_r }
 }
 
-/// Two bars per panel edge, as ref_modes.py places them: at the middle of the second and of
-/// the last-but-one of n segments of each panel band along the joint.
+/// Two bars per panel edge: at the middle of the second and of the last-but-one of n segments
+/// of each panel band along the joint.
 fn dowels(k: f64, bands: &[f64], n: usize) -> JointKind {
     let mut positions = Vec::new();
     for w in bands.windows(2) {
@@ -123,9 +124,11 @@ fn triplet_reference(mesh: &Mesh, dofs: &DofMap, reference: &Section) -> DMatrix
     k
 }
 
-/// Mode counts of the design's table (joints-plan.md §4.2, computed by ref_modes.py with
-/// numpy on the same piece modes and joint elements, 8 elements per panel side), on the plate
-/// [−1, 1]²; and the count equals the dimension of K's null space from its own eigenvalues.
+/// Mode counts of jointed plates on [−1, 1]² (8 elements per panel side), each reasoned out in
+/// its case's comment from the pieces' rigid modes and what each joint kind ties; and the
+/// count equals the dimension of K's null space from its own eigenvalues — the reference the
+/// code does not produce. (An earlier design note cited a numpy script and a plan for these
+/// counts; neither is in the repository, so this test stands on the eigenvalues.)
 #[test]
 fn mode_counts_are_those_of_the_reference_table() {
     let third = 1.0 / 3.0;
@@ -303,7 +306,7 @@ fn mode_counts_are_those_of_the_reference_table() {
         let zero = eig.eigenvalues.iter().filter(|&&l| l < 1e-10 * top).count();
         assert_eq!(zero, expect, "{name}: K's null space");
     }
-    // The quarter model of the three panels (not in ref_modes.py's table): the middle piece
+    // The quarter model of the three panels: the middle piece
     // keeps its translation, the outer one its translation and its turn about y; the joint's
     // jump is constant along it (no turn about x): 3 − 1 = 2.
 }
