@@ -124,10 +124,11 @@ fn triplet_reference(mesh: &Mesh, dofs: &DofMap, reference: &Section) -> DMatrix
     k
 }
 
-/// Mode counts of jointed plates on [−1, 1]² (8 elements per panel side), each reasoned out in
-/// its case's comment from the pieces' rigid modes and what each joint kind ties; and the
-/// count equals the dimension of K's null space from its own eigenvalues — the reference the
-/// code does not produce. (An earlier design note cited a numpy script and a plan for these
+/// Mode counts of jointed plates on [−1, 1]² (8 elements per panel side): three rigid modes
+/// per piece, less what each joint ties — a continuous or tied joint all three, an aggregate or
+/// doweled joint the jump in w, leaving the hinge turn about its line, a free joint nothing —
+/// and the count equals the dimension of K's null space from its own eigenvalues, the
+/// reference the code does not produce. (An earlier design note cited a numpy script and a plan for these
 /// counts; neither is in the repository, so this test stands on the eigenvalues.)
 #[test]
 fn mode_counts_are_those_of_the_reference_table() {
