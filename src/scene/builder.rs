@@ -93,6 +93,24 @@ impl ModelBuilder {
         self
     }
 
+    /// One of the soil's own keys, as a scene file would give it: in `[dimensionless]` (a group,
+    /// e.g. Kerr's `upper`) after [`Self::dimensionless`], or in `[foundation]` (SI) after
+    /// [`Self::foundation`]. The soil reads and checks it when the model is built, so any soil's
+    /// keys reach it without a method of their own here.
+    pub fn soil_key(
+        mut self,
+        key: &str,
+        value: impl Into<crate::foundation::soil::KeyValue>,
+    ) -> Self {
+        let value = value.into();
+        if let Some(d) = self.file.dimensionless.as_mut() {
+            d.soil.insert(key.to_string(), value);
+        } else if let Some(f) = self.file.foundation.as_mut() {
+            f.soil.insert(key.to_string(), value);
+        }
+        self
+    }
+
     /// The Pasternak shear parameter Γ_g = G_p L²/D of a dimensionless scene (after
     /// [`Self::dimensionless`] with `FoundationKind::Pasternak`).
     pub fn shear(mut self, shear: f64) -> Self {
