@@ -76,6 +76,18 @@ fn remove_created(created: &[PathBuf]) {
     }
 }
 
+/// The flag of [`cancel_writes_with`].
+static STOP_WRITES: std::sync::OnceLock<&'static std::sync::atomic::AtomicBool> =
+    std::sync::OnceLock::new();
+
+/// Make every [`Staged::commit`] of this process refuse once `flag` is set: the staged files are
+/// discarded and the commit is [`Error::Cancelled`]. The command line passes its Ctrl-C flag,
+/// so an interruption while files are being drawn and written leaves none of them (once the
+/// files are being moved into place, the commit completes). The first call wins.
+pub fn cancel_writes_with(flag: &'static std::sync::atomic::AtomicBool) {
+    let _ = STOP_WRITES.set(flag);
+}
+
 /// The staging directory of a [`Staged`] set and its handles, and the folders created for the
 /// output directory: dropped without a commit, it removes the staging directory and then those
 /// folders (while empty), so nothing of a failed or interrupted write is left.
@@ -163,8 +175,15 @@ impl Staged {
         std::fs::write(&p, text).map_err(io(&p))
     }
 
-    /// Move every staged file into the output directory; returns the final paths.
+    /// Move every staged file into the output directory; returns the final paths. Refused,
+    /// with nothing moved, once the flag of [`cancel_writes_with`] is set.
     pub fn commit(self) -> Result<Vec<PathBuf>> {
+        if STOP_WRITES
+            .get()
+            .is_some_and(|f| f.load(std::sync::atomic::Ordering::SeqCst))
+        {
+            return Err(Error::Cancelled("the writing of the files".into()));
+        }
         let mut out = Vec::new();
         for name in &self.names {
             let from = self.area.path.join(name);

@@ -15,6 +15,8 @@ pub(crate) static CANCEL: AtomicBool = AtomicBool::new(false);
 /// handler already is: not the case in this binary) the signals keep their default action and
 /// end the process as before.
 pub(crate) fn install() {
+    // A signal while files are drawn and staged discards them instead of moving them in.
+    liftoff::output::cancel_writes_with(&CANCEL);
     let _ = ctrlc::set_handler(|| {
         if CANCEL.swap(true, Ordering::SeqCst) {
             crate::progress::note(
