@@ -98,6 +98,12 @@ impl<'a> Monitor<'a> {
         }
     }
 
+    /// Whether this monitor has a cancel flag at all (a loop that must set up something to
+    /// watch the flag — clarabel's callback — skips it without one).
+    pub fn can_cancel(&self) -> bool {
+        self.cancel.is_some()
+    }
+
     /// Whether the caller asked the run to stop.
     pub fn cancelled(&self) -> bool {
         self.cancel.is_some_and(|f| f.load(Ordering::Relaxed))

@@ -426,3 +426,139 @@ fn e26_the_penalised_set_cycles() {
         "E26: the QP the hint names solves the scene ({err})"
     );
 }
+
+/// Start `liftoff ARGS` (stderr piped), let it run for a second — long past installing its
+/// signal handler, well before the end of the runs used here (tens of seconds) — send `signal`
+/// with kill(1), and wait up to 60 s for it to end: (exit code, stderr).
+fn interrupt(args: &[String], signal: &str) -> (Option<i32>, String) {
+    use std::io::Read;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_liftoff"))
+        .args(args)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("start liftoff");
+    std::thread::sleep(std::time::Duration::from_secs(1));
+    let sent = Command::new("kill")
+        .args([signal, &child.id().to_string()])
+        .status()
+        .expect("run kill");
+    assert!(sent.success(), "kill {signal} failed");
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(60);
+    let status = loop {
+        if let Some(s) = child.try_wait().expect("wait for liftoff") {
+            break s;
+        }
+        if std::time::Instant::now() > deadline {
+            let _ = child.kill();
+            panic!("liftoff {args:?} still running 60 s after {signal}");
+        }
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    };
+    let mut err = String::new();
+    if let Some(mut e) = child.stderr.take() {
+        let _ = e.read_to_string(&mut err);
+    }
+    (status.code(), err)
+}
+
+/// E67: Ctrl-C (SIGINT) or SIGTERM stops a run: exit 130, `interrupted: …` naming the
+/// subcommand and saying nothing was written, no `--out` left behind when the run would have
+/// created it, and a folder that existed before left with exactly its own files.
+#[test]
+fn e67_an_interrupted_run_writes_nothing_and_exits_130() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    // A new --out, below a missing parent: neither is left.
+    let out = dir.path().join("new").join("out");
+    // A run of 61 × 61 positions: tens of seconds.
+    let critical = |out: &std::path::Path| -> Vec<String> {
+        let args = [
+            "critical",
+            "example:pavement-3x3",
+            "--load",
+            "axle",
+            "--grid",
+            "61,61",
+        ];
+        let mut v: Vec<String> = args.iter().map(|s| s.to_string()).collect();
+        v.extend(["--out".to_string(), out.display().to_string()]);
+        v
+    };
+    let args = critical(&out);
+    let (code, err) = interrupt(&args, "-INT");
+    assert_eq!(
+        code,
+        Some(130),
+        "E67: exit code after SIGINT (stderr: {err})"
+    );
+    assert!(
+        err.contains("interrupted: `liftoff critical` stopped during")
+            && err.contains("nothing was written")
+            && !err.contains("error:"),
+        "E67: message: {err}"
+    );
+    assert!(
+        err.contains("Ctrl-C again to exit at once"),
+        "E67: the first signal says a second one exits at once: {err}"
+    );
+    assert!(
+        !dir.path().join("new").exists(),
+        "E67: the --out this run would have created (and its parent) is not left behind"
+    );
+
+    // An existing --out with a user's file: the file stays, nothing else appears.
+    let mine = dir.path().join("mine");
+    std::fs::create_dir(&mine).expect("create the user's folder");
+    std::fs::write(mine.join("notes.txt"), "keep me").expect("write the user's file");
+    let args = critical(&mine);
+    let (code, err) = interrupt(&args, "-INT");
+    assert_eq!(
+        code,
+        Some(130),
+        "E67: exit code, existing --out (stderr: {err})"
+    );
+    let left: Vec<String> = std::fs::read_dir(&mine)
+        .map(|d| {
+            d.filter_map(|e| e.ok())
+                .map(|e| e.file_name().to_string_lossy().into_owned())
+                .collect()
+        })
+        .unwrap_or_default();
+    assert_eq!(
+        left,
+        ["notes.txt"],
+        "E67: the existing --out keeps its own file and gains nothing"
+    );
+    assert_eq!(
+        std::fs::read_to_string(mine.join("notes.txt")).unwrap_or_default(),
+        "keep me",
+        "E67: the user's file is intact"
+    );
+
+    // SIGTERM stops a single large solve the same way.
+    let out = dir.path().join("solve-out");
+    let args: Vec<String> = [
+        "solve",
+        "example:paper-halfspace",
+        "--mesh",
+        "256,256",
+        "--symmetry",
+        "none",
+        "--out",
+    ]
+    .iter()
+    .map(|s| s.to_string())
+    .chain([out.display().to_string()])
+    .collect();
+    let (code, err) = interrupt(&args, "-TERM");
+    assert_eq!(
+        code,
+        Some(130),
+        "E67: exit code after SIGTERM (stderr: {err})"
+    );
+    assert!(
+        err.contains("interrupted: `liftoff solve` stopped") && err.contains("nothing was written"),
+        "E67: message after SIGTERM: {err}"
+    );
+    assert!(!out.exists(), "E67: no --out after an interrupted solve");
+}

@@ -384,3 +384,42 @@ fn auto_form_and_memory_follow_the_foundation() {
         Err(Error::TooLarge { .. })
     ));
 }
+
+/// The cancel flag stops clarabel between its interior-point iterations (its termination
+/// callback), in the dense and both sparse forms: a flag set before the solve ends it with
+/// `Error::Cancelled` naming clarabel; an unset flag gives the answer of a solve without one.
+#[test]
+fn a_set_cancel_flag_stops_clarabel() {
+    use std::sync::atomic::AtomicBool;
+    let text = liftoff::examples::scene("paper-winkler").unwrap_or_default();
+    let ops = ops_of(text);
+    let settings = QpSettings::default();
+    let set = AtomicBool::new(true);
+    let unset = AtomicBool::new(false);
+    let stopped = liftoff::Monitor::NONE.with_cancel(&set);
+    let running = liftoff::Monitor::NONE.with_cancel(&unset);
+    let cancelled = |r: liftoff::Result<Solution>, what: &str| match r {
+        Err(Error::Cancelled(during)) => assert!(during.contains("clarabel"), "{what}: {during}"),
+        other => panic!(
+            "{what}: expected Cancelled, got {:?}",
+            other.map(|s| s.status)
+        ),
+    };
+    cancelled(
+        clarabel_dense::solve_with(&ops, &settings, &stopped),
+        "dense",
+    );
+    let plain = clarabel_dense::solve(&ops, &settings).expect("dense QP");
+    let watched =
+        clarabel_dense::solve_with(&ops, &settings, &running).expect("dense QP, flag unset");
+    assert_eq!(plain.sigma, watched.sigma, "an unset flag changes nothing");
+    for form in FORMS {
+        use liftoff::solve::qp::clarabel_sparse::solve_sparse_with;
+        cancelled(
+            solve_sparse_with(&ops, &settings, form, &stopped),
+            &format!("{form:?}"),
+        );
+        let s = solve_sparse_with(&ops, &settings, form, &running).expect("sparse QP, flag unset");
+        assert!(s.status.converged(), "{form:?}: {}", s.status.describe());
+    }
+}

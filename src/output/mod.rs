@@ -27,34 +27,117 @@ fn io(path: &Path) -> impl FnOnce(std::io::Error) -> Error + '_ {
     }
 }
 
-/// Create `dir` if needed and check that files can be created in it — before any solving.
+/// Check, before any solving, that `dir` can be created and files written in it, without
+/// leaving anything behind: the folders this call has to create are removed again, and
+/// [`Staged::new`] creates them when the files are written. So a run that fails or is
+/// interrupted before its files are written leaves no empty output directory, and a directory
+/// that existed before is never removed.
 pub fn prepare_dir(dir: &Path) -> Result<()> {
-    std::fs::create_dir_all(dir).map_err(io(dir))?;
+    let created = create_dirs(dir)?;
+    // The probe file is deleted (dropped) before the folders are removed.
     let probe = tempfile::Builder::new()
         .prefix(".liftoff-write-check")
         .tempfile_in(dir)
-        .map_err(io(dir))?;
-    drop(probe);
-    Ok(())
+        .map(drop)
+        .map_err(io(dir));
+    remove_created(&created);
+    probe
+}
+
+/// Create `dir` and its missing parents; returns the folders this call created, outermost
+/// first (none when `dir` existed). A failure part of the way removes what it created.
+fn create_dirs(dir: &Path) -> Result<Vec<PathBuf>> {
+    let mut missing = Vec::new();
+    let mut p = dir;
+    // Anything at a path, even a dangling link, is not ours to remove.
+    while !p.as_os_str().is_empty() && std::fs::symlink_metadata(p).is_err() {
+        missing.push(p.to_path_buf());
+        match p.parent() {
+            Some(parent) => p = parent,
+            None => break,
+        }
+    }
+    missing.reverse();
+    if let Err(e) = std::fs::create_dir_all(dir) {
+        remove_created(&missing);
+        return Err(io(dir)(e));
+    }
+    Ok(missing)
+}
+
+/// Remove the folders [`create_dirs`] created, innermost first, each only while it is empty
+/// (`remove_dir`): a folder that holds anything — a file written by someone else since — is left
+/// with everything above it.
+fn remove_created(created: &[PathBuf]) {
+    for p in created.iter().rev() {
+        if std::fs::remove_dir(p).is_err() {
+            break;
+        }
+    }
+}
+
+/// The flag of [`cancel_writes_with`].
+static STOP_WRITES: std::sync::OnceLock<&'static std::sync::atomic::AtomicBool> =
+    std::sync::OnceLock::new();
+
+/// Make every [`Staged::commit`] of this process refuse once `flag` is set: the staged files are
+/// discarded and the commit is [`Error::Cancelled`]. The command line passes its Ctrl-C flag,
+/// so an interruption while files are being drawn and written leaves none of them (once the
+/// files are being moved into place, the commit completes). The first call wins.
+pub fn cancel_writes_with(flag: &'static std::sync::atomic::AtomicBool) {
+    let _ = STOP_WRITES.set(flag);
+}
+
+/// The staging directory of a [`Staged`] set and its handles, and the folders created for the
+/// output directory: dropped without a commit, it removes the staging directory and then those
+/// folders (while empty), so nothing of a failed or interrupted write is left.
+struct Area {
+    path: PathBuf,
+    staging: Option<tempfile::TempDir>,
+    created: Vec<PathBuf>,
+    committed: std::sync::atomic::AtomicBool,
+}
+
+impl Drop for Area {
+    fn drop(&mut self) {
+        drop(self.staging.take());
+        if !self.committed.load(std::sync::atomic::Ordering::Relaxed) {
+            remove_created(&self.created);
+        }
+    }
 }
 
 /// A set of files written into a staging directory and moved into place together.
 pub struct Staged {
     dir: PathBuf,
-    staging: std::sync::Arc<tempfile::TempDir>,
+    area: std::sync::Arc<Area>,
     names: Vec<String>,
 }
 
 impl Staged {
-    /// Start staging files for `dir` (which must exist).
+    /// Start staging files for `dir`, creating it (and its missing parents) if needed; dropped
+    /// without [`Self::commit`] (a failed or interrupted write), the staged files are deleted
+    /// and the folders it created removed.
     pub fn new(dir: &Path) -> Result<Self> {
-        let staging = tempfile::Builder::new()
+        let created = create_dirs(dir)?;
+        let staging = match tempfile::Builder::new()
             .prefix(".liftoff-staging")
             .tempdir_in(dir)
-            .map_err(io(dir))?;
+        {
+            Ok(s) => s,
+            Err(e) => {
+                remove_created(&created);
+                return Err(io(dir)(e));
+            }
+        };
         Ok(Self {
             dir: dir.to_path_buf(),
-            staging: std::sync::Arc::new(staging),
+            area: std::sync::Arc::new(Area {
+                path: staging.path().to_path_buf(),
+                staging: Some(staging),
+                created,
+                committed: std::sync::atomic::AtomicBool::new(false),
+            }),
             names: Vec::new(),
         })
     }
@@ -64,7 +147,7 @@ impl Staged {
     pub fn share(&self) -> Self {
         Self {
             dir: self.dir.clone(),
-            staging: self.staging.clone(),
+            area: self.area.clone(),
             names: Vec::new(),
         }
     }
@@ -78,7 +161,7 @@ impl Staged {
     /// sub-folder: `ULS-1/summary.json`).
     pub fn path(&mut self, name: &str) -> PathBuf {
         self.names.push(name.to_string());
-        let p = self.staging.path().join(name);
+        let p = self.area.path.join(name);
         if let Some(parent) = p.parent() {
             // A failure shows when the file is written, with its path.
             let _ = std::fs::create_dir_all(parent);
@@ -92,11 +175,18 @@ impl Staged {
         std::fs::write(&p, text).map_err(io(&p))
     }
 
-    /// Move every staged file into the output directory; returns the final paths.
+    /// Move every staged file into the output directory; returns the final paths. Refused,
+    /// with nothing moved, once the flag of [`cancel_writes_with`] is set.
     pub fn commit(self) -> Result<Vec<PathBuf>> {
+        if STOP_WRITES
+            .get()
+            .is_some_and(|f| f.load(std::sync::atomic::Ordering::SeqCst))
+        {
+            return Err(Error::Cancelled("the writing of the files".into()));
+        }
         let mut out = Vec::new();
         for name in &self.names {
-            let from = self.staging.path().join(name);
+            let from = self.area.path.join(name);
             let to = self.dir.join(name);
             if let Some(parent) = to.parent() {
                 std::fs::create_dir_all(parent).map_err(io(parent))?;
@@ -104,6 +194,9 @@ impl Staged {
             std::fs::rename(&from, &to).map_err(io(&to))?;
             out.push(to);
         }
+        self.area
+            .committed
+            .store(true, std::sync::atomic::Ordering::Relaxed);
         Ok(out)
     }
 }

@@ -10,7 +10,7 @@ use super::{
     KeyNumbers, PaperFigure, PaperOptions, PaperParameters, PaperReport, PaperRun, DELTA,
     GAMMA_RECTANGLE, GAMMA_SQUARE, MAX_REFINE, NU, PENALTY,
 };
-use crate::analysis::analyse;
+use crate::analysis::analyse_with;
 use crate::error::{Error, Result};
 use crate::foundation::FoundationKind;
 use crate::method::{Contact, MethodKind};
@@ -29,7 +29,7 @@ fn solve_case(
 ) -> Result<Solved> {
     let problem = case.problem(refine, method)?;
     let t0 = Instant::now();
-    let a = analyse(&problem)?;
+    let a = analyse_with(&problem, &cases.inner())?;
     let time_s = t0.elapsed().as_secs_f64();
     let s = &a.summary;
     let f = &a.report.field;
@@ -44,7 +44,7 @@ fn solve_case(
         let mut p = problem.clone();
         p.method = paper_penalty();
         p.model.constraint = ConstraintPoints::Gauss;
-        let g = analyse(&p)?;
+        let g = analyse_with(&p, &cases.inner())?;
         (Some(g.summary.iterations), Some(g.summary.contact_radius))
     } else {
         (None, None)

@@ -46,6 +46,22 @@ pub(crate) enum Command {
     },
 }
 
+impl Command {
+    /// The subcommand as typed (for `interrupted: \`liftoff critical\` …`).
+    pub(crate) fn name(&self) -> &'static str {
+        match self {
+            Command::Solve(_) => "solve",
+            Command::Compare(_) => "compare",
+            Command::EpsSweep(_) => "eps-sweep",
+            Command::Tradeoff(_) => "tradeoff",
+            Command::Stability(_) => "stability",
+            Command::Critical(_) => "critical",
+            Command::Paper(_) => "paper",
+            Command::Example { .. } => "example",
+        }
+    }
+}
+
 /// Options shared by `solve` and `compare` that override the scene file.
 #[derive(clap::Args)]
 pub(crate) struct Overrides {

@@ -9,6 +9,8 @@ pub(crate) mod exit {
     pub const INFEASIBLE: u8 = 3;
     pub const SOLVER: u8 = 4;
     pub const IO: u8 = 5;
+    /// Interrupted by Ctrl-C (SIGINT), SIGTERM or SIGHUP: 128 + SIGINT, the shells' convention.
+    pub const INTERRUPTED: u8 = 130;
 }
 
 /// What the binary reports on failure: `error: {message}` on stderr and the exit code.
@@ -23,10 +25,22 @@ impl Failure {
         Failure { message, code }
     }
 
-    /// A library error about a scene: the message starts with where the scene came from.
+    /// A run stopped by a signal ([`crate::interrupt`]) `when` (`during the penalty
+    /// iteration`): exit 130, and the binary prints `interrupted: …`, not `error: …`.
+    pub(crate) fn interrupted(when: impl std::fmt::Display) -> Self {
+        Failure::new(
+            exit::INTERRUPTED,
+            format!("stopped {when}; nothing was written"),
+        )
+    }
+
+    /// A library error about a scene: the message starts with where the scene came from (an
+    /// interruption is not about the scene).
     pub(crate) fn in_scene(spec: &str, e: Error) -> Self {
         let mut f = Failure::from(e);
-        f.message = format!("{spec}: {}", f.message);
+        if f.code != exit::INTERRUPTED {
+            f.message = format!("{spec}: {}", f.message);
+        }
         f
     }
 
@@ -45,13 +59,17 @@ impl Failure {
 
 impl From<Error> for Failure {
     fn from(e: Error) -> Self {
+        if let Error::Cancelled(during) = &e {
+            return Failure::interrupted(format_args!("during {during}"));
+        }
         let (code, hint) = match e.kind() {
             ErrorKind::Invalid | ErrorKind::TooLarge => (exit::BAD_INPUT, ""),
             ErrorKind::Infeasible => (
                 exit::INFEASIBLE,
                 "\nhint: bonded contact (--contact bonded) lets the foundation pull",
             ),
-            ErrorKind::Numerical | ErrorKind::Cancelled => (exit::SOLVER, ""),
+            ErrorKind::Numerical => (exit::SOLVER, ""),
+            ErrorKind::Cancelled => (exit::INTERRUPTED, ""),
             ErrorKind::Io => (exit::IO, ""),
         };
         Failure::new(code, format!("{e}{hint}"))

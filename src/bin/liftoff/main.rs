@@ -4,6 +4,7 @@
 
 mod args;
 mod failure;
+mod interrupt;
 mod progress;
 
 use std::process::ExitCode;
@@ -23,6 +24,8 @@ use progress::with_progress;
 fn main() -> ExitCode {
     faer::set_global_parallelism(faer::Par::Seq);
     let cli = Cli::parse();
+    interrupt::install();
+    let name = cli.command.name();
     let result = match cli.command {
         Command::Solve(args) => solve(args),
         Command::Compare(args) => compare(args),
@@ -33,8 +36,19 @@ fn main() -> ExitCode {
         Command::Paper(args) => paper(args),
         Command::Example { name } => example(name.as_deref()),
     };
+    // A failure after Ctrl-C is the interruption's doing, whatever the error says.
+    let result = match result {
+        Err(f) if interrupt::requested() && f.code != exit::INTERRUPTED => {
+            Err(Failure::interrupted("by a signal"))
+        }
+        r => r,
+    };
     match result {
         Ok(()) => ExitCode::SUCCESS,
+        Err(Failure { message, code }) if code == exit::INTERRUPTED => {
+            eprintln!("interrupted: `liftoff {name}` {message}");
+            ExitCode::from(code)
+        }
         Err(Failure { message, code }) => {
             eprintln!("error: {message}");
             ExitCode::from(code)
@@ -97,6 +111,7 @@ fn solve(args: SolveArgs) -> Result<(), Failure> {
     }
     let outcome = with_progress(false, |m| liftoff::run(&problem, m))
         .map_err(|e| Failure::solving(e, &problem.method))?;
+    interrupt::check()?;
     // A result that did not converge is not a solution (and an envelope missing a combination
     // is not an envelope): no files are written for it.
     let written = match (&args.out, &outcome) {
@@ -159,6 +174,7 @@ fn compare(args: CompareArgs) -> Result<(), Failure> {
     note_first_combination(&problem);
     output::prepare_dir(&args.out)?;
     let c = with_progress(false, |m| liftoff::compare::compare_with(&problem, m))?;
+    interrupt::check()?;
     let json = serde_json::to_string_pretty(&c)
         .map_err(|e| Failure::new(exit::IO, format!("cannot serialise compare.json: {e}")))?;
     let mut st = output::Staged::new(&args.out)?;
@@ -187,6 +203,7 @@ fn eps_sweep(args: EpsSweepArgs) -> Result<(), Failure> {
     note_first_combination(&problem);
     output::prepare_dir(&args.out)?;
     let sweep = with_progress(false, |m| options.run(&problem, m))?;
+    interrupt::check()?;
     let title = &problem.model.title;
     let chart_title = format!("{title} — penalty against QP");
     output::studies::write_sweep(&args.out, &sweep, &chart_title)?;
@@ -207,6 +224,7 @@ fn tradeoff(args: TradeoffArgs) -> Result<(), Failure> {
     note_first_combination(&problem);
     output::prepare_dir(&args.out)?;
     let t = with_progress(false, |m| options.run(&problem, m))?;
+    interrupt::check()?;
     let title = &problem.model.title;
     let chart_title = format!("{title} — speed against accuracy");
     output::studies::write_tradeoff(&args.out, &t, &chart_title)?;
@@ -238,6 +256,7 @@ fn stability(args: StabilityArgs) -> Result<(), Failure> {
     output::prepare_dir(&args.out)?;
     let plan = study::stability_plan(&bases);
     let rows = with_progress(false, |m| study::stability_sweep(&plan, m))?;
+    interrupt::check()?;
     output::studies::write_stability(&args.out, &rows, "liftoff stability")?;
     print!("{}", study_tables::stability_table(&rows, &args.out));
     Ok(())
@@ -264,6 +283,7 @@ fn critical(args: CriticalArgs) -> Result<(), Failure> {
     }
     let c = with_progress(false, |m| options.run(&problem, m))
         .map_err(|e| Failure::in_scene(&args.scene, e))?;
+    interrupt::check()?;
     let title = match &c.combination {
         Some(name) => liftoff::scene::scene_title(&problem.model.title, name),
         None => &problem.model.title,

@@ -1,10 +1,26 @@
 //! Progress bars (indicatif) drawn from the library's [`liftoff::Progress`] events.
 
+use std::sync::Mutex;
+
 use liftoff::Monitor;
+
+/// The bar being drawn, for [`note`] (the signal handler's thread).
+static BAR: Mutex<Option<indicatif::ProgressBar>> = Mutex::new(None);
+
+/// Print a line on stderr without tearing the progress bar (the bar is redrawn below it).
+pub(crate) fn note(line: &str) {
+    let bar = BAR.lock().ok().and_then(|b| b.clone());
+    match bar {
+        Some(pb) => pb.suspend(|| eprintln!("{line}")),
+        None => eprintln!("{line}"),
+    }
+}
 
 /// Run a library call under a progress bar drawn from its [`liftoff::Progress`] events (on a
 /// terminal only): the cases done of a run over several (combinations, a study's solves), the
-/// steps of one long solve. With `log`, every case's label is also printed as a line.
+/// steps of one long solve. With `log`, every case's label is also printed as a line. The run's
+/// monitor carries the cancel flag of Ctrl-C ([`crate::interrupt`]); the bar is cleared however
+/// the run ends.
 pub(crate) fn with_progress<T>(log: bool, run: impl FnOnce(&Monitor<'_>) -> T) -> T {
     let pb = indicatif::ProgressBar::new_spinner();
     let bar =
@@ -37,7 +53,16 @@ pub(crate) fn with_progress<T>(log: bool, run: impl FnOnce(&Monitor<'_>) -> T) -
             pb.tick();
         }
     };
-    let result = run(&Monitor::NONE.with_progress(&report));
+    if let Ok(mut b) = BAR.lock() {
+        *b = Some(pb.clone());
+    }
+    let monitor = Monitor::NONE
+        .with_cancel(&crate::interrupt::CANCEL)
+        .with_progress(&report);
+    let result = run(&monitor);
+    if let Ok(mut b) = BAR.lock() {
+        *b = None;
+    }
     pb.finish_and_clear();
     result
 }

@@ -18,11 +18,12 @@ use std::time::Instant;
 
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{
-    DefaultSettings, DefaultSettingsBuilder, DefaultSolver, IPSolver, SolverStatus, SupportedConeT,
+    DefaultSettings, DefaultSettingsBuilder, DefaultSolver, SolverStatus, SupportedConeT,
 };
 
 use crate::error::{Error, Result};
 use crate::method::{Method, QpForm, QpSettings, QpSolver};
+use crate::monitor::Monitor;
 use crate::operators::Operators;
 use crate::solve::bonded::SchurSystem;
 use crate::solve::checks::discrete_gap;
@@ -60,6 +61,15 @@ pub(crate) fn diagnostics(
 
 /// Solve the unbonded problem as a QP.
 pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
+    solve_with(ops, settings, &Monitor::NONE)
+}
+
+/// [`solve`], stopped between interior-point iterations by `monitor`'s cancel flag.
+pub fn solve_with(
+    ops: &Operators,
+    settings: &QpSettings,
+    monitor: &Monitor<'_>,
+) -> Result<Solution> {
     let t0 = Instant::now();
     let sys = SchurSystem::new(ops)?;
     let t_schur = t0.elapsed().as_secs_f64();
@@ -115,7 +125,7 @@ pub fn solve(ops: &Operators, settings: &QpSettings) -> Result<Solution> {
     let t1 = Instant::now();
     let mut solver = DefaultSolver::new(&p, &q, &a, &b, &cones, cl_settings)
         .map_err(|e| Error::numerical("clarabel setup", format!("{e:?}")))?;
-    solver.solve();
+    super::clarabel_watched(&mut solver, monitor)?;
     let t_qp = t1.elapsed().as_secs_f64();
     let sol = &solver.solution;
     let status = match sol.status {

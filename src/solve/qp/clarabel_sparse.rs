@@ -61,13 +61,14 @@
 use std::time::Instant;
 
 use clarabel::algebra::CscMatrix;
-use clarabel::solver::{DefaultSolver, IPSolver, SolverStatus, SupportedConeT};
+use clarabel::solver::{DefaultSolver, SolverStatus, SupportedConeT};
 
 use super::clarabel_dense::{clarabel_settings, diagnostics};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
 use crate::method::{Method, QpForm, QpSettings};
 use crate::model::ConstraintPoints;
+use crate::monitor::Monitor;
 use crate::operators::Operators;
 use crate::solve::checks::discrete_gap;
 use crate::solve::linalg::finite;
@@ -94,6 +95,16 @@ impl SparseForm {
 
 /// Solve the unbonded Winkler problem as a sparse QP in the given form.
 pub fn solve_sparse(ops: &Operators, settings: &QpSettings, form: SparseForm) -> Result<Solution> {
+    solve_sparse_with(ops, settings, form, &Monitor::NONE)
+}
+
+/// [`solve_sparse`], stopped between interior-point iterations by `monitor`'s cancel flag.
+pub fn solve_sparse_with(
+    ops: &Operators,
+    settings: &QpSettings,
+    form: SparseForm,
+    monitor: &Monitor<'_>,
+) -> Result<Solution> {
     let t0 = Instant::now();
     let t = match ops.t.as_ref() {
         Compliance::Diagonal(t) => t,
@@ -132,7 +143,7 @@ pub fn solve_sparse(ops: &Operators, settings: &QpSettings, form: SparseForm) ->
     .map_err(|e| Error::numerical("clarabel setup", format!("{e:?}")))?;
     let t_setup = t1.elapsed().as_secs_f64();
     let t2 = Instant::now();
-    solver.solve();
+    super::clarabel_watched(&mut solver, monitor)?;
     let t_solve = t2.elapsed().as_secs_f64();
     let sol = &solver.solution;
     let status = match sol.status {
