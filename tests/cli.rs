@@ -499,7 +499,8 @@ fn tradeoff_writes_its_table_and_chart() {
 
 /// `stability` end to end over two small base scenes (the paper's plate on 8 × 8 elements with
 /// a 64 MiB memory limit, so the mesh sweep refuses its dense cases instead of running for
-/// minutes): one CSV row per planned run (136), known outcomes, the printed count of
+/// minutes): one CSV row per planned run (192: 136 before the Γ sweep widened to 12 values
+/// and took the iterative route as well, 28 more per scene), known outcomes, the printed count of
 /// non-converged runs equal to the CSV's, the corner load infeasible on the half-space, and one
 /// map per method. A scene that cannot be read exits 5 with nothing written.
 #[test]
@@ -528,7 +529,7 @@ fn stability_writes_one_row_per_run_and_the_maps() {
     assert!(o.status.success(), "{}", stderr(&o));
     let printed = stdout(&o);
     assert!(
-        printed.starts_with("liftoff stability — 136 runs"),
+        printed.starts_with("liftoff stability — 192 runs"),
         "{printed}"
     );
     for f in ["stability-penalty.svg", "stability-qp.svg"] {
@@ -552,7 +553,7 @@ fn stability_writes_one_row_per_run_and_the_maps() {
             "detail"
         ]
     );
-    assert_eq!(rows.len(), 136, "69 Winkler runs and 67 half-space runs");
+    assert_eq!(rows.len(), 192, "97 Winkler runs and 95 half-space runs");
     let known = common::OUTCOMES;
     let mut failed = 0;
     for r in &rows {
@@ -570,7 +571,7 @@ fn stability_writes_one_row_per_run_and_the_maps() {
     }
     assert!(failed > 0 && failed < rows.len());
     assert!(
-        printed.contains(&format!("{failed} of 136 runs did not converge")),
+        printed.contains(&format!("{failed} of 192 runs did not converge")),
         "{failed} non-converged rows in the CSV: {printed}"
     );
     // Each non-converged run is listed on its own line, outcome and detail after the colon.

@@ -462,7 +462,7 @@ fn interrupt(args: &[String], signal: &str) -> (Option<i32>, String) {
     (status.code(), err)
 }
 
-/// E67: Ctrl-C (SIGINT) or SIGTERM stops a run: exit 130, `interrupted: …` naming the
+/// E68: Ctrl-C (SIGINT) or SIGTERM stops a run: exit 130, `interrupted: …` naming the
 /// subcommand and saying nothing was written, no `--out` left behind when the run would have
 /// created it, and a folder that existed before left with exactly its own files.
 #[test]
@@ -489,21 +489,21 @@ fn e67_an_interrupted_run_writes_nothing_and_exits_130() {
     assert_eq!(
         code,
         Some(130),
-        "E67: exit code after SIGINT (stderr: {err})"
+        "E68: exit code after SIGINT (stderr: {err})"
     );
     assert!(
         err.contains("interrupted: `liftoff critical` stopped during")
             && err.contains("nothing was written")
             && !err.contains("error:"),
-        "E67: message: {err}"
+        "E68: message: {err}"
     );
     assert!(
         err.contains("Ctrl-C again to exit at once"),
-        "E67: the first signal says a second one exits at once: {err}"
+        "E68: the first signal says a second one exits at once: {err}"
     );
     assert!(
         !dir.path().join("new").exists(),
-        "E67: the --out this run would have created (and its parent) is not left behind"
+        "E68: the --out this run would have created (and its parent) is not left behind"
     );
 
     // An existing --out with a user's file: the file stays, nothing else appears.
@@ -515,7 +515,7 @@ fn e67_an_interrupted_run_writes_nothing_and_exits_130() {
     assert_eq!(
         code,
         Some(130),
-        "E67: exit code, existing --out (stderr: {err})"
+        "E68: exit code, existing --out (stderr: {err})"
     );
     let left: Vec<String> = std::fs::read_dir(&mine)
         .map(|d| {
@@ -527,12 +527,12 @@ fn e67_an_interrupted_run_writes_nothing_and_exits_130() {
     assert_eq!(
         left,
         ["notes.txt"],
-        "E67: the existing --out keeps its own file and gains nothing"
+        "E68: the existing --out keeps its own file and gains nothing"
     );
     assert_eq!(
         std::fs::read_to_string(mine.join("notes.txt")).unwrap_or_default(),
         "keep me",
-        "E67: the user's file is intact"
+        "E68: the user's file is intact"
     );
 
     // SIGTERM stops a single large solve the same way.
@@ -554,11 +554,11 @@ fn e67_an_interrupted_run_writes_nothing_and_exits_130() {
     assert_eq!(
         code,
         Some(130),
-        "E67: exit code after SIGTERM (stderr: {err})"
+        "E68: exit code after SIGTERM (stderr: {err})"
     );
     assert!(
         err.contains("interrupted: `liftoff solve` stopped") && err.contains("nothing was written"),
-        "E67: message after SIGTERM: {err}"
+        "E68: message after SIGTERM: {err}"
     );
-    assert!(!out.exists(), "E67: no --out after an interrupted solve");
+    assert!(!out.exists(), "E68: no --out after an interrupted solve");
 }
