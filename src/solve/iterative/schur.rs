@@ -5,7 +5,7 @@ use std::sync::Arc;
 use std::time::Instant;
 
 use super::preconditioner::Preconditioner;
-use super::springs::SpringPlate;
+use super::springs::{coarse_resolves, SpringPlate};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
 use crate::method::CgSettings;
@@ -116,7 +116,9 @@ struct PlateSetup {
 
 impl SpringSetup {
     fn new(ops: &Operators, settings: CgSettings, t_diag: &[f64], c: &[Vec<f64>]) -> Result<Self> {
-        let springs = SpringPlate::new(ops, settings.coarse_plate)?;
+        // The coarse plate only where it carries the plate's compliance (a nearly membrane
+        // plate needs the fine one).
+        let springs = SpringPlate::new(ops, settings.coarse_plate && coarse_resolves(ops))?;
         let bonded =
             Preconditioner::new(&springs, t_diag, c, settings.spring_scale, (&[], &[]), &[])?;
         Ok(Self {

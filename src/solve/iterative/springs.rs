@@ -70,11 +70,10 @@ pub fn coarse_resolves(ops: &Operators) -> bool {
 }
 
 impl SpringPlate {
-    /// The preconditioner's plate for `ops`: coarse when `coarse` is asked, the model's
-    /// element counts are even and the plate is stiff at the coarse grid's scale
-    /// ([`coarse_resolves`]), fine otherwise.
+    /// The preconditioner's plate for `ops`: coarse when `coarse` is asked and the model's
+    /// element counts are even, fine otherwise. (The Schur system asks for it only where the
+    /// plate is stiff at the coarse grid's scale, [`coarse_resolves`].)
     pub fn new(ops: &Operators, coarse: bool) -> Result<Self> {
-        let coarse = coarse && coarse_resolves(ops);
         let m = &ops.mesh;
         if m.topo.is_some() {
             return if coarse {
