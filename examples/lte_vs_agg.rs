@@ -33,13 +33,20 @@ const EXACT: [(f64, f64); 11] = [
     (1000.0, 0.99673944),
 ];
 
-/// Crovetti's regression (1994), LTE = 1/(1 + 1.2 f^−0.849).
+/// Crovetti's regression, LTE = 1/(1 + 1.2 f^−0.849) with f = AGG/(kℓ): J. A. Crovetti's 1994
+/// PhD thesis at the University of Illinois at Urbana-Champaign, a fit to finite-element runs
+/// (the constants as recalled in the design, not re-read in the thesis; its title is not
+/// checked here).
 fn crovetti(f: f64) -> f64 {
     1.0 / (1.0 + 1.2 * f.powf(-0.849))
 }
 
 /// The log form, LTE = 1/(1 + 10^{(0.214 − 0.183 a/ℓ − log₁₀ f)/1.18}), with a/ℓ the radius of
-/// the circle of the patch's area.
+/// the circle of the patch's area: of the family of Ioannides & Korovesis, "Aggregate
+/// interlock: a pure-shear load transfer mechanism", Transportation Research Record 1286
+/// (1990), pp. 14–24, which defined the relative joint stiffness f = AGG/(kℓ) and related the
+/// LTE to it and to a/ℓ by finite-element runs (the constants as recalled in the design, not
+/// re-read in the paper).
 fn log_form(f: f64) -> f64 {
     let a = (0.25 / std::f64::consts::PI).sqrt();
     1.0 / (1.0 + 10f64.powf((0.214 - 0.183 * a - f.log10()) / 1.18))

@@ -377,10 +377,11 @@ mod tests {
 
     /// The spring of a 32 mm steel dowel (E_d = 200 GPa, K = 4.07e11 N/m³) against an
     /// independent direct solution of the beam on its two beds with the free opening between
-    /// them (a 6 × 6 boundary-value problem, `dowel_spring_direct` of the design's
-    /// ref_dowels.py, which uses none of the closed forms above): the closed form agrees to
-    /// round-off, so 1e-10 relative. β and the face deflection are the textbook formulas,
-    /// checked against the same script's numbers.
+    /// them (an 8 × 8 boundary-value problem in `tests/references/dowel_beam.py`, which uses
+    /// none of the closed forms above and prints every number here): the closed form agrees
+    /// to round-off, so 1e-10 relative. β is its definition; the face deflection and bearing
+    /// stress at 10 kN are the same script's direct |u(0)| and K |u(0)| (Friberg's closed form
+    /// gives them to round-off). `tests/joints_dowels.rs` runs the script and compares.
     #[test]
     fn dowel_spring_matches_the_direct_beam_solution() {
         let bar = |z: f64| DowelBar {

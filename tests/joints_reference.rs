@@ -183,23 +183,25 @@ fn two_mindlin_plates_joined_by_springs_converge_at_second_order_to_the_exact_so
 
         let j = &runs[1].0.report.joints[0];
         // The deflection LTE is a ratio of two deflections whose O(h²) errors are nearly the
-        // same fraction: measured |ΔLTE| ≤ 1.4e-4 at ℓ/16 (the design allowed 2e-3); 3e-4
-        // asserted.
+        // same fraction: measured |ΔLTE| ≤ 1.4e-4 at ℓ/16 (the design allowed 2e-3). Relative,
+        // since the soft joint's LTE is small (0.082 at c = 0.1): measured |ΔLTE|/LTE ≤ 6.0e-4
+        // (c = 0.1), 1e-3 asserted.
         assert_eq!(
             j.at,
             [0.0, 0.0],
             "{tag}: read where the loaded side deflects most"
         );
         assert!(
-            (j.lte_deflection - row.lte).abs() <= 3e-4,
+            (j.lte_deflection / row.lte - 1.0).abs() <= 1e-3,
             "{tag}: LTE {} vs {}",
             j.lte_deflection,
             row.lte
         );
         // The transferred force c ∫ (w⁻ − w⁺) dy (the η = 0 term of the reference): measured
-        // ≤ 6e-5 P at ℓ/16; 2e-4 P asserted.
+        // ≤ 6e-5 P at ℓ/16, relative ≤ 5.0e-4 (c = 0.1, where it is 0.09 P); 1e-3 relative
+        // asserted.
         assert!(
-            (j.transferred_force / P - row.force).abs() <= 2e-4,
+            (j.transferred_force / P / row.force - 1.0).abs() <= 1e-3,
             "{tag}: F {} vs {}",
             j.transferred_force / P,
             row.force
@@ -210,9 +212,11 @@ fn two_mindlin_plates_joined_by_springs_converge_at_second_order_to_the_exact_so
         // √((1 − ν)D/(2S)) = 0.08ℓ, is where the moment changes fastest). That zone is barely
         // resolved at ℓ/16, so the unloaded side's edge moment converges more slowly than w:
         // measured |ΔLTE_σ| ≤ 2.3e-3 at ℓ/16 (c = 100; ≤ 4e-4 for the others), and on the
-        // 12 m plate at ℓ/32 9e-4: it converges. 3e-3 asserted at ℓ/16.
+        // 12 m plate at ℓ/32 9e-4: it converges. Relative, since at c = 0.1 the stress LTE is
+        // 0.024 (an absolute 3e-3 would allow 12 %): measured |ΔLTE_σ|/LTE_σ ≤ 3.4e-3 (c = 100;
+        // ≤ 1e-3 for the others, 9.4e-4 at c = 0.1); 5e-3 asserted at ℓ/16.
         assert!(
-            (j.lte_stress - row.stress_lte[1]).abs() <= 3e-3,
+            (j.lte_stress / row.stress_lte[1] - 1.0).abs() <= 5e-3,
             "{tag}: LTE_σ {} vs {}",
             j.lte_stress,
             row.stress_lte[1]
@@ -268,10 +272,15 @@ fn a_free_joint_on_a_thin_plate_is_westergaards_free_edge() {
 }
 
 /// The deflection LTE against AGG/(kℓ) = 0.01 … 1000 (section L of two_plates.py): exact
-/// semi-infinite Mindlin plates (H = 0.25ℓ) and the two published regressions, Crovetti's
-/// 1/(1 + 1.2 f^−0.849) and the log form 1/(1 + 10^{(0.214 − 0.183 a/ℓ − log f)/1.18}) with
-/// a/ℓ = 0.2821 of the circle of the patch's area (constants from the design's doubts list:
-/// recalled, not read in the sources; the exact curve supports the log form closely).
+/// semi-infinite Mindlin plates (H = 0.25ℓ) and the two published regressions: Crovetti's
+/// 1/(1 + 1.2 f^−0.849) (J. A. Crovetti's 1994 PhD thesis, University of Illinois at
+/// Urbana-Champaign) and the log form 1/(1 + 10^{(0.214 − 0.183 a/ℓ − log f)/1.18}) with
+/// a/ℓ = 0.2821 of the circle of the patch's area (of the family of Ioannides & Korovesis,
+/// "Aggregate interlock: a pure-shear load transfer mechanism", Transportation Research Record
+/// 1286, 1990, pp. 14–24, which defined f = AGG/(kℓ) and fitted the LTE to it and a/ℓ from
+/// finite-element runs). Both sets of constants come from the design's doubts list: recalled,
+/// not re-read in those sources — so they are checks of shape only; the exact curve supports
+/// the log form closely.
 #[rustfmt::skip]
 pub const LTE_TABLE: [(f64, f64, f64, f64); 11] = [
     // (f, exact Mindlin, Crovetti, log form)
@@ -291,7 +300,8 @@ pub const LTE_TABLE: [(f64, f64, f64, f64); 11] = [
 /// liftoff's LTE over the 11 stiffnesses at h = ℓ/8 (the section-a scene). Asserted, as the
 /// design asks: |LTE − exact| ≤ 5e-3 (the real test of the code; measured ≤ 5.3e-4, at f = 1,
 /// the ℓ/8 deflections' errors being nearly the same fraction on both sides, so 1e-3 is
-/// asserted),
+/// asserted) and, since at f = 0.01 the LTE is 0.0092 and 1e-3 would allow 11 %, relative:
+/// measured |LTE/exact − 1| ≤ 2.7e-3 (largest at the smallest f), 4e-3 asserted;
 /// |LTE − log form| ≤ 0.02 and |LTE − Crovetti| ≤ 0.04 (checks of shape: the regressions are
 /// fits to finite-element runs, the log form lies within 0.012 of the exact curve, Crovetti's
 /// 0.02–0.03 above it in the middle), and LTE increasing with the stiffness.
@@ -307,6 +317,10 @@ fn lte_against_joint_stiffness_follows_the_exact_curve_and_the_regressions() {
             lte - exact
         );
         assert!((lte - exact).abs() <= 1e-3, "f = {f}: {lte} vs {exact}");
+        assert!(
+            (lte / exact - 1.0).abs() <= 4e-3,
+            "f = {f}: {lte} vs {exact}, relative"
+        );
         assert!(
             (lte - log_form).abs() <= 0.02,
             "f = {f}: {lte} vs log form {log_form}"

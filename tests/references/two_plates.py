@@ -511,10 +511,15 @@ AGG = [0.01, 0.03, 0.1, 0.3, 1, 3, 10, 30, 100, 300, 1000]
 
 
 def crovetti(f):
+    """Crovetti's regression (J. A. Crovetti, PhD thesis, University of Illinois at
+    Urbana-Champaign, 1994), f = AGG/(k ell); constants as recalled, not re-read there."""
     return 1 / (1 + 1.2 * f ** -0.849)
 
 
 def log_form(f, a):
+    """The log form of Ioannides & Korovesis's family ("Aggregate interlock: a pure-shear load
+    transfer mechanism", Transportation Research Record 1286, 1990, pp. 14-24), a = a/ell of
+    the load; constants as recalled, not re-read there."""
     return 1 / (1 + 10 ** ((0.214 - 0.183 * a - np.log10(f)) / 1.18))
 
 
