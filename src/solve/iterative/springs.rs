@@ -53,12 +53,15 @@ fn position(m: &sprs::CsMat<f64>, i: usize, j: usize) -> Option<usize> {
 }
 
 /// The plate's radius of relative stiffness on the soil, in fine element sizes, below which the
-/// preconditioner keeps the fine plate. Where ℓ is shorter than a coarse element, the plate's
-/// compliance exceeds the soil's at wavelengths the coarse plate cannot carry, so the coarse
-/// preconditioner misses what dominates the Schur complement there: on a nearly membrane plate
-/// (ℓ = 0.07 h: 0.05 m of 1 MPa on a 30 MPa half-space, 96 × 64 elements) conjugate gradients
-/// stalled at 2000 iterations, and with the fine plate they take 134 (BENCHMARKS.md).
-pub const COARSE_MIN_STIFFNESS_LENGTH: f64 = 2.0;
+/// preconditioner keeps the fine plate. Where ℓ is short against the coarse elements, the
+/// plate's compliance exceeds the soil's at wavelengths the coarse plate cannot carry, so the
+/// coarse preconditioner misses what dominates the Schur complement there: on a nearly membrane
+/// plate (ℓ = 0.07 h: 0.05 m of 1 MPa on a 30 MPa half-space, 96 × 64 elements) conjugate
+/// gradients stalled at 2000 iterations, and with the fine plate they take 134; at ℓ = 0.5 h
+/// the coarse plate's penalty still cycled, at ℓ = h it converged in 6 steps (66 CG iterations
+/// for the bonded solve, 42 with the fine plate: BENCHMARKS.md). So the coarse plate from one
+/// element on, where it costs a quarter of the factorisation.
+pub const COARSE_MIN_STIFFNESS_LENGTH: f64 = 1.0;
 
 /// Whether a coarse preconditioner plate carries the plate where it matters: ℓ of the
 /// reference plate on its soil at least [`COARSE_MIN_STIFFNESS_LENGTH`] fine elements (always
