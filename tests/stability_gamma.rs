@@ -23,19 +23,13 @@ const OPEN: [(&str, &str, f64); 4] = [
 
 #[test]
 fn the_gamma_sweep_converges_on_the_iterative_route_on_every_continuum_soil() {
-    let bases: Vec<_> = [
-        "paper-winkler",
-        "paper-halfspace",
-        "slab-pasternak",
-        "slab-clay-layer",
-        "slab-kerr",
-    ]
-    .iter()
-    .map(|n| {
-        liftoff::load(&Source::Example(n), &Default::default())
-            .unwrap_or_else(|e| panic!("{n}: {e}"))
-    })
-    .collect();
+    let bases: Vec<_> = liftoff::study::DEFAULT_BASES
+        .iter()
+        .map(|n| {
+            liftoff::load(&Source::Example(n), &Default::default())
+                .unwrap_or_else(|e| panic!("{n}: {e}"))
+        })
+        .collect();
     let plan: Vec<_> = stability_plan(&bases)
         .into_iter()
         .filter(|c| c.param == StabilityParam::GammaIterative)

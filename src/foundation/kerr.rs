@@ -6,7 +6,7 @@
 
 use super::elastic_layer::oedometric;
 use super::kernel::{generic_pair_block, local_weights, Kernel, Radial};
-use super::pasternak::{decay_length, PasternakKernel};
+use super::pasternak::{decay_length, springs_and_shear, PasternakKernel};
 use super::soil::{key, shear_layer, Key, PlateScale, SoilKeys, SoilModel, SoilNames};
 use crate::error::{Error, Result};
 
@@ -76,14 +76,7 @@ impl SoilModel for Kerr {
                 )?,
             )
         };
-        let gamma = plate.spring_gamma(k);
-        let l = plate.half_length;
-        let shear = shear_layer(
-            &keys.field("shear_modulus"),
-            g_s * l * l / plate.rigidity,
-            gamma,
-            plate.mu,
-        )?;
+        let (gamma, shear) = springs_and_shear(keys, plate, k, g_s)?;
         let upper = plate.spring_gamma(c);
         Ok((gamma, Kerr { shear, upper }))
     }

@@ -18,6 +18,25 @@ pub struct Pasternak {
     pub shear: f64,
 }
 
+/// Γ_w of springs `k` (N/m³) and the checked Γ_g = G L²/D of a shear layer `g` (N/m) under
+/// `plate`: the SI groups of a Pasternak soil, and of a Kerr soil's lower part.
+pub fn springs_and_shear(
+    keys: &SoilKeys<'_>,
+    plate: &PlateScale,
+    k: f64,
+    g: f64,
+) -> Result<(f64, f64)> {
+    let gamma = plate.spring_gamma(k);
+    let l = plate.half_length;
+    let shear = shear_layer(
+        &keys.field("shear_modulus"),
+        g * l * l / plate.rigidity,
+        gamma,
+        plate.mu,
+    )?;
+    Ok((gamma, shear))
+}
+
 /// The decay length λ/L = √(G_p/k)/L = √(Γ_g μ Γ_w) of a shear layer Γ_g on springs Γ_w.
 pub fn decay_length(shear: f64, gamma: f64, mu: f64) -> f64 {
     (shear * mu * gamma).sqrt()
@@ -46,14 +65,7 @@ impl SoilModel for Pasternak {
             "the Pasternak shear layer's modulus G_p in N/m (for G_p = 0 use model = \"winkler\")",
             "N/m",
         )?;
-        let gamma = plate.spring_gamma(k);
-        let l = plate.half_length;
-        let shear = shear_layer(
-            &keys.field("shear_modulus"),
-            g_p * l * l / plate.rigidity,
-            gamma,
-            plate.mu,
-        )?;
+        let (gamma, shear) = springs_and_shear(keys, plate, k, g_p)?;
         Ok((gamma, Pasternak { shear }))
     }
 

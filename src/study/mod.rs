@@ -27,6 +27,7 @@ pub use eps_sweep::{eps_sweep, Sweep, SweepRow};
 pub use options::{ConstraintVariants, EpsSweepOptions, TradeoffOptions};
 pub use stability::{
     stability_plan, stability_run, stability_sweep, StabilityCase, StabilityParam, StabilityRow,
+    DEFAULT_BASES,
 };
 pub use tradeoff::{tradeoff, Tradeoff, TradeoffPoint};
 

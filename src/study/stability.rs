@@ -71,6 +71,17 @@ impl StabilityParam {
     }
 }
 
+/// The bundled base scenes of `liftoff stability` without scenes of its own, one per soil: the
+/// paper's plate on Winkler springs and the half-space, the slab-on-grade bay on the Pasternak
+/// soil, the elastic layer and Reissner's (Kerr) layer.
+pub const DEFAULT_BASES: [&str; 5] = [
+    "paper-winkler",
+    "paper-halfspace",
+    "slab-pasternak",
+    "slab-clay-layer",
+    "slab-kerr",
+];
+
 /// Elements per side of the Γ sweep on the iterative route: large enough for the coarse
 /// preconditioner plate and the nested start to take part (64 per side, a quarter model of
 /// 33 × 33 nodes), small enough for a map of runs.

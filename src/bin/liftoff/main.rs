@@ -234,18 +234,11 @@ fn tradeoff(args: TradeoffArgs) -> Result<(), Failure> {
 
 fn stability(args: StabilityArgs) -> Result<(), Failure> {
     let scenes = if args.scenes.is_empty() {
-        // Every soil: the paper's plate on Winkler springs and the half-space, the slab-on-grade
-        // bay on the Pasternak soil, the elastic layer and Reissner's (Kerr) layer.
-        [
-            "paper-winkler",
-            "paper-halfspace",
-            "slab-pasternak",
-            "slab-clay-layer",
-            "slab-kerr",
-        ]
-        .iter()
-        .map(|n| format!("example:{n}"))
-        .collect()
+        // Every soil (study::DEFAULT_BASES).
+        study::DEFAULT_BASES
+            .iter()
+            .map(|n| format!("example:{n}"))
+            .collect()
     } else {
         args.scenes
     };
