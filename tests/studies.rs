@@ -258,9 +258,10 @@ fn stability_sweep_rows_and_outcomes() {
         paper_plate(FoundationKind::HalfSpace, 8, limit),
     ];
     let plan = study::stability_plan(&bases);
-    // Winkler: Γ 10 × 2 methods + ε̄ 13 + position 6 × 2 + μ 5 × 2 + mesh 7 × 2 = 69;
-    // half-space: one mesh value fewer (512 is beyond memory for both methods) = 67.
-    assert_eq!(plan.len(), 69 + 67);
+    // Winkler: Γ 12 × 2 methods on each route (gamma, gamma-iterative) + ε̄ 13 + position
+    // 6 × 2 + μ 5 × 2 + mesh 7 × 2 = 97; half-space: one mesh value fewer (512 is beyond
+    // memory for both methods) = 95.
+    assert_eq!(plan.len(), 97 + 95);
     let rows: Vec<StabilityRow> = plan.iter().map(study::stability_run).collect();
     for (case, r) in plan.iter().zip(&rows) {
         let what = format!(
@@ -431,7 +432,7 @@ fn stability_sweep_rows_and_outcomes() {
 
         // Γ, QP: always converged, contact growing with Γ, rigid limit on Winkler.
         let gamma = rows_of(&rows, fd, StabilityParam::Gamma, "qp");
-        assert_eq!(gamma.len(), 10);
+        assert_eq!(gamma.len(), 12);
         for r in &gamma {
             assert_eq!(
                 r.outcome.name(),
@@ -442,8 +443,12 @@ fn stability_sweep_rows_and_outcomes() {
             );
         }
         for w in gamma.windows(2) {
+            // At the soft end (Γ ≤ 1e-10, nearly membranes) the contact plateaus at the loaded
+            // area and the boundary, located inside the elements from the pressures, moves only
+            // by the QP's tolerance (3e-6 of the fraction measured between Γ = 1e-12 and 1e-10);
+            // 1e-4 of it allows that and no real shrink (the paper's growth is of order one).
             assert!(
-                w[1].contact_fraction >= w[0].contact_fraction - 1e-12,
+                w[1].contact_fraction >= w[0].contact_fraction * (1.0 - 1e-4),
                 "{fd}: contact {} at Γ = {:e} shrinks to {} at Γ = {:e}",
                 w[0].contact_fraction,
                 w[0].value,
