@@ -292,7 +292,10 @@ impl SoilKeys<'_> {
                     self.chooser(),
                     self.chooser()
                 ),
-                None => format!("unknown field `{name}`: {takes}, beside `allowable_pressure`, `bearing_length` and `zone`"),
+                None => format!(
+                    "unknown field `{name}`: {takes}, beside {}`allowable_pressure`, `bearing_length` and `zone`",
+                    if dimensionless { "`foundation`, `gamma`, `delta`, `mu`, `nu`, " } else { "`model`, " }
+                ),
             },
         ))
     }
