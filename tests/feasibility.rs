@@ -15,6 +15,14 @@ use liftoff::{Monitor, Outcome, Source};
 /// Winkler 80 MN/m³, self-weight, a tandem-dual axle at (x, y), night and day curling, 90 × 24
 /// elements, unbonded; `width` and `extra` give the two-lane variant.
 fn lane(x: f64, y: f64, width: f64, elements: [usize; 2], extra: &str, method: &str) -> String {
+    let dowels: String = [-2.25, 2.25]
+        .iter()
+        .map(|x| {
+            format!(
+                "[[joint]]\nx = {x}\nkind = \"dowels\"\ndiameter = 0.032\nyoungs_modulus = 200e9\nopening = 0.006\nsupport_modulus = 4.07e11\nspacing = 0.3\n"
+            )
+        })
+        .collect();
     format!(
         r#"title = "lane"
 [plate]
@@ -27,23 +35,7 @@ thermal_expansion = 1.0e-5
 [foundation]
 model = "winkler"
 modulus = 8.0e7
-[[joint]]
-x = -2.25
-kind = "dowels"
-diameter = 0.032
-youngs_modulus = 200e9
-opening = 0.006
-support_modulus = 4.07e11
-spacing = 0.3
-[[joint]]
-x = 2.25
-kind = "dowels"
-diameter = 0.032
-youngs_modulus = 200e9
-opening = 0.006
-support_modulus = 4.07e11
-spacing = 0.3
-{extra}
+{dowels}{extra}
 [[load]]
 kind = "uniform"
 pressure = 6.0e3

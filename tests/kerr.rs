@@ -50,7 +50,7 @@ fn stiff_upper_springs_give_the_pasternak_soil() {
 /// spring layers in series, k c/(k + c): Winkler with Γ = Γ_w + Γ_c. They differ by the
 /// discretisation of the springs — consistent (Kerr, a continuum kernel) against lumped
 /// (Winkler) pressure — which falls at second order: from 16 to 32 elements the difference in V
-/// falls by about 4 (rate within 0.4 of 2) and is below 1.5 % at 32. In bonded contact and in
+/// falls by about 4 (rate within 0.4 of 2) and is below 1 % at 32 (1.5 % unbonded). In bonded contact and in
 /// unbonded contact alike (a limit of the tensionless problem that is not the Pasternak one).
 #[test]
 fn a_vanishing_shear_layer_gives_springs_in_series() {
@@ -77,9 +77,11 @@ fn springs_in_series(contact: &str) {
     let (coarse, fine) = (diff(16), diff(32));
     let rate = (coarse / fine).log2();
     // Measured 0.61 % bonded and 1.1 % unbonded at 32 (2.6 % and 4.7 % at 16, rate 2.07 and
-    // 2.08): the tensionless limit converges at the same second order.
+    // 2.08): the tensionless limit converges at the same second order, from a larger start
+    // (the contact edge moves between the two discretisations). The bonded bound stays 1 %.
+    let bound = if contact == "bonded" { 1e-2 } else { 1.5e-2 };
     assert!(
-        fine < 1.5e-2,
+        fine < bound,
         "{contact}: Kerr (G → 0) against springs in series at 32: ΔV {fine:.2e}"
     );
     assert!(

@@ -267,6 +267,11 @@ impl Operators {
         mut notes: Vec<String>,
         toeplitz: bool,
     ) -> Self {
+        debug_assert_eq!(
+            foundation.is_local(),
+            kernel.is_none(),
+            "a local soil has no kernel, every other one has"
+        );
         let dofs = DofMap::new(&mesh);
         let sections = crate::system::panel_sections(&mesh, &section);
         let k = match mesh.topo {
