@@ -87,6 +87,9 @@ fn stage(
     let ladder = backend.levels();
     let mut rung = 0;
     let level = |rung: usize| ladder.get(rung).copied();
+    // After a cycle of tight solves, the steps are damped (`Damped`): the iterate moves from
+    // where it is towards each step's answer only as far as the penalised energy falls.
+    let mut damped: Option<Damped> = None;
     for _ in 0..cap {
         monitor.check("the penalty iteration")?;
         let ts = Instant::now();
@@ -130,6 +133,24 @@ fn stage(
             step: history.len(),
             changes: entered + left,
         });
+        if next != penalised {
+            if let Some(d) = damped.as_mut() {
+                // The step's answer is the minimiser of the energy with this set's springs;
+                // the iterate goes to the energy's minimum on the way there, and the next set
+                // is the iterate's.
+                d.advance(ops, &penalised, epsilon, &u, &sigma, &alpha, gs);
+                let mut moved: Vec<bool> = d.gs.iter().map(|&v| v < 0.0).collect();
+                if moved == penalised {
+                    // The minimum fell on a kink of the set (measure zero, but rounding finds
+                    // it): the same set would give the same answer. Take the full step.
+                    *d = Damped::new(ops, &penalised, epsilon, &u, &sigma, &alpha);
+                    moved = next;
+                }
+                last = Some((u, sigma, alpha));
+                penalised = moved;
+                continue;
+            }
+        }
         last = Some((u, sigma, alpha));
         if count == n_c {
             return Err(Error::Infeasible(
@@ -153,6 +174,15 @@ fn stage(
             seen = vec![penalised.clone()];
         }
         if let Some(pos) = seen.iter().position(|s| *s == next) {
+            if level(rung).is_none() {
+                // A cycle of exact (tight) solves: the full steps overshoot. Go on from this
+                // step's answer with damped steps, which cannot cycle.
+                if let Some((u, sigma, alpha)) = &last {
+                    damped = Some(Damped::new(ops, &penalised, epsilon, u, sigma, alpha));
+                    penalised = next;
+                    continue;
+                }
+            }
             status = Status::Cycling {
                 period: seen.len() - pos,
             };
@@ -162,8 +192,11 @@ fn stage(
         seen.push(next.clone());
         penalised = next;
     }
-    let (u, sigma, alpha) =
-        last.ok_or_else(|| Error::numerical("penalty iteration", "no iteration was run"))?;
+    let (u, sigma, alpha) = match (&status, damped) {
+        // Out of steps while damped: the iterate, the best point the steps reached.
+        (Status::IterationLimit { .. }, Some(d)) => (d.u, d.sigma, d.alpha),
+        _ => last.ok_or_else(|| Error::numerical("penalty iteration", "no iteration was run"))?,
+    };
     if status == Status::Converged {
         status = tension_check(ops, &sigma, epsilon);
     }
@@ -174,6 +207,124 @@ fn stage(
         alpha,
         penalised,
     })
+}
+
+/// The iterate of a damped penalty stage (after the full steps cycled): a point on the way
+/// between step answers, and the part of the energy's gradient that the plate and the soil
+/// give it, kept at the constraint points.
+///
+/// The penalised problem minimises a strictly convex energy of the pressures, piecewise
+/// quadratic with continuous gradient: E(σ) = ½σᵀ(S + T)σ − dᵀσ + (c/2ε̄) Σ_k w_k min([Gσ]_k, 0)²
+/// (S the plate's compliance at the pressure nodes, T the soil's, c the foundation constant,
+/// w_k the points' weights; equilibrium a linear constraint). A step solves the quadratic whose
+/// springs are those of the set P: its answer σᴺ has (S + T)σᴺ − d + Rα = −Σ_P σᴺ/ε̄ = Gᵀhᴺ with
+/// hᴺ_k = −(c/ε̄) w_k [k ∈ P] [Gσᴺ]_k. The full step to σᴺ is Newton's step on E; it can
+/// overshoot and cycle between sets. The damped step goes to the minimum of E on the segment
+/// from the iterate σ to σᴺ: along it the gradient's plate-and-soil part is the blend of the
+/// ends' (it is affine in σ and both ends keep equilibrium, so Rα drops out), and the springs'
+/// part is local, so the exact line search needs no solve. E falls at every step and the
+/// direction is a descent one (the quadratic's Hessian is positive definite), so the damped
+/// iteration converges (globally convergent damped semismooth Newton); near the answer the
+/// full step is taken and the set settles.
+struct Damped {
+    u: Vec<f64>,
+    sigma: Vec<f64>,
+    alpha: Vec<f64>,
+    /// Gσ at the iterate.
+    gs: Vec<f64>,
+    /// The plate-and-soil part of the gradient as Gᵀh: h at the constraint points.
+    h: Vec<f64>,
+}
+
+impl Damped {
+    /// Start at a step's answer, solved with the springs of `set`.
+    fn new(
+        ops: &Operators,
+        set: &[bool],
+        epsilon: f64,
+        u: &[f64],
+        sigma: &[f64],
+        alpha: &[f64],
+    ) -> Damped {
+        let gs = ops.g_times(sigma);
+        let h = spring_side(ops, set, epsilon, &gs);
+        Damped {
+            u: u.to_vec(),
+            sigma: sigma.to_vec(),
+            alpha: alpha.to_vec(),
+            gs,
+            h,
+        }
+    }
+
+    /// Move to the minimum of the energy on the segment to a step's answer (solved with the
+    /// springs of `set`; `gs` its Gσ).
+    #[allow(clippy::too_many_arguments)]
+    fn advance(
+        &mut self,
+        ops: &Operators,
+        set: &[bool],
+        epsilon: f64,
+        u: &[f64],
+        sigma: &[f64],
+        alpha: &[f64],
+        gs: Vec<f64>,
+    ) {
+        let h_new = spring_side(ops, set, epsilon, &gs);
+        let scale = ops.foundation_constant / epsilon;
+        let w = &ops.constraints.weights;
+        let t = line_minimum(&self.gs, &gs, &self.h, &h_new, w, scale);
+        let blend = |a: &mut Vec<f64>, b: &[f64]| {
+            for (x, y) in a.iter_mut().zip(b) {
+                *x += t * (y - *x);
+            }
+        };
+        blend(&mut self.u, u);
+        blend(&mut self.sigma, sigma);
+        blend(&mut self.alpha, alpha);
+        blend(&mut self.gs, &gs);
+        blend(&mut self.h, &h_new);
+    }
+}
+
+/// hᴺ of a step's answer with Gσ = `gs`, solved with the springs of `set`: −(c/ε̄) w_k [k ∈ P] gs_k.
+fn spring_side(ops: &Operators, set: &[bool], epsilon: f64, gs: &[f64]) -> Vec<f64> {
+    let scale = ops.foundation_constant / epsilon;
+    gs.iter()
+        .zip(set)
+        .zip(&ops.constraints.weights)
+        .map(|((&g, &p), &w)| if p { -scale * w * g } else { 0.0 })
+        .collect()
+}
+
+/// The t in (0, 1] that minimises the energy on the segment from the iterate (Gσ = `a`,
+/// gradient part `h0`) to a step's answer (`b`, `h1`): the root of the energy's slope
+/// φ′(t) = eᵀ((1 − t)h0 + t h1) + s Σ_k w_k e_k min(a_k + t e_k, 0), e = b − a, s = c/ε̄, which
+/// is continuous, piecewise linear and increasing in t; 1 when the slope is still negative
+/// there (the full step).
+fn line_minimum(a: &[f64], b: &[f64], h0: &[f64], h1: &[f64], w: &[f64], s: f64) -> f64 {
+    let slope = |t: f64| -> f64 {
+        let mut total = 0.0;
+        for k in 0..a.len() {
+            let e = b[k] - a[k];
+            total += e * ((1.0 - t) * h0[k] + t * h1[k]) + s * w[k] * e * (a[k] + t * e).min(0.0);
+        }
+        total
+    };
+    if slope(1.0) <= 0.0 {
+        return 1.0;
+    }
+    // Bisection on the increasing slope; 60 halvings reach the double's resolution of t.
+    let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if slope(mid) > 0.0 {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    hi
 }
 
 /// A settled penalised set is a solution only if the tension left at lifted points is within
@@ -376,4 +527,74 @@ fn cg_total(history: &[Iteration]) -> Option<usize> {
         .iter()
         .map(|it| it.cg.map(|c| c.iterations))
         .sum::<Option<usize>>()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::line_minimum;
+
+    /// E(σ) = ½σᵀAσ − dᵀσ + (s/2) Σ w_k min(σ_k, 0)² with G = I: its plate-and-soil gradient
+    /// part is Aσ − d, which is what a step's answer carries as h.
+    fn energy(a: &[[f64; 3]; 3], d: &[f64; 3], w: &[f64], s: f64, x: &[f64]) -> f64 {
+        let mut e = 0.0;
+        for i in 0..3 {
+            for j in 0..3 {
+                e += 0.5 * x[i] * a[i][j] * x[j];
+            }
+            e -= d[i] * x[i] - 0.5 * s * w[i] * x[i].min(0.0).powi(2);
+        }
+        e
+    }
+
+    fn gradient_part(a: &[[f64; 3]; 3], d: &[f64; 3], x: &[f64]) -> Vec<f64> {
+        (0..3)
+            .map(|i| (0..3).map(|j| a[i][j] * x[j]).sum::<f64>() - d[i])
+            .collect()
+    }
+
+    /// The damped step's t is the minimum of the energy on the segment, found here by a golden
+    /// section search on E itself (which the line search never evaluates: it works from the
+    /// slope's identity), on segments where the minimum is inside and where it is the end.
+    #[test]
+    fn the_line_search_finds_the_energys_minimum_on_the_segment() {
+        let a = [[4.0, 1.0, 0.5], [1.0, 3.0, 0.2], [0.5, 0.2, 2.0]];
+        let d = [1.0, -2.0, 0.5];
+        let w = [1.0, 0.5, 2.0];
+        let s = 1e3; // springs a thousand times the soil where the pressure pulls
+        let cases: [([f64; 3], [f64; 3]); 4] = [
+            ([0.3, 0.1, 0.2], [-1.0, -2.0, 0.4]),
+            ([0.5, -0.7, 0.1], [0.2, 0.4, -0.3]),
+            ([-0.1, 0.2, 0.3], [0.1, -0.5, 0.3]),
+            ([0.0, 0.0, 0.0], [0.01, 0.01, 0.01]),
+        ];
+        for (x0, x1) in cases {
+            let h0 = gradient_part(&a, &d, &x0);
+            let h1 = gradient_part(&a, &d, &x1);
+            let t = line_minimum(&x0, &x1, &h0, &h1, &w, s);
+            let at = |t: f64| -> f64 {
+                let x: Vec<f64> = (0..3).map(|i| x0[i] + t * (x1[i] - x0[i])).collect();
+                energy(&a, &d, &w, s, &x)
+            };
+            // Golden section on [0, 1] to 1e-12 in t (E is convex on the segment).
+            let g = 0.5 * (5f64.sqrt() - 1.0);
+            let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
+            while hi - lo > 1e-12 {
+                let (c, e) = (hi - g * (hi - lo), lo + g * (hi - lo));
+                if at(c) < at(e) {
+                    hi = e;
+                } else {
+                    lo = c;
+                }
+            }
+            let reference = 0.5 * (lo + hi);
+            // The bisection ends within 2⁻⁶⁰ of the slope's root. The golden section compares
+            // energies, whose round-off (1e-16 of E) hides differences in t below
+            // √(2e-16 |E| / E'') ~ 1e-8 at these curvatures: 1e-7 is its resolution with a margin.
+            assert!(
+                (t - reference).abs() < 1e-7,
+                "t = {t}, golden section {reference} on {x0:?} → {x1:?}"
+            );
+            assert!(at(t) <= at(0.0) + 1e-15, "the energy rose");
+        }
+    }
 }

@@ -87,6 +87,9 @@ pub struct IterativeSchur {
     exact: bool,
     /// The last step's σ, the next one's start.
     warm: Option<Vec<f64>>,
+    /// The penalty weights of the solve that gave `warm` (empty: none, or a start from
+    /// elsewhere).
+    warm_weights: Vec<f64>,
     /// The last preconditioner, reused while its weights and held set stay (the first is the
     /// bonded one, factored beside the plate).
     cached: Option<Preconditioner>,
@@ -252,6 +255,7 @@ impl IterativeSchur {
             springs,
             exact,
             warm: None,
+            warm_weights: Vec::new(),
             cached: Some(bonded),
             time_plate,
             factorisations: usize::from(fresh_springs),
@@ -308,9 +312,11 @@ impl IterativeSchur {
         )
     }
 
-    /// Projected PCG from `sigma` (made feasible first) to the relative tolerance `tol`.
-    /// Where the preconditioner is the matrix itself (`exact`: Winkler springs on the model's
-    /// own plate) the start is the direct solution σ = M⁻¹(h + Cα), and CG only confirms it.
+    /// Projected PCG from `sigma` (made feasible first) to the relative tolerance `tol`; from
+    /// `fallback` instead where `sigma`'s residual exceeds the loads' (relative residual above
+    /// one: a worse start than none). Where the preconditioner is the matrix itself (`exact`:
+    /// Winkler springs on the model's own plate) the start is the direct solution
+    /// σ = M⁻¹(h + Cα), and CG only confirms it.
     #[allow(clippy::too_many_arguments)]
     fn cg(
         &mut self,
@@ -318,7 +324,7 @@ impl IterativeSchur {
         pre: &mut Preconditioner,
         rows: &[Vec<(usize, f64)>],
         weights: &[f64],
-        mut sigma: Vec<f64>,
+        (mut sigma, mut fallback): (Vec<f64>, Option<Vec<f64>>),
         tol: f64,
         stage: &str,
         monitor: &Monitor<'_>,
@@ -329,19 +335,7 @@ impl IterativeSchur {
         if self.exact {
             // σ = M⁻¹h on the free points, then along M⁻¹C onto the equilibrium below.
             sigma = self.springs.solve(&pre.inv_d, &pre.factor, &h);
-        }
-        pre.mask(&mut sigma);
-        // Start: σ moved onto Cᵀσ = Rᵀf along M⁻¹C.
-        {
-            let defect: Vec<f64> = (0..pre.c.len())
-                .map(|a| self.rf[a] - dot(&pre.c[a], &sigma))
-                .collect();
-            let s = pre.small.solve(&defect);
-            for (a, &sa) in s.iter().enumerate() {
-                for (x, ci) in sigma.iter_mut().zip(&pre.minv_c[a]) {
-                    *x += sa * ci;
-                }
-            }
+            fallback = None;
         }
         let h_norm = dot(&h, &h).max(f64::MIN_POSITIVE).sqrt();
         let scale = match pre.scale {
@@ -353,19 +347,38 @@ impl IterativeSchur {
                 v
             }
         };
-        let (mut t_sigma, mut s_sigma) = self.t_and_s_times(ops, &sigma);
-        let mut r: Vec<f64> = penalised(&s_sigma, rows, weights, &sigma)
-            .iter()
-            .zip(&self.h)
-            .map(|(a, b)| a - b)
-            .collect();
-        pre.mask(&mut r);
-        pre.deflate(&mut r);
-        let mut z = pre.project(&self.springs, &r);
-        let mut rz = dot(&r, &z);
+        let (mut sigma, mut t_sigma, mut s_sigma, mut r, mut z, mut rz, mut residual) = loop {
+            pre.mask(&mut sigma);
+            // Start: σ moved onto Cᵀσ = Rᵀf along M⁻¹C.
+            {
+                let defect: Vec<f64> = (0..pre.c.len())
+                    .map(|a| self.rf[a] - dot(&pre.c[a], &sigma))
+                    .collect();
+                let s = pre.small.solve(&defect);
+                for (a, &sa) in s.iter().enumerate() {
+                    for (x, ci) in sigma.iter_mut().zip(&pre.minv_c[a]) {
+                        *x += sa * ci;
+                    }
+                }
+            }
+            let (t_sigma, s_sigma) = self.t_and_s_times(ops, &sigma);
+            let mut r: Vec<f64> = penalised(&s_sigma, rows, weights, &sigma)
+                .iter()
+                .zip(&self.h)
+                .map(|(a, b)| a - b)
+                .collect();
+            pre.mask(&mut r);
+            pre.deflate(&mut r);
+            let z = pre.project(&self.springs, &r);
+            let rz = dot(&r, &z);
+            let residual = rz.max(0.0).sqrt() / scale;
+            match fallback.take() {
+                Some(other) if residual > 1.0 => sigma = other,
+                _ => break (sigma, t_sigma, s_sigma, r, z, rz, residual),
+            }
+        };
         let mut p: Vec<f64> = z.iter().map(|v| -v).collect();
         let mut iterations = 0;
-        let mut residual = rz.max(0.0).sqrt() / scale;
         while residual > tol {
             monitor.check(stage)?;
             if iterations >= self.settings.max_iterations {
@@ -455,13 +468,32 @@ impl IterativeSchur {
             .warm
             .clone()
             .unwrap_or_else(|| vec![0.0; ops.n_sigma()]);
+        // The last answer's tension at a newly penalised point meets springs c w/ε̄ there: a
+        // start residual of order 1/ε̄ against loads of order one. Where that is worse than
+        // no start (on a stiff plate over a membrane-like soil it grew to ~10⁷⁰ times the
+        // loads in a few stages, and CG stalled), start instead from zero pressure at the
+        // points that pull and whose springs are new or ten times softer than the last
+        // solve's: the answer there is O(ε̄). Elsewhere the warm start is kept whole (the
+        // loose solves of soft plates build on the O(ε̄) tension it keeps).
+        let mut other = start.clone();
+        for (k, &d) in weights.iter().enumerate() {
+            let before = self.warm_weights.get(k).copied().unwrap_or(0.0);
+            if d > 10.0 * before {
+                let gs: f64 = rows[k].iter().map(|&(i, v)| v * other[i]).sum();
+                if gs < 0.0 {
+                    for &(i, _) in &rows[k] {
+                        other[i] = 0.0;
+                    }
+                }
+            }
+        }
         let tol = level.map_or(self.settings.tolerance, |l| l.max(self.settings.tolerance));
         let out = self.cg(
             ops,
             &mut pre,
             rows,
             weights,
-            start,
+            (start, Some(other)),
             tol,
             "iterative penalty step (conjugate gradients)",
             monitor,
@@ -470,6 +502,7 @@ impl IterativeSchur {
         let solved = out?;
         let u = self.displacements(ops, &solved.sigma, &solved.alpha);
         self.warm = Some(solved.sigma.clone());
+        self.warm_weights = weights.to_vec();
         Ok(Step {
             u,
             sigma: solved.sigma,
@@ -495,7 +528,7 @@ impl IterativeSchur {
             &mut pre,
             &[],
             &[],
-            start.to_vec(),
+            (start.to_vec(), None),
             tol,
             "matrix-free QP (conjugate gradients on the free points)",
             monitor,
@@ -520,6 +553,7 @@ impl IterativeSchur {
     /// pressures on the same operators) instead of zero.
     pub fn warm_start(&mut self, sigma: &[f64]) {
         self.warm = Some(sigma.to_vec());
+        self.warm_weights.clear();
     }
 
     /// The conjugate-gradient settings.
