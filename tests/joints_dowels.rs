@@ -135,3 +135,98 @@ opening = 0.006\nsupport_modulus = 4.07e11\nspacing = 0.3\n\
         "{max} vs {largest}"
     );
 }
+
+/// A bar between nodes (issue 32 §2) against rigid-body statics. Two panels 3 m × 3 m of a
+/// plate so stiff that each is a rigid body (E = 3e17 Pa: k L⁴/D ≈ 1e-5, so bending moves the
+/// answer by ~1e-5), bonded to Winkler springs, joined at x = 0 by one dowel of spring
+/// k_d at y_d = −0.4075 m — 0.37 of the way between the mesh's nodes at −0.5 and −0.25 — and a
+/// point load on the left panel. Each panel's deflection is w = a + b (x − x_c) + c y, so the
+/// dowel's force is k_d times the jump of two linear fields, which the element's interpolation
+/// along the edge carries exactly wherever the bar sits: the force is the 6 × 6 rigid-body
+/// system's, solved here by hand. Its spring matrix is k Σ A_i φ_i φ_iᵀ over each panel's nodes
+/// with φ = (1, x − x_c, y) and the nodal areas of the bilinear elements (h²/4 at corners, h²/2
+/// on edges, h² inside) — the lumped bed liftoff uses, written out here; the load's consistent
+/// nodal forces on a rigid panel are P φ(x_P, y_P).
+#[test]
+fn a_bar_between_nodes_carries_the_rigid_panels_force() {
+    let (k, k_d, p) = (5e7_f64, 5e8_f64, 1e5_f64);
+    let (y_d, load) = (-0.4075_f64, (-1.2_f64, 0.7_f64));
+    let text = format!(
+        "[plate]\nlength = 6.0\nwidth = 3.0\nthickness = 0.25\nyoungs_modulus = 3e17\n\
+poissons_ratio = 0.2\n[foundation]\nmodel = \"winkler\"\nmodulus = {k:e}\n\
+[[joint]]\nx = 0.0\nkind = \"dowels\"\nname = \"T1\"\ndowel_stiffness = {k_d:e}\npositions = [{y_d}]\n\
+[[load]]\nkind = \"point\"\nx = {}\ny = {}\nforce = {p:e}\n\
+[solver]\ncontact = \"bonded\"\n[mesh]\nelements = [24, 12]\nsymmetry = \"none\"\n",
+        load.0, load.1
+    );
+    let problem = Problem::from_toml(&text).expect("scene");
+    let a = analyse(&problem).expect("solve");
+    let dir = tempfile::tempdir().expect("tempdir");
+    liftoff::output::write_all(dir.path(), &problem.model, &a.report, &a.summary).expect("files");
+    let csv = std::fs::read_to_string(dir.path().join("dowels.csv")).expect("dowels.csv");
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().expect("header").split(',').collect();
+    let cf = header.iter().position(|h| *h == "force").expect("force");
+    let rows: Vec<f64> = lines
+        .map(|l| {
+            l.split(',')
+                .nth(cf)
+                .expect("cell")
+                .parse()
+                .expect("a force")
+        })
+        .collect();
+    assert_eq!(rows.len(), 1, "one bar");
+
+    // The rigid-body reference: q = (a₁, b₁, c₁, a₂, b₂, c₂), panel centres x_c = ∓1.5.
+    let h = 0.25;
+    let mut m = [[0.0_f64; 6]; 6];
+    for (panel, xc) in [(0, -1.5_f64), (1, 1.5_f64)] {
+        for i in 0..=12 {
+            for j in 0..=12 {
+                let wx = if i == 0 || i == 12 { 0.5 } else { 1.0 };
+                let wy = if j == 0 || j == 12 { 0.5 } else { 1.0 };
+                let (x, y) = (xc - 1.5 + h * i as f64, -1.5 + h * j as f64);
+                let phi = [1.0, x - xc, y];
+                for r in 0..3 {
+                    for c in 0..3 {
+                        m[3 * panel + r][3 * panel + c] += k * h * h * wx * wy * phi[r] * phi[c];
+                    }
+                }
+            }
+        }
+    }
+    // The dowel: energy ½ k_d (φ₁(0, y_d)·q₁ − φ₂(0, y_d)·q₂)².
+    let g = [1.0, 1.5, y_d, -1.0, 1.5, -y_d];
+    for r in 0..6 {
+        for c in 0..6 {
+            m[r][c] += k_d * g[r] * g[c];
+        }
+    }
+    let mut f = [p, p * (load.0 + 1.5), p * load.1, 0.0, 0.0, 0.0];
+    // Gaussian elimination (the matrix is symmetric positive definite: no pivoting needed).
+    for col in 0..6 {
+        for row in col + 1..6 {
+            let factor = m[row][col] / m[col][col];
+            for c in col..6 {
+                m[row][c] -= factor * m[col][c];
+            }
+            f[row] -= factor * f[col];
+        }
+    }
+    let mut q = [0.0_f64; 6];
+    for row in (0..6).rev() {
+        let s: f64 = (row + 1..6).map(|c| m[row][c] * q[c]).sum();
+        q[row] = (f[row] - s) / m[row][row];
+    }
+    let jump: f64 = g.iter().zip(&q).map(|(a, b)| a * b).sum();
+    let force = k_d * jump;
+    // The dowel carries a good part of the load (not a check of small numbers).
+    assert!(force.abs() > 0.05 * p, "dowel force {force}");
+    // Bending at k L⁴/D ≈ 1e-5 and the CSV's 10 digits: 1e-4 of the force bounds both.
+    assert!(
+        (rows[0].abs() - force.abs()).abs() <= 1e-4 * force.abs(),
+        "dowels.csv {} N against the rigid panels' {force} N",
+        rows[0]
+    );
+}
