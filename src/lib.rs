@@ -68,6 +68,7 @@ pub mod solve;
 pub mod study;
 pub mod summary;
 pub mod system;
+pub mod units;
 pub mod vehicle;
 
 pub use analysis::{analyse, Analysis};

@@ -85,6 +85,8 @@ pub struct Physical {
     pub force: f64,
     /// D, N·m.
     pub rigidity: f64,
+    /// The unit system the scene was written in, which its outputs show.
+    pub units: crate::units::UnitSystem,
 }
 
 impl Physical {

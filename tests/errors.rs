@@ -398,32 +398,42 @@ fn every_catalogue_entry_has_a_test_here() {
     );
 }
 
-/// E26: the penalised set cycles. Found by a random search of small scenes (issue 25): with
-/// Gauss-point constraints on a continuum soil about 2 % of them cycle (none with nodal
-/// constraints); this 5 × 5 half-space plate returns to its first penalised set after three
-/// steps. Exit 4 with the QP's hint, and the QP — which the hint names — solves it.
+/// E26 (retired): the penalised set cycled. Found by a random search of small scenes (issue
+/// 25): with Gauss-point constraints on a continuum soil about 2 % of them cycled; this 5 × 5
+/// half-space plate returned to its first penalised set after three steps and exited 4. Since
+/// session 10 a cycle of exact solves hands over to damped steps, which cannot cycle: the scene
+/// converges, and to the QP's answer — the ε̄ → 0 limit, which the penalty at ε̄ = 1.2e-7 meets to
+/// O(ε̄) (1e-4 of the peak deflection and the peak pressure bounds that with room and would
+/// still fail on a wrong contact set, which moves them by ~10 % on a 5 × 5 mesh).
 #[test]
-fn e26_the_penalised_set_cycles() {
+fn e26_the_penalised_set_that_cycled_converges() {
     let dir = tempfile::tempdir().expect("tempdir");
     let scene = "[dimensionless]\nfoundation = \"half-space\"\ngamma = 0.74\ndelta = 0.002857\nmu = 0.62\nnu = 0.3\n[[load]]\nkind = \"point\"\nx = 0.58\ny = 0.05\nforce = 1.0\n[mesh]\nelements = [5, 5]\nsymmetry = \"none\"\n[solver]\nmethod = \"penalty\"\npenalty = 1.2e-7\nconstraint = \"gauss\"\n";
     let (code, err, files) = solve_scene(dir.path(), scene, &[]);
-    assert_eq!(code, Some(4), "E26: exit code (stderr: {err})");
-    assert!(
-        err.contains("the penalised set cycles with period 3 (contact set oscillates)"),
-        "E26: message: {err}"
-    );
-    assert!(
-        err.contains("\nhint: --method qp solves the same operators as a convex QP"),
-        "E26: hint: {err}"
-    );
-    assert_eq!(
-        files, 0,
-        "E26: no output files for a run that did not converge"
-    );
-    let (code, err, files) = solve_scene(dir.path(), scene, &["--method", "qp"]);
     assert!(
         code == Some(0) && files > 0,
-        "E26: the QP the hint names solves the scene ({err})"
+        "E26: the scene that cycled solves ({err})"
+    );
+    let penalty = liftoff::analyse(&liftoff::Problem::from_toml(scene).expect("scene"))
+        .expect("penalty");
+    let qp = liftoff::analyse(
+        &liftoff::Problem::from_toml(&scene.replace("method = \"penalty\"", "method = \"qp\""))
+            .expect("scene"),
+    )
+    .expect("qp");
+    let (a, b) = (&penalty.summary, &qp.summary);
+    assert!(a.converged && b.converged, "E26: both converge");
+    assert!(
+        (a.V_max - b.V_max).abs() <= 1e-4 * b.V_max.abs(),
+        "E26: V_max {} (penalty) vs {} (QP)",
+        a.V_max,
+        b.V_max
+    );
+    assert!(
+        (a.pressure_max - b.pressure_max).abs() <= 1e-4 * b.pressure_max.abs(),
+        "E26: peak pressure {} (penalty) vs {} (QP)",
+        a.pressure_max,
+        b.pressure_max
     );
 }
 

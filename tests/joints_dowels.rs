@@ -148,6 +148,7 @@ opening = 0.006\nsupport_modulus = 4.07e11\nspacing = 0.3\n\
 /// on edges, h² inside) — the lumped bed liftoff uses, written out here; the load's consistent
 /// nodal forces on a rigid panel are P φ(x_P, y_P).
 #[test]
+#[allow(clippy::needless_range_loop)] // Gaussian elimination reads best with its indices
 fn a_bar_between_nodes_carries_the_rigid_panels_force() {
     let (k, k_d, p) = (5e7_f64, 5e8_f64, 1e5_f64);
     let (y_d, load) = (-0.4075_f64, (-1.2_f64, 0.7_f64));

@@ -90,6 +90,7 @@ impl RandomScene {
             method,
             route: liftoff::Route::Auto,
             memory_limit: liftoff::budget::default_memory_limit(),
+            warnings: Vec::new(),
         }
     }
 }

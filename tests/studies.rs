@@ -27,6 +27,7 @@ fn paper_plate(foundation: FoundationKind, elements: usize, memory_limit: f64) -
         method: Method::penalty(),
         route: liftoff::Route::Auto,
         memory_limit,
+        warnings: Vec::new(),
     }
 }
 

@@ -56,6 +56,7 @@ pub fn write_critical(dir: &Path, c: &Critical, title: &str) -> Result<Vec<PathB
             half_length: 1.0,
             force: 1.0,
             rigidity: 1.0,
+            units: crate::units::UnitSystem::Si,
         }),
         1.0,
     );

@@ -102,7 +102,8 @@ fn stress_line(s: &Summary, units: &Units) -> String {
     let st = units.stress();
     let at = |p: &crate::post::stress::PeakTension| {
         if units.is_physical() {
-            format!("({:.2}, {:.2}) m", p.x, p.y)
+            let l = units.length();
+            format!("({:.2}, {:.2}) {}", l.apply(p.x), l.apply(p.y), l.unit)
         } else {
             format!("(s, t) = ({:.3}, {:.3})", p.x, p.y / s.dimensionless.mu)
         }
@@ -258,15 +259,23 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
         ));
         return text(l);
     }
+    let units = Units::new(s.physical, g.mu);
     if g.reference != LoadReference::NetLoad {
-        let unit = if s.physical.is_some() { " N" } else { "" };
+        // The force in the scene's own unit (N, lbf): the kN of the tables' forces would
+        // round the small reference of a curling scene away.
+        let (factor, unit) = match s.physical.map(|p| p.units) {
+            Some(system) => (
+                crate::units::Quantity::Force.from_si(system, 1.0),
+                format!(" {}", crate::units::Quantity::Force.unit(system)),
+            ),
+            None => (1.0, String::new()),
+        };
         l.push(format!(
             "  reference  : {}; P = {:.4e}{unit}",
             g.reference.describe(),
-            g.reference_force
+            g.reference_force * factor
         ));
     }
-    let units = Units::new(s.physical, g.mu);
     let e = &s.contact_extent;
     if units.is_physical() {
         // Engineering units; the dimensionless V and σ stay in summary.json.
@@ -312,14 +321,19 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
         // Plate area 2L × 2μL; extents are fractions of L, μL and the half-diagonal.
         let mu = g.mu;
         let plate_area = units.from_l(2.0) * units.from_l(2.0 * mu);
+        // The plan area in the area unit (m², ft²) from the lengths' (m, in).
+        let (len, area) = (units.length(), units.area());
+        let plate_area = plate_area / (len.factor * len.factor) * area.factor;
         l.push(format!(
-            "  contact    : {:.1} % of the plate ({:.2} m²), radius {:.2} m, extent x {:.2} m, y {:.2} m, diagonal {:.2} m from the centre",
+            "  contact    : {:.1} % of the plate ({:.2} {a}), radius {:.2} {u}, extent x {:.2} {u}, y {:.2} {u}, diagonal {:.2} {u} from the centre",
             100.0 * s.contact_fraction,
             s.contact_fraction * plate_area,
             units.from_l(s.contact_radius),
             units.from_l(e.x),
             units.from_l(mu * e.y),
             units.from_l((1.0 + mu * mu).sqrt() * e.diagonal),
+            a = area.unit,
+            u = len.unit,
         ));
     } else {
         l.push(format!(
@@ -343,18 +357,19 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
     l.extend(crate::output::joints::joint_lines(&s.joints, &units));
     if let Some(b) = &s.bearing {
         // Dimensionless scenes show σ = μ r, as the contact map does.
-        let (scale, unit, area, len_unit) = if s.physical.is_some() {
-            (1e-3, "kPa", "m²", "m")
+        let (scale, unit, area, len_unit, len_f, area_f) = if s.physical.is_some() {
+            let (p, a, l) = (units.pressure(), units.area(), units.length());
+            (p.factor, p.unit, a.unit, l.unit, l.factor, a.factor)
         } else {
-            (g.mu, "(σ)", "L²", "L")
+            (g.mu, "(σ)", "L²", "L", 1.0, 1.0)
         };
         l.push(format!(
             "  bearing    : averaged over {:.3} {len_unit} squares {:.3} of {:.3} {unit} allowed (square centred at ({:.3}, {:.3}) {len_unit}), utilisation {:.0} %{}",
-            b.length,
+            b.length * len_f,
             b.average * scale,
             b.allowable * scale,
-            b.average_at[0],
-            b.average_at[1],
+            b.average_at[0] * len_f,
+            b.average_at[1] * len_f,
             100.0 * b.utilisation,
             if b.utilisation > 1.0 { " — EXCEEDED" } else { "" }
         ));
@@ -362,7 +377,7 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
             "               nodal peak {:.3} {unit} ({:.0} % of the allowable), {:.3} {area} ({:.1} % of the plate) above the allowable",
             b.max * scale,
             100.0 * b.nodal_utilisation,
-            b.area_exceeding,
+            b.area_exceeding * area_f,
             100.0 * b.fraction_exceeding,
         ));
     }

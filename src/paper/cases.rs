@@ -212,6 +212,7 @@ impl Case {
             method: self.method(kind),
             route: crate::method::Route::Auto,
             memory_limit: default_memory_limit(),
+            warnings: Vec::new(),
         })
     }
 }

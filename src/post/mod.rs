@@ -195,6 +195,7 @@ fn scales(model: &Model) -> Physical {
         half_length: 1.0,
         force: 1.0,
         rigidity: 1.0,
+        units: crate::units::UnitSystem::Si,
     })
 }
 

@@ -35,6 +35,7 @@ impl Model {
     pub fn builder() -> ModelBuilder {
         ModelBuilder {
             file: SceneFile {
+                units: crate::units::UnitSystem::Si,
                 title: None,
                 plate: None,
                 foundation: None,

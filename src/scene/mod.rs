@@ -21,6 +21,7 @@ mod load_spec;
 mod loads;
 pub mod overrides;
 mod panels;
+pub mod plausible;
 pub mod spec;
 pub mod temperature;
 pub mod validate;
@@ -74,17 +75,41 @@ pub struct Problem {
     pub route: Route,
     /// Memory the solver may use, bytes.
     pub memory_limit: f64,
+    /// Values that suggest a unit slip, each naming its key ([`plausible`]); the scene still
+    /// solves.
+    pub warnings: Vec<String>,
 }
 
 impl SceneFile {
-    /// Parse TOML text.
+    /// Parse TOML text. A scene in US customary units (`units = "us"`) is converted to SI
+    /// first ([`crate::units::scene_to_si`]); one in SI is read directly, so that a parse error
+    /// names its line.
     pub fn parse(text: &str) -> Result<Self> {
-        toml::from_str(text).map_err(|e| Error::Parse(e.to_string()))
+        let table: toml::Table = toml::from_str(text).map_err(|e| Error::Parse(e.to_string()))?;
+        if !table.contains_key("units") {
+            return toml::from_str(text).map_err(|e| Error::Parse(e.to_string()));
+        }
+        let value = serde_json::to_value(&table).map_err(|e| Error::Parse(e.to_string()))?;
+        // The conversion changes numbers only: a file that does not fit the scene's types
+        // fails the same way unconverted, where TOML's message names the key and its line.
+        Self::from_value(value).map_err(|e| match toml::from_str::<SceneFile>(text) {
+            Err(raw) => Error::Parse(raw.to_string()),
+            Ok(_) => e,
+        })
     }
 
     /// Parse a scene given as JSON with the scene file's keys (a Python dict, say).
     pub fn from_json(text: &str) -> Result<Self> {
-        serde_json::from_str(text).map_err(|e| Error::Parse(e.to_string()))
+        let value: serde_json::Value =
+            serde_json::from_str(text).map_err(|e| Error::Parse(e.to_string()))?;
+        Self::from_value(value)
+    }
+
+    /// A scene from its keys as a JSON value, in the unit system its `units` names.
+    fn from_value(mut value: serde_json::Value) -> Result<Self> {
+        let system = crate::units::scene_system(&value)?;
+        crate::units::scene_to_si(&mut value, system)?;
+        serde_json::from_value(value).map_err(|e| Error::Parse(e.to_string()))
     }
 
     /// A bundled scene (`example:NAME` on the command line), parsed.

@@ -482,6 +482,10 @@ pub struct SceneFile {
     /// Free text shown in reports.
     #[serde(default)]
     pub title: Option<String>,
+    /// The unit system the file is written in (`"si"`, the default, or `"us"`); a parsed
+    /// scene holds SI values whatever it names ([`crate::units`]).
+    #[serde(default)]
+    pub units: crate::units::UnitSystem,
     /// Physical plate.
     #[serde(default)]
     pub plate: Option<PlateSpec>,

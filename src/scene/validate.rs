@@ -368,6 +368,7 @@ impl Shared {
                 half_length: l,
                 force: p_force,
                 rigidity: d,
+                units: file.units,
             }),
             loads,
             elements: self.elements,
@@ -545,11 +546,13 @@ pub fn problem(file: &SceneFile) -> Result<Problem> {
             "voids need unbonded contact (solver.contact = \"unbonded\"): bonded contact would glue the plate to the lowered surface",
         ));
     }
+    let warnings = super::plausible::warnings(file, &model);
     Ok(Problem {
         model,
         combinations,
         method,
         route: file.solver.route,
         memory_limit,
+        warnings,
     })
 }

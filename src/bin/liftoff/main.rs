@@ -79,12 +79,17 @@ fn example(name: Option<&str>) -> Result<(), Failure> {
 }
 
 /// Read a scene (a path, or `example:NAME`), apply the command line's overrides, validate.
+/// Values that suggest a unit slip are printed as warnings on stderr; the scene still solves.
 fn load_problem(spec: &str, overrides: &liftoff::scene::Overrides) -> Result<Problem, Failure> {
-    liftoff::load(&Source::from_arg(spec), overrides).map_err(|e| match &e {
+    let problem = liftoff::load(&Source::from_arg(spec), overrides).map_err(|e| match &e {
         Error::Invalid { field, .. } if field == "scene" => Failure::from(e),
         Error::Io { .. } => Failure::from(e),
         _ => Failure::in_scene(spec, e),
-    })
+    })?;
+    for w in &problem.warnings {
+        eprintln!("warning: {spec}: {w}");
+    }
+    Ok(problem)
 }
 
 /// The studies compare methods on one load set: say which one a scene with combinations gives.

@@ -127,6 +127,7 @@ fn contact_picture<'a>(
             "σ".to_string()
         },
         axes: (length.label("x"), length.label("y")),
+        length_factor: length.factor,
         boundary: true,
         overlay,
         levelled: Some((&field.pressure, shown)),
@@ -246,6 +247,7 @@ pub fn write_field_map(
         scale,
         bar_caption: shown.label(map.name),
         axes: (length.label("x"), length.label("y")),
+        length_factor: length.factor,
         boundary: false,
         overlay,
         levelled: nodal.then_some((map.values, shown)),
@@ -277,7 +279,8 @@ impl Picture for ContactRegions<'_> {
         let legend_w = 230_u32.min(w / 3);
         let (map_area, legend_area) = body.split_horizontally(w.saturating_sub(legend_w));
         let [(x0, y0), (x1, y1)] = self.plate;
-        let (mut chart, extra_h) = plan_axes(&map_area, (x0, x1), (y0, y1), ("x / L", "y / L"))?;
+        let (mut chart, extra_h) =
+            plan_axes(&map_area, (x0, x1), (y0, y1), ("x / L", "y / L"), 1.0)?;
         chart
             .draw_series(
                 self.loaded
@@ -382,6 +385,7 @@ mod tests {
                 half_length: 2.0,
                 force: 1e3,
                 rigidity: 1e3,
+                units: crate::units::UnitSystem::Si,
             }),
             0.5,
         )

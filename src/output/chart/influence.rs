@@ -91,6 +91,7 @@ pub fn write_influence_map(
             length.label("load reference x"),
             length.label("load reference y"),
         ),
+        length_factor: length.factor,
         boundary: false,
         overlay: &overlay,
         levelled: None,

@@ -27,6 +27,7 @@ pub(super) fn plan_axes<'a, DB: DrawingBackend>(
     (x0, x1): (f64, f64),
     (y0, y1): (f64, f64),
     (x_desc, y_desc): (&str, &str),
+    shown: f64,
 ) -> DrawResult<(Plan<'a, DB>, i32)> {
     let (aw, ah) = area.dim_in_pixel();
     let avail_w = (aw as i32 - 2 * MARGIN - Y_AREA).max(10) as f64;
@@ -43,8 +44,14 @@ pub(super) fn plan_axes<'a, DB: DrawingBackend>(
         .y_label_area_size(Y_AREA)
         .build_cartesian_2d(x0..x1, y0..y1)
         .map_err(txt)?;
-    let x_fmt = tick_format(x0, x1);
-    let y_fmt = tick_format(y0, y1);
+    // Ticks sit at round values of the field's coordinates; their labels are in the shown
+    // unit (`shown` per field unit: 1 for metres, 39.37 for inches).
+    let (x_tick, y_tick) = (
+        tick_format(x0 * shown, x1 * shown),
+        tick_format(y0 * shown, y1 * shown),
+    );
+    let x_fmt = |v: &f64| x_tick(&(v * shown));
+    let y_fmt = |v: &f64| y_tick(&(v * shown));
     chart
         .configure_mesh()
         .disable_mesh()
@@ -221,6 +228,8 @@ pub(super) struct ColourMap<'a> {
     pub bar_caption: String,
     /// x and y axis descriptions.
     pub axes: (String, String),
+    /// Shown length units per field length unit (the axes' tick labels).
+    pub length_factor: f64,
     /// Draw the contact boundary of `field`.
     pub boundary: bool,
     /// What to draw over the map.
@@ -358,6 +367,7 @@ impl Picture for ColourMap<'_> {
             xr,
             yr,
             (self.axes.0.as_str(), self.axes.1.as_str()),
+            self.length_factor,
         )?;
         chart
             .draw_series(self.cells.iter().map(|&(corners, value)| {

@@ -30,7 +30,8 @@ use crate::post::{Profile, ProfilePoint};
 fn line_label(line: &str, units: &Units) -> String {
     if let Some(ph) = units.physical() {
         let l = ph.half_length;
-        let m = |v: f64| format!("{} m", super::plan::short(v));
+        let len = units.length();
+        let m = |v: f64| format!("{} {}", super::plan::short(len.apply(v)), len.unit);
         return match line {
             "x-axis" => "x-axis (y = 0)".to_string(),
             "y-axis" => "y-axis (x = 0)".to_string(),
@@ -123,9 +124,6 @@ pub(super) struct ProfileChart<'a> {
 /// V and σ axis descriptions (on the first column).
 const V_DESC: &str = "V = D w / (P L²), downward";
 const SIGMA_DESC: &str = "σ = μ L² r / P";
-/// Their physical counterparts.
-const W_DESC: &str = "deflection w (mm), downward";
-const PRESSURE_DESC: &str = "contact pressure (kPa)";
 
 impl ProfileChart<'_> {
     fn look(&self) -> Look {
@@ -244,11 +242,15 @@ impl Picture for ProfileChart<'_> {
                     .x_labels(look.x_labels)
                     .y_labels(look.y_labels);
                 if col == 0 {
+                    let (w_desc, pressure_desc) = (
+                        format!("deflection w ({}), downward", self.units.deflection().unit),
+                        format!("contact pressure ({})", self.units.pressure().unit),
+                    );
                     mesh.y_desc(match (sigma, self.units.is_physical()) {
                         (true, false) => SIGMA_DESC,
                         (false, false) => V_DESC,
-                        (true, true) => PRESSURE_DESC,
-                        (false, true) => W_DESC,
+                        (true, true) => pressure_desc.as_str(),
+                        (false, true) => w_desc.as_str(),
                     });
                 }
                 mesh.draw().map_err(txt)?;
@@ -338,10 +340,13 @@ pub fn write_profiles_svg(
         };
         (
             (-half, half),
-            "x, y or distance along the diagonal, from the centre (m)",
+            format!(
+                "x, y or distance along the diagonal, from the centre ({})",
+                units.length().unit
+            ),
         )
     } else {
-        ((-1.0, 1.0), "s, t or diagonal fraction")
+        ((-1.0, 1.0), "s, t or diagonal fraction".to_string())
     };
     let chart = ProfileChart {
         title,
@@ -349,7 +354,7 @@ pub fn write_profiles_svg(
         x,
         columns: vec![Column {
             caption: None,
-            x_desc: x_desc.to_string(),
+            x_desc,
             lines,
         }],
         units: *units,
@@ -397,6 +402,7 @@ pub(super) mod tests {
                 half_length: 6.0,
                 force: 1e5,
                 rigidity: 2e7,
+                units: crate::units::UnitSystem::Si,
             }),
             2.0 / 3.0,
         )

@@ -10,6 +10,25 @@
 //! system a deflection is V already, and a pressure r becomes σ = μ r.
 
 use crate::model::Physical;
+use crate::units::{UnitSystem, FOOT, INCH, POUND_FORCE};
+
+/// The US customary scale that stands for an SI engineering unit: lengths in inches (feet for
+/// plan areas), deflections in mils, pressures and stresses in psi, moments in lbf·in/in,
+/// shear forces in lbf/in, forces in lbf.
+fn us(si: &str) -> Option<Scale> {
+    let psi = POUND_FORCE / (INCH * INCH);
+    let (unit, factor) = match si {
+        "m" => ("in", 1.0 / INCH),
+        "m²" => ("ft²", 1.0 / (FOOT * FOOT)),
+        "mm" => ("mils", 1.0 / (1e-3 * INCH)),
+        "kPa" | "MPa" => ("psi", 1.0 / psi),
+        "kN·m/m" => ("lbf·in/in", 1.0 / POUND_FORCE),
+        "kN/m" => ("lbf/in", INCH / POUND_FORCE),
+        "kN" => ("lbf", 1.0 / POUND_FORCE),
+        _ => return None,
+    };
+    Some(Scale { unit, factor })
+}
 
 /// How one quantity is shown: shown value = field value × `factor`, followed by `unit`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -71,13 +90,20 @@ impl Units {
         self.mu
     }
 
-    /// Scale of the engineering unit (`unit`, `factor` from SI), or the dimensionless one.
+    /// Scale of the engineering unit (`unit`, `factor` from SI), or the dimensionless one. A
+    /// scene written in US customary units shows the US unit of the same quantity instead
+    /// ([`us`]).
     fn pick(&self, unit: &'static str, factor: f64, dimensionless: Scale) -> Scale {
-        if self.is_physical() {
-            Scale { unit, factor }
-        } else {
-            dimensionless
+        match self.physical.map(|p| p.units) {
+            Some(UnitSystem::Si) => Scale { unit, factor },
+            Some(UnitSystem::Us) => us(unit).unwrap_or(Scale { unit, factor }),
+            None => dimensionless,
         }
+    }
+
+    /// The unit system values are shown in (SI for a dimensionless scene's physical output).
+    pub fn system(&self) -> UnitSystem {
+        self.physical.map_or(UnitSystem::Si, |p| p.units)
     }
 
     /// Lengths and coordinates (FullField x, y): m; in units of L for a dimensionless scene.
@@ -195,26 +221,28 @@ impl Units {
         }
     }
 
-    /// The shown deflection of a dimensionless V: w in mm = V P L² / D · 10³, or V itself.
+    /// The shown deflection of a dimensionless V: w = V P L² / D in the shown unit (mm or
+    /// mils), or V itself.
     pub fn from_v(&self, v: f64) -> f64 {
         match self.physical {
-            Some(ph) => v * ph.deflection() * 1e3,
+            Some(ph) => self.deflection().apply(v * ph.deflection()),
             None => v,
         }
     }
 
-    /// The shown pressure of a dimensionless σ: r in kPa = σ / μ · P / L² · 10⁻³, or σ itself.
+    /// The shown pressure of a dimensionless σ: r = σ / μ · P / L² in the shown unit (kPa or
+    /// psi), or σ itself.
     pub fn from_sigma(&self, sigma: f64) -> f64 {
         match self.physical {
-            Some(ph) => sigma / self.mu * ph.pressure() * 1e-3,
+            Some(ph) => self.pressure().apply(sigma / self.mu * ph.pressure()),
             None => sigma,
         }
     }
 
-    /// The shown length of a length in units of L: metres, or unchanged.
+    /// The shown length of a length in units of L: metres (inches), or unchanged.
     pub fn from_l(&self, length: f64) -> f64 {
         match self.physical {
-            Some(ph) => length * ph.half_length,
+            Some(ph) => self.length().apply(length * ph.half_length),
             None => length,
         }
     }
@@ -231,6 +259,7 @@ mod tests {
                 half_length: 6.0,
                 force: 1e5,
                 rigidity: 2e7,
+                units: crate::units::UnitSystem::Si,
             }),
             2.0 / 3.0,
         )
