@@ -292,6 +292,7 @@ fn serde_names_match_choice_names() {
         )+};
     }
     both!(
+        liftoff::units::UnitSystem,
         liftoff::model::ConstraintPoints,
         liftoff::model::SymmetryMode,
         liftoff::layout::JointType,

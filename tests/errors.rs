@@ -414,8 +414,8 @@ fn e26_the_penalised_set_that_cycled_converges() {
         code == Some(0) && files > 0,
         "E26: the scene that cycled solves ({err})"
     );
-    let penalty = liftoff::analyse(&liftoff::Problem::from_toml(scene).expect("scene"))
-        .expect("penalty");
+    let penalty =
+        liftoff::analyse(&liftoff::Problem::from_toml(scene).expect("scene")).expect("penalty");
     let qp = liftoff::analyse(
         &liftoff::Problem::from_toml(&scene.replace("method = \"penalty\"", "method = \"qp\""))
             .expect("scene"),

@@ -16,6 +16,7 @@
 
 mod bearing;
 pub mod builder;
+pub mod convert;
 mod joints;
 mod load_spec;
 mod loads;
@@ -82,7 +83,7 @@ pub struct Problem {
 
 impl SceneFile {
     /// Parse TOML text. A scene in US customary units (`units = "us"`) is converted to SI
-    /// first ([`crate::units::scene_to_si`]); one in SI is read directly, so that a parse error
+    /// first ([`convert::scene_to_si`]); one in SI is read directly, so that a parse error
     /// names its line.
     pub fn parse(text: &str) -> Result<Self> {
         let table: toml::Table = toml::from_str(text).map_err(|e| Error::Parse(e.to_string()))?;
@@ -107,8 +108,8 @@ impl SceneFile {
 
     /// A scene from its keys as a JSON value, in the unit system its `units` names.
     fn from_value(mut value: serde_json::Value) -> Result<Self> {
-        let system = crate::units::scene_system(&value)?;
-        crate::units::scene_to_si(&mut value, system)?;
+        let system = convert::scene_system(&value)?;
+        convert::scene_to_si(&mut value, system)?;
         serde_json::from_value(value).map_err(|e| Error::Parse(e.to_string()))
     }
 

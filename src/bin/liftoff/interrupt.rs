@@ -4,12 +4,10 @@
 //! the binary says `interrupted: …` and exits with [`crate::failure::exit::INTERRUPTED`] (130,
 //! 128 + SIGINT). A second signal exits at once with the same code.
 
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::Ordering;
 
 use crate::failure::{exit, Failure};
-
-/// The cancel flag: set by the first signal, read by the library's loops.
-pub(crate) static CANCEL: AtomicBool = AtomicBool::new(false);
+use crate::progress::CANCEL;
 
 /// Install the handler, once, before any subcommand runs. Where it cannot be installed (a
 /// handler already is: not the case in this binary) the signals keep their default action and

@@ -1,8 +1,13 @@
 //! Progress bars (indicatif) drawn from the library's [`liftoff::Progress`] events.
 
+use std::sync::atomic::AtomicBool;
 use std::sync::Mutex;
 
 use liftoff::Monitor;
+
+/// The cancel flag of every run's monitor: set by the first Ctrl-C (`interrupt.rs`), read by the
+/// library's loops.
+pub(crate) static CANCEL: AtomicBool = AtomicBool::new(false);
 
 /// The bar being drawn, for [`note`] (the signal handler's thread).
 static BAR: Mutex<Option<indicatif::ProgressBar>> = Mutex::new(None);
@@ -19,7 +24,7 @@ pub(crate) fn note(line: &str) {
 /// Run a library call under a progress bar drawn from its [`liftoff::Progress`] events (on a
 /// terminal only): the cases done of a run over several (combinations, a study's solves), the
 /// steps of one long solve. With `log`, every case's label is also printed as a line. The run's
-/// monitor carries the cancel flag of Ctrl-C ([`crate::interrupt`]); the bar is cleared however
+/// monitor carries the cancel flag [`CANCEL`], which Ctrl-C sets (`interrupt.rs`); the bar is cleared however
 /// the run ends.
 pub(crate) fn with_progress<T>(log: bool, run: impl FnOnce(&Monitor<'_>) -> T) -> T {
     let pb = indicatif::ProgressBar::new_spinner();
@@ -56,9 +61,7 @@ pub(crate) fn with_progress<T>(log: bool, run: impl FnOnce(&Monitor<'_>) -> T) -
     if let Ok(mut b) = BAR.lock() {
         *b = Some(pb.clone());
     }
-    let monitor = Monitor::NONE
-        .with_cancel(&crate::interrupt::CANCEL)
-        .with_progress(&report);
+    let monitor = Monitor::NONE.with_cancel(&CANCEL).with_progress(&report);
     let result = run(&monitor);
     if let Ok(mut b) = BAR.lock() {
         *b = None;
