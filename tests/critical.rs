@@ -173,6 +173,26 @@ fn the_moved_load_must_be_a_named_vehicle() {
         e.is_some_and(|m| m.contains("moves an axle or a gear")),
         "a uniform load is no vehicle"
     );
+    // An unknown combination lists the scene's (issue 36).
+    let combined = problem(&SLAB.replace(
+        "[mesh]",
+        "[[combination]]\nname = \"day\"\nfactors = { default = 1.0 }\n[[combination]]\nname = \"night\"\nfactors = { default = 1.2 }\n[mesh]",
+    ));
+    let e = critical(
+        &combined,
+        &CriticalOptions {
+            combination: Some("noon".into()),
+            ..options([3, 3], false)
+        },
+        &liftoff::Monitor::NONE,
+    )
+    .err()
+    .map(|e| e.to_string());
+    assert!(
+        e.as_ref()
+            .is_some_and(|m| m.contains("no combination named `noon`") && m.contains("day, night")),
+        "{e:?}"
+    );
 }
 
 /// On a jointed slab the search also finds the positions of the largest joint shear per

@@ -161,3 +161,56 @@ fn an_axle_is_its_tires() {
         "resultant {load} N, want {want}"
     );
 }
+
+/// A standard axle given another configuration without its spacing is explained, not asked
+/// for a key (issue 36): `esal-single-dual` is a single axle; as a tandem it needs
+/// `axle_spacing` or the tandem standard, which the message names.
+#[test]
+fn a_standard_changed_to_a_tandem_explains_the_conflict() {
+    let text = scene(
+        "[[load]]\nkind = \"axle\"\nstandard = \"esal-single-dual\"\nconfiguration = \"tandem\"\nx = 0.3\ny = -0.4\n",
+        "unbonded",
+    );
+    let e = liftoff::Problem::from_toml(&text).expect_err("refused");
+    let m = e.to_string();
+    assert!(
+        m.contains("configuration")
+            && m.contains("esal-single-dual")
+            && m.contains("tandem-dual")
+            && m.contains("axle_spacing"),
+        "{m}"
+    );
+    // With its spacing the tandem solves.
+    common::run(&text.replace(
+        "configuration = \"tandem\"",
+        "configuration = \"tandem\"\naxle_spacing = 1.3",
+    ));
+}
+
+/// A heading that is not a multiple of 90° says in the solve's notes that the prints became
+/// squares (issue 36); along the grid there is no such note.
+#[test]
+fn an_oblique_heading_notes_square_prints() {
+    let axle = |heading: f64| {
+        scene(
+            &format!("[[load]]\nkind = \"axle\"\nstandard = \"esal-single-dual\"\nx = 0.3\ny = -0.2\nheading = {heading}\n"),
+            "unbonded",
+        )
+    };
+    let oblique = solve(&axle(30.0));
+    assert!(
+        oblique
+            .summary
+            .notes
+            .iter()
+            .any(|n| n.contains("heading of 30°") && n.contains("squares")),
+        "{:?}",
+        oblique.summary.notes
+    );
+    let along = solve(&axle(90.0));
+    assert!(
+        !along.summary.notes.iter().any(|n| n.contains("squares")),
+        "{:?}",
+        along.summary.notes
+    );
+}

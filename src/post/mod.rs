@@ -325,9 +325,23 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
         Some(p) => format!("{:.3} m", model.bearing_length * p.half_length),
         None => format!("{:.4} L", model.bearing_length),
     };
-    let notes = average::edge_note(model.groups.foundation(), &length)
+    let mut notes: Vec<String> = average::edge_note(model.groups.foundation(), &length)
         .into_iter()
         .collect();
+    // The dual-tire print's rectangle stands only along the grid: at other headings each tire
+    // is a square of its contact area (README, "Pavement loads").
+    for v in model.vehicles.iter().filter(|v| !v.square) {
+        let heading = v.at[2];
+        if ((heading / 90.0) - (heading / 90.0).round()).abs() >= 1e-9 {
+            let what = v
+                .name
+                .as_deref()
+                .unwrap_or(if v.axle { "axle" } else { "gear" });
+            notes.push(format!(
+                "{what}: a heading of {heading}° is not a multiple of 90°, so its tire prints are squares of the same contact area (the PCA rectangle stands only along the grid)"
+            ));
+        }
+    }
     Report {
         notes,
         joints,

@@ -222,6 +222,24 @@ pub fn vehicle(
                 ))
             }
         };
+        if let (Some(std), Some(own)) = (standard, spec.configuration.as_deref()) {
+            if own != std.configuration && axles > 1 && spec.axle_spacing.is_none() {
+                let fits: Vec<&str> = STANDARDS
+                    .iter()
+                    .filter(|s| s.axle && s.configuration == own)
+                    .map(|s| s.name)
+                    .collect();
+                return Err(Error::invalid(
+                    field("configuration"),
+                    format!(
+                        "`{own}` changes the standard `{}`, a {} axle, which has no axle spacing for it: give axle_spacing (m) with it, or take a {own} standard ({})",
+                        std.name,
+                        std.configuration,
+                        fits.join(", ")
+                    ),
+                ));
+            }
+        }
         let load = positive("axle_load", spec.axle_load, standard.map(|s| s.axle_load))?;
         let spacing = if axles > 1 {
             positive(

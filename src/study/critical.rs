@@ -343,7 +343,18 @@ fn chosen(problem: &Problem, options: &CriticalOptions) -> Result<(Model, usize,
                 .iter()
                 .find(|c| &c.name == wanted)
                 .ok_or_else(|| {
-                    Error::invalid("combination", format!("no combination named `{wanted}`"))
+                    let names: Vec<&str> = problem
+                        .combinations
+                        .iter()
+                        .map(|c| c.name.as_str())
+                        .collect();
+                    Error::invalid(
+                        "combination",
+                        format!(
+                            "no combination named `{wanted}`; the scene's combinations are: {}",
+                            names.join(", ")
+                        ),
+                    )
                 })?,
             None => problem.combinations.iter().find(acts).ok_or_else(|| {
                 Error::invalid(

@@ -28,9 +28,10 @@ pub(crate) fn note(line: &str) {
 /// the run ends.
 pub(crate) fn with_progress<T>(log: bool, run: impl FnOnce(&Monitor<'_>) -> T) -> T {
     let pb = indicatif::ProgressBar::new_spinner();
-    let bar =
-        indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} {elapsed_precise} {msg}")
-            .ok();
+    let bar = indicatif::ProgressStyle::with_template(
+        "{bar:30} {pos}/{len} {elapsed_precise}, about {eta} left {msg}",
+    )
+    .ok();
     if let Ok(style) = indicatif::ProgressStyle::with_template("{spinner} {elapsed_precise} {msg}")
     {
         pb.set_style(style);
