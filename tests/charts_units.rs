@@ -141,7 +141,7 @@ fn charts_of_a_solve_carry_its_units() {
     write_all(dir.path(), &model, &b.report, &b.summary).expect("write");
     let read = |name: &str| std::fs::read_to_string(dir.path().join(name)).expect(name);
     let contact = read("contact.svg");
-    assert!(contact.contains("\nσ\n") && !contact.contains("kPa"));
+    assert!(contact.contains("\nσ, to the") && !contact.contains("kPa"));
     let profiles = read("profiles.svg");
     assert!(profiles.contains("V = D w / (P L²), downward") && !profiles.contains("mm"));
 }

@@ -78,7 +78,9 @@ fn check_field(path: &Path, field: &FullField) -> Result<()> {
 }
 
 /// The colour map of the contact pressure of one solve: lifted cells (mean σ ≤ 0, or no node
-/// in contact) grey, the others on the sequential scale from 0 to the largest cell mean.
+/// in contact) grey, the others their corners' mean on the sequential scale from 0 to the
+/// nodal peak — the solve table's extreme (issue 36: a bar that topped at the largest cell
+/// mean read 530 kPa beside a table's 1107 kPa), which the bar's caption names.
 fn contact_picture<'a>(
     field: &'a FullField,
     title: &'a str,
@@ -105,11 +107,10 @@ fn contact_picture<'a>(
             cells.push((corners, (!lifted).then_some(mean)));
         }
     }
-    let top = cells
+    let top = values
         .iter()
-        .filter_map(|&(_, m)| m)
         .filter(|m| m.is_finite())
-        .fold(0.0_f64, f64::max);
+        .fold(0.0_f64, |a, &b| a.max(b));
     let hi = if top > 0.0 { top } else { 1.0 };
     let length = units.length();
     ColourMap {
@@ -122,9 +123,9 @@ fn contact_picture<'a>(
             palette: Palette::Sequential,
         },
         bar_caption: if units.is_physical() {
-            shown.label("pressure")
+            format!("{}, to the nodal peak", shown.label("pressure"))
         } else {
-            "σ".to_string()
+            "σ, to the nodal peak".to_string()
         },
         axes: (length.label("x"), length.label("y")),
         length_factor: length.factor,
@@ -428,7 +429,11 @@ mod tests {
         let text = std::fs::read_to_string(&svg).expect("read svg");
         assert!(text.contains("<svg"));
         assert!(text.contains("Contact map title"));
-        assert!(text.contains(">\nσ\n<"), "dimensionless colour bar");
+        // The bar's caption, σ up to the nodal peak (it wraps at its spaces).
+        assert!(
+            text.contains(">\nσ, to the") && text.contains("peak\n<"),
+            "dimensionless colour bar"
+        );
         let bytes = std::fs::read(&png).expect("read png");
         assert!(bytes.starts_with(&[0x89, b'P', b'N', b'G', 0x0D, 0x0A, 0x1A, 0x0A]));
     }

@@ -79,6 +79,8 @@ pub(super) enum Swatch {
     LineLoad,
     /// A joint line of a kind: dashed as on the map.
     Joint(crate::layout::JointType),
+    /// A grey cell: lifted off (or, on a stress map, no value).
+    Lifted,
 }
 
 /// Width of a legend swatch, pixels.
@@ -148,6 +150,12 @@ impl Swatch {
                 .map_err(txt)
             }
             Swatch::Zone => area.draw(&dotted(rect)).map_err(txt),
+            Swatch::Lifted => area
+                .draw(&Rectangle::new(
+                    [(x, y - 7), (x + w, y + 7)],
+                    style::LIFTED.filled(),
+                ))
+                .map_err(txt),
             Swatch::LineLoad => area
                 .draw(&PathElement::new(
                     [(x, y), (x + w, y)],

@@ -256,6 +256,19 @@ impl ColourMap<'_> {
     fn legend(&self) -> Vec<(Swatch, String)> {
         let o = self.overlay;
         let mut out = Vec::new();
+        // Grey cells say what they are: lifted on a contact map (its boundary drawn), no value
+        // elsewhere.
+        if self.cells.iter().any(|c| c.1.is_none()) {
+            out.push((
+                Swatch::Lifted,
+                if self.boundary {
+                    "lifted off (no pressure)"
+                } else {
+                    "no value"
+                }
+                .to_string(),
+            ));
+        }
         // The joint lines of a jointed plate, one entry per kind, in the order first drawn.
         let mut kinds: Vec<JointType> = Vec::new();
         for j in &self.field.joints {
@@ -435,21 +448,30 @@ impl Picture for ColourMap<'_> {
                 .map_err(txt)?;
             }
         }
-        // Bar caption, centred above the bar, smaller if it would not fit beside the map.
+        // Bar caption, centred above the bar: smaller if it would not fit beside the map, and
+        // cut into lines at spaces, the last just above the bar, so that no word leaves the
+        // picture (a long title was cut at its right edge).
         let (bar_x, bar_y) = bar.plotting_area().get_pixel_range();
         let size = if text_width(&self.bar_caption, 18.0) <= 170 {
             18
         } else {
             14
         };
+        let lines = wrap(&self.bar_caption, size as f64, 170);
         let text =
             TextStyle::from((FONT, size).into_font()).pos(Pos::new(HPos::Center, VPos::Bottom));
-        root.draw_text(
-            &self.bar_caption,
-            &text,
-            ((bar_x.start + bar_x.end) / 2, bar_y.start - 6),
-        )
-        .map_err(txt)?;
+        let step = size + 3;
+        for (k, line) in lines.iter().rev().enumerate() {
+            root.draw_text(
+                line,
+                &text,
+                (
+                    (bar_x.start + bar_x.end) / 2,
+                    bar_y.start - 6 - step * k as i32,
+                ),
+            )
+            .map_err(txt)?;
+        }
 
         // The legend just below the x axis description (the room reserved above keeps it
         // inside the picture).
@@ -465,6 +487,22 @@ impl Picture for ColourMap<'_> {
         }
         Ok(())
     }
+}
+
+/// `text` cut at spaces into lines no wider than `width` pixels at font `size` (a word wider
+/// than that stands on its own line).
+fn wrap(text: &str, size: f64, width: i32) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    for word in text.split(' ') {
+        match lines.last_mut() {
+            Some(line) if text_width(&format!("{line} {word}"), size) <= width => {
+                line.push(' ');
+                line.push_str(word);
+            }
+            _ => lines.push(word.to_string()),
+        }
+    }
+    lines
 }
 
 #[cfg(test)]
@@ -503,5 +541,20 @@ mod tests {
         assert_eq!(short(0.012345), "0.0123");
         assert_eq!(short(1.5e6), "1.50e6");
         assert_eq!(short(0.0), "0");
+    }
+
+    /// The caption that was cut at the picture's edge wraps into lines that each fit the bar's
+    /// 170 pixels, keep every word in order, and a short caption stays one line.
+    #[test]
+    fn a_long_bar_caption_wraps_within_the_bar() {
+        let caption = "largest principal stress at the bottom (MPa)";
+        let lines = wrap(caption, 14.0, 170);
+        assert!(lines.len() >= 2, "{lines:?}");
+        assert!(
+            lines.iter().all(|l| text_width(l, 14.0) <= 170),
+            "{lines:?}"
+        );
+        assert_eq!(lines.join(" "), caption);
+        assert_eq!(wrap("σ₁ bottom (psi)", 18.0, 170), vec!["σ₁ bottom (psi)"]);
     }
 }
