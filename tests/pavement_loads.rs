@@ -152,6 +152,30 @@ fn an_axle_is_its_tires() {
     }
     let (a, b) = (solve(&axle), solve(&scene(&patches, "unbonded")));
     assert!(a.summary.converged && b.summary.converged);
+    // The solve's maps draw the four prints where the hand-written patches are (issue 36).
+    let problem = liftoff::Problem::from_toml(&axle).expect("scene");
+    let overlay = liftoff::output::chart::Overlay::for_model(&problem.model, &a.report);
+    assert_eq!(overlay.prints.len(), 4, "{:?}", overlay.prints);
+    for (k, yc) in [
+        -0.915 - 0.1524,
+        -0.915 + 0.1524,
+        0.915 - 0.1524,
+        0.915 + 0.1524,
+    ]
+    .iter()
+    .enumerate()
+    {
+        let r = overlay.prints[k];
+        let want = [
+            (0.3 - along / 2.0, -0.4 + yc - across / 2.0),
+            (0.3 + along / 2.0, -0.4 + yc + across / 2.0),
+        ];
+        let off = (r[0].0 - want[0].0).abs()
+            + (r[0].1 - want[0].1).abs()
+            + (r[1].0 - want[1].0).abs()
+            + (r[1].1 - want[1].1).abs();
+        assert!(off < 1e-12, "print {k}: {r:?} vs {want:?}");
+    }
     assert!(rel_diff(&a.report.field.w, &b.report.field.w) < 1e-9, "w");
     assert!(rel_diff(&a.report.elements.bottom.s1, &b.report.elements.bottom.s1) < 1e-9);
     let load = a.summary.resultant.load;

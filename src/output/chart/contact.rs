@@ -404,6 +404,7 @@ mod tests {
             voids: vec![[(-1.5, -0.5), (-0.5, 0.5)]],
             zones: vec![[(0.5, -0.8), (1.8, 0.2)]],
             lines: vec![[(-2.0, 0.8), (2.0, 0.8)]],
+            prints: vec![[(1.0, -0.2), (1.3, 0.1)]],
         };
         draw(&svg, &png, &overlay).expect("map with overlay");
         let over = std::fs::read_to_string(&svg).expect("read svg");
@@ -460,6 +461,7 @@ mod tests {
             "void",
             "soft or stiff zone",
             "line load",
+            "tire print",
         ] {
             assert!(!plain.contains(needle), "plain map has {needle:?}");
             assert!(over.contains(needle), "overlay legend lacks {needle:?}");

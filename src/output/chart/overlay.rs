@@ -26,6 +26,8 @@ pub struct Overlay {
     pub zones: Vec<[(f64, f64); 2]>,
     /// Line loads, from one end to the other.
     pub lines: Vec<[(f64, f64); 2]>,
+    /// The tire prints of the axles and gears, as opposite corners.
+    pub prints: Vec<[(f64, f64); 2]>,
 }
 
 impl Overlay {
@@ -49,6 +51,15 @@ impl Overlay {
                     _ => None,
                 })
                 .collect(),
+            prints: model
+                .vehicles
+                .iter()
+                .flat_map(|v| &model.loads[v.loads.clone()])
+                .filter_map(|ld| match *ld {
+                    crate::model::Load::Patch { x, y, .. } => Some(rect(x, y)),
+                    _ => None,
+                })
+                .collect(),
         }
     }
 
@@ -58,6 +69,7 @@ impl Overlay {
             && self.voids.is_empty()
             && self.zones.is_empty()
             && self.lines.is_empty()
+            && self.prints.is_empty()
     }
 }
 
@@ -81,6 +93,8 @@ pub(super) enum Swatch {
     Joint(crate::layout::JointType),
     /// A grey cell: lifted off (or, on a stress map, no value).
     Lifted,
+    /// A tire print: a thin solid rectangle.
+    Print,
 }
 
 /// Width of a legend swatch, pixels.
@@ -150,6 +164,9 @@ impl Swatch {
                 .map_err(txt)
             }
             Swatch::Zone => area.draw(&dotted(rect)).map_err(txt),
+            Swatch::Print => area
+                .draw(&PathElement::new(rect, style::PRINT.stroke_width(2)))
+                .map_err(txt),
             Swatch::Lifted => area
                 .draw(&Rectangle::new(
                     [(x, y - 7), (x + w, y + 7)],
@@ -354,6 +371,14 @@ pub(super) fn draw_features<DB: DrawingBackend>(
                 style::LINE_LOAD.stroke_width(LINE_LOAD_W),
             )
         }))
+        .map_err(txt)?;
+    chart
+        .draw_series(
+            overlay
+                .prints
+                .iter()
+                .map(|r| PathElement::new(rectangle(r, xr, yr), style::PRINT.stroke_width(2))),
+        )
         .map_err(txt)?;
     Ok(())
 }

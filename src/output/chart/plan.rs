@@ -309,6 +309,7 @@ impl ColourMap<'_> {
             (!o.voids.is_empty(), Swatch::Void, "void"),
             (!o.zones.is_empty(), Swatch::Zone, "soft or stiff zone"),
             (!o.lines.is_empty(), Swatch::LineLoad, "line load"),
+            (!o.prints.is_empty(), Swatch::Print, "tire print"),
         ] {
             if present {
                 out.push((swatch, text.to_string()));
