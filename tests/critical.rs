@@ -318,6 +318,17 @@ fn moved_loads_and_answers_equal_the_scene_written_at_that_position() {
     };
     let c = critical(&base, &options, &liftoff::Monitor::NONE).expect("search");
     assert_eq!(c.positions.len(), 6);
+    // The reported spacing is the distance between neighbouring points of the 3 × 2 grid
+    // (positions in grid order: x fastest): the same subtractions, so to round-off of metres.
+    let p = &c.positions;
+    assert!(
+        (c.spacing[0] - (p[1].x - p[0].x)).abs() < 1e-12
+            && (c.spacing[1] - (p[3].y - p[0].y)).abs() < 1e-12
+            && c.spacing[0] > 0.0
+            && c.spacing[1] > 0.0,
+        "spacing {:?}",
+        c.spacing
+    );
     let heavy = |p: &liftoff::Problem| -> liftoff::scene::Combination {
         let mut c = p.combinations.clone();
         c.retain(|c| c.name == "heavy");
@@ -431,4 +442,25 @@ fn the_search_is_the_same_on_any_number_of_threads() {
     };
     let part = on(2, &share);
     assert_eq!(drop_time(&part), drop_time(&one)[run..].to_vec());
+}
+
+/// Without `combination`, the search moves the load in the first combination it acts in: a
+/// combination ahead of it without the load's case (night curling alone) is passed over, and
+/// the one named in the result is the first with a factor on `traffic` ("axle"). One position
+/// (a 1 × 1 grid) is enough to see the choice.
+#[test]
+fn the_default_combination_is_the_first_the_load_acts_in() {
+    let text = include_str!("../examples/pavement-3x3.toml").replace(
+        "[[combination]]\nname = \"axle\"\n",
+        "[[combination]]\nname = \"curl\"\nfactors = { self-weight = 1.0, night = 1.0 }\n\n[[combination]]\nname = \"axle\"\n",
+    );
+    let base = liftoff::load(&liftoff::Source::Toml(&text), &coarse()).expect("scene");
+    assert_eq!(base.combinations[0].name, "curl", "the replacement took");
+    let options = CriticalOptions {
+        load: "axle".into(),
+        grid: [1, 1],
+        ..CriticalOptions::default()
+    };
+    let c = critical(&base, &options, &liftoff::Monitor::NONE).expect("search");
+    assert_eq!(c.combination.as_deref(), Some("axle"));
 }

@@ -397,4 +397,33 @@ mod dowels {
         assert_eq!((seg.minus, seg.plus), (5 + 8, 6 + 8));
         assert_eq!(t.n_clusters(), 1);
     }
+
+    /// Bars on the plate's two edges (y = ∓1 of a joint x = const on the whole 2 × 2 plate, 8
+    /// rows of 0.25) are on the plate, not on a mirrored half: the first sits at the start of
+    /// the first segment (t = 0), the last at the end of the last segment (t = 1), each with
+    /// its whole spring. (Positions are exact binary fractions: t is exact.)
+    #[test]
+    fn bars_on_the_plate_edges_sit_at_the_ends_of_the_joint() {
+        let l = Layout {
+            joints: vec![Joint {
+                name: "D".into(),
+                axis: Axis::X,
+                at: 0.5,
+                kind: JointKind::Dowels {
+                    k: 4.0,
+                    positions: vec![-1.0, 1.0],
+                    bar: None,
+                },
+            }],
+            panels: Vec::new(),
+        };
+        let m = Mesh::new(2.0, 2.0, [8, 8], false, false).with_layout(&l);
+        let t = m.topo.as_ref().expect("topology");
+        let got: Vec<(usize, f64, f64, usize)> = t
+            .dowels
+            .iter()
+            .map(|d| (d.segment, d.t, d.k, d.bar))
+            .collect();
+        assert_eq!(got, vec![(0, 0.0, 4.0, 0), (7, 1.0, 4.0, 1)]);
+    }
 }

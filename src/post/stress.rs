@@ -159,4 +159,31 @@ mod tests {
         assert_eq!(b, [24.0 + 3.0, 12.0 + 3.0, 6.0], "bottom");
         assert_eq!(t, [-24.0 - 2.0, -12.0 - 2.0, -6.0], "top");
     }
+
+    /// Nodal recovery is the mean of the elements around a node, then its principal value: on
+    /// 2 × 2 elements with σx = 1, 2, 3, 4 (σy = τ = 0, so σ₁ = σx) the corner node 0 has only
+    /// element 0 (1), the edge node 1 elements 0 and 1 (1.5), the centre all four (2.5); a
+    /// state equal in every element, (3, −1, 2), is kept at every node (σ₁ = 1 + 2√2, as above).
+    #[test]
+    fn nodal_principal_stress_is_the_mean_of_the_elements_around() {
+        let mesh = Mesh::new(2.0, 2.0, [2, 2], false, false);
+        let mut face = FaceStress::default();
+        for sx in [1.0, 2.0, 3.0, 4.0] {
+            face.push(sx, 0.0, 0.0);
+        }
+        let s1 = recover_principal(&mesh, &face);
+        assert_eq!(s1.len(), 9);
+        // Means of at most four small integers: round-off.
+        for (node, want) in [(0, 1.0), (1, 1.5), (4, 2.5), (8, 4.0)] {
+            assert!((s1[node] - want).abs() < 1e-14, "node {node}: {}", s1[node]);
+        }
+        let mut uniform = FaceStress::default();
+        for _ in 0..4 {
+            uniform.push(3.0, -1.0, 2.0);
+        }
+        let want = 1.0 + 8f64.sqrt();
+        for (node, s) in recover_principal(&mesh, &uniform).iter().enumerate() {
+            assert!((s - want).abs() < 1e-14, "node {node}: {s}");
+        }
+    }
 }

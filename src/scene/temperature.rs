@@ -285,4 +285,29 @@ mod tests {
         assert!((got - want).abs() < 1e-6 * want.abs(), "{got} vs {want}");
         assert!((got + 10.4).abs() < 0.05, "{got}");
     }
+
+    /// A quadratic profile is read through three values at the top, the middle and the bottom
+    /// (the closed forms above assume them there): three depths with the middle one off H/2,
+    /// and four depths, are refused naming `depths`; the three at 0, H/2, H are taken.
+    #[test]
+    fn a_quadratic_profile_needs_the_top_middle_and_bottom() {
+        let h = 0.25;
+        let spec = |depths: Vec<f64>| {
+            let temps = vec![20.0; depths.len()];
+            LoadSpec {
+                depths: Some(depths),
+                temperatures: Some(temps),
+                interpolation: Some("quadratic".into()),
+                ..LoadSpec::new(crate::scene::spec::LoadKind::TemperatureProfile)
+            }
+        };
+        for depths in [vec![0.0, 0.1, h], vec![0.0, 0.125, 0.2, h]] {
+            let e = profile(&spec(depths.clone()), 0, h);
+            assert!(
+                matches!(&e, Err(Error::Invalid { field, .. }) if field == "load[0].depths"),
+                "{depths:?}: {e:?}"
+            );
+        }
+        assert!(profile(&spec(vec![0.0, h / 2.0, h]), 0, h).is_ok());
+    }
 }
