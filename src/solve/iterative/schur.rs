@@ -468,12 +468,12 @@ impl IterativeSchur {
             .warm
             .clone()
             .unwrap_or_else(|| vec![0.0; ops.n_sigma()]);
-        // The last answer's tension at a newly penalised point meets springs c w/ε̄ there: a
-        // start residual of order 1/ε̄ against loads of order one. Where that is worse than
+        // The last answer's tension at a newly penalised point meets the soft springs'
+        // compliance c w/ε̄ there: a start residual of order 1/ε̄ against loads of order one. Where that is worse than
         // no start (on a stiff plate over a membrane-like soil it grew to ~10⁷⁰ times the
         // loads in a few stages, and CG stalled), start instead from zero pressure at the
         // points that pull and whose springs are new or ten times softer than the last
-        // solve's: the answer there is O(ε̄). Elsewhere the warm start is kept whole (the
+        // solve's (compliance weight d over ten times the last): the answer there is O(ε̄). Elsewhere the warm start is kept whole (the
         // loose solves of soft plates build on the O(ε̄) tension it keeps).
         let mut other = start.clone();
         for (k, &d) in weights.iter().enumerate() {
