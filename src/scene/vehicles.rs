@@ -434,4 +434,45 @@ mod tests {
             "overlapping prints refused"
         );
     }
+
+    /// A load, a tire pressure or a track must be a finite positive number: a negative axle
+    /// load, a zero tire pressure and an infinite track over the ESAL standard's own values
+    /// are each refused naming their field.
+    #[test]
+    fn vehicle_sizes_must_be_finite_and_positive() {
+        let esal = || LoadSpec {
+            standard: Some("esal-single-dual".into()),
+            ..at(LoadKind::Axle, 1.0, 0.5)
+        };
+        for (spec, name) in [
+            (
+                LoadSpec {
+                    axle_load: Some(-80e3),
+                    ..esal()
+                },
+                "axle_load",
+            ),
+            (
+                LoadSpec {
+                    tire_pressure: Some(0.0),
+                    ..esal()
+                },
+                "tire_pressure",
+            ),
+            (
+                LoadSpec {
+                    track: Some(f64::INFINITY),
+                    ..esal()
+                },
+                "track",
+            ),
+        ] {
+            let e = tires(&spec, 0, true);
+            let want = format!("load[0].{name}");
+            assert!(
+                matches!(&e, Err(Error::Invalid { field, .. }) if *field == want),
+                "{name}: {e:?}"
+            );
+        }
+    }
 }
