@@ -375,6 +375,32 @@ fn close(a: f64, b: f64) -> bool {
 mod tests {
     use super::*;
 
+    /// The joint lines of a family are every position once, in order: a line at x = 0 after
+    /// one to its left is a line like any other, and two joints within the tolerance (1e-9 of
+    /// L) are one line; the panels are the lines plus one.
+    #[test]
+    fn lines_are_every_position_once() {
+        let joint = |axis: Axis, at: f64| Joint {
+            name: String::new(),
+            axis,
+            at,
+            kind: JointKind::Free,
+        };
+        let layout = Layout {
+            joints: vec![
+                joint(Axis::X, 0.5),
+                joint(Axis::X, -0.5),
+                joint(Axis::Y, 0.2),
+                joint(Axis::X, 0.0),
+                joint(Axis::X, 0.5 + 1e-12),
+            ],
+            panels: Vec::new(),
+        };
+        assert_eq!(layout.lines(Axis::X), vec![-0.5, 0.0, 0.5]);
+        assert_eq!(layout.lines(Axis::Y), vec![0.2]);
+        assert_eq!(layout.panel_counts(), [4, 2]);
+    }
+
     /// The spring of a 32 mm steel dowel (E_d = 200 GPa, K = 4.07e11 N/m³) against an
     /// independent direct solution of the beam on its two beds with the free opening between
     /// them (an 8 × 8 boundary-value problem in `tests/references/dowel_beam.py`, which uses

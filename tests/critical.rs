@@ -464,3 +464,18 @@ fn the_default_combination_is_the_first_the_load_acts_in() {
     let c = critical(&base, &options, &liftoff::Monitor::NONE).expect("search");
     assert_eq!(c.combination.as_deref(), Some("axle"));
 }
+
+/// The grid's bounds: 1 to 201 points along each direction, as the error says; 0 and 202 are
+/// refused naming `grid`, 1 and 201 pass.
+#[test]
+fn the_grid_is_one_to_two_hundred_and_one_points() {
+    for bad in [[0, 3], [202, 3], [3, 202]] {
+        let e = options(bad, false).validate().expect_err("refused");
+        assert!(e.to_string().contains("grid"), "{bad:?}: {e}");
+    }
+    for good in [[1, 1], [201, 1], [1, 201]] {
+        options(good, false)
+            .validate()
+            .unwrap_or_else(|e| panic!("{good:?}: {e}"));
+    }
+}
