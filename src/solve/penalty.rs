@@ -21,7 +21,7 @@ use std::time::Instant;
 use super::checks::discrete_gap;
 use super::linalg::finite;
 pub use super::penalty_step::WOODBURY_MAX_RANK;
-use super::penalty_step::{constraint_rows, Backend};
+use super::penalty_step::{constraint_rows, penalty_weights, Backend};
 use super::solution::{Iteration, PenaltyStage, Solution, SolveInfo, Status, Timings};
 use crate::error::{Error, Result};
 use crate::method::{Method, PenaltySettings};
@@ -287,13 +287,13 @@ impl Damped {
     }
 }
 
-/// hᴺ of a step's answer with Gσ = `gs`, solved with the springs of `set`: −(c/ε̄) w_k [k ∈ P] gs_k.
+/// hᴺ of a step's answer with Gσ = `gs`, solved with the springs of `set`: −d_k gs_k, d_k the
+/// step's own penalty weights c w_k/ε̄ on the set ([`penalty_weights`]).
 fn spring_side(ops: &Operators, set: &[bool], epsilon: f64, gs: &[f64]) -> Vec<f64> {
-    let scale = ops.foundation_constant / epsilon;
-    gs.iter()
-        .zip(set)
-        .zip(&ops.constraints.weights)
-        .map(|((&g, &p), &w)| if p { -scale * w * g } else { 0.0 })
+    penalty_weights(ops, set, epsilon)
+        .iter()
+        .zip(gs)
+        .map(|(d, g)| -d * g)
         .collect()
 }
 

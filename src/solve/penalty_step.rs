@@ -361,7 +361,7 @@ impl Backend {
 type StepOut = (Vec<f64>, Vec<f64>, Vec<f64>, Option<CgReport>);
 
 /// d_k = c w_k / ε̄ on the penalised constraint points, 0 elsewhere.
-fn penalty_weights(ops: &Operators, penalised: &[bool], epsilon: f64) -> Vec<f64> {
+pub(super) fn penalty_weights(ops: &Operators, penalised: &[bool], epsilon: f64) -> Vec<f64> {
     let scale = ops.foundation_constant / epsilon;
     penalised
         .iter()
