@@ -15,6 +15,7 @@ use crate::model::Model;
 use crate::monitor::{Cases, Monitor};
 use crate::operators::Operators;
 use crate::scene::{Combination, Problem};
+use crate::units::{Measure, UnitSystem};
 
 /// One combination's run.
 pub struct CombinationRun {
@@ -79,7 +80,7 @@ impl Combinations {
                     .outcome
                     .as_ref()
                     .ok()
-                    .and_then(|o| serde_json::to_value(&o.summary).ok());
+                    .and_then(|o| o.summary.to_value().ok());
                 let error = r.outcome.as_ref().err().map(|e| e.to_string());
                 serde_json::json!({ "name": r.name, "summary": summary, "error": error })
             })
@@ -87,7 +88,7 @@ impl Combinations {
         let doc = serde_json::json!({
             "combinations": runs,
             "missing": self.missing(),
-            "envelope": self.envelope.as_ref().map(|e| &e.quantities),
+            "envelope": self.envelope.as_ref().map(|e| e.reported().quantities),
         });
         serde_json::to_string_pretty(&doc)
             .map_err(|e| Error::numerical("envelope", format!("cannot serialise: {e}")))
@@ -271,6 +272,68 @@ pub struct Envelope {
     pub nodes: Vec<(&'static str, &'static str, PointEnvelope)>,
     /// Element fields: mx, my, mxy, qx, qy.
     pub elements: Vec<(&'static str, &'static str, PointEnvelope)>,
+    /// The scene's unit system (None: a dimensionless scene); the fields above are SI.
+    pub system: Option<UnitSystem>,
+}
+
+impl Envelope {
+    /// The envelope as the files report it: every value and position in the scene's unit
+    /// system, with its unit (a dimensionless scene's is returned as it is).
+    pub fn reported(&self) -> Envelope {
+        let Some(system) = self.system else {
+            return self.clone();
+        };
+        let sys = Some(system);
+        let length = |v: f64| Measure::Length.from_si(sys, v);
+        let xy = |v: &[(f64, f64)]| v.iter().map(|&(x, y)| (length(x), length(y))).collect();
+        let field = |&(name, _, ref e): &(&'static str, &'static str, PointEnvelope)| {
+            let m = measure_of(name);
+            let c = |v: &[f64]| v.iter().map(|&x| m.from_si(sys, x)).collect();
+            let e = PointEnvelope {
+                max: c(&e.max),
+                min: c(&e.min),
+                ..e.clone()
+            };
+            (name, m.unit(sys), e)
+        };
+        let extreme = |m: Measure, e: &Extreme| Extreme {
+            value: m.from_si(sys, e.value),
+            combination: e.combination.clone(),
+            x: length(e.x),
+            y: length(e.y),
+        };
+        Envelope {
+            names: self.names.clone(),
+            quantities: self
+                .quantities
+                .iter()
+                .map(|q| {
+                    let m = measure_of(q.quantity);
+                    QuantityEnvelope {
+                        quantity: q.quantity,
+                        unit: m.unit(sys),
+                        max: extreme(m, &q.max),
+                        min: extreme(m, &q.min),
+                    }
+                })
+                .collect(),
+            node_xy: xy(&self.node_xy),
+            element_xy: xy(&self.element_xy),
+            nodes: self.nodes.iter().map(field).collect(),
+            elements: self.elements.iter().map(field).collect(),
+            system: self.system,
+        }
+    }
+}
+
+/// What an envelope field measures, by its name.
+fn measure_of(name: &str) -> Measure {
+    match name {
+        "w" | "uplift" => Measure::Deflection,
+        "mx" | "my" | "mxy" => Measure::MomentPerLength,
+        "qx" | "qy" => Measure::ForcePerLength,
+        _ => Measure::Pressure,
+    }
 }
 
 /// Envelope of the converged runs (None when there are none; [`analyse`] calls it only when
@@ -383,6 +446,7 @@ pub fn envelope(runs: &[CombinationRun]) -> Option<Envelope> {
         element_xy,
         nodes,
         elements,
+        system: first.model.physical.map(|p| p.units),
     })
 }
 

@@ -11,6 +11,7 @@ use crate::model::{Groups, LoadReference, Model, Physical};
 use crate::operators::Operators;
 use crate::post::{Complementarity, Extent, Report, Resultant};
 use crate::solve::{Iteration, PenaltyStage, Solution};
+use crate::units::Measure;
 
 /// summary.json's `dimensionless`: the model's [`Groups`] (their foundation is the summary's
 /// own `foundation`), the Pasternak decay length, ε̄ and what P is. The groups read as its own
@@ -214,10 +215,32 @@ impl Summary {
         }
     }
 
-    /// Pretty JSON.
+    /// Pretty JSON ([`Self::to_value`]).
     pub fn to_json(&self) -> Result<String> {
-        serde_json::to_string_pretty(self)
+        serde_json::to_string_pretty(&self.to_value()?)
             .map_err(|e| Error::numerical("summary", format!("cannot serialise: {e}")))
+    }
+
+    /// The summary as summary.json writes it: every physical value ([`MEASURED`]) in the
+    /// scene's unit system, and a `units` object naming the system and each such key's unit
+    /// (a dimensionless scene's keys in the paper's scales: L, P, P/L², …).
+    pub fn to_value(&self) -> Result<serde_json::Value> {
+        let mut v = serde_json::to_value(self)
+            .map_err(|e| Error::numerical("summary", format!("cannot serialise: {e}")))?;
+        let system = self.physical.map(|p| p.units);
+        let mut units = serde_json::Map::new();
+        let name = system.map_or("dimensionless", |s| s.name());
+        units.insert("system".into(), name.into());
+        for &(path, m) in MEASURED {
+            let keys: Vec<&str> = path.split('.').collect();
+            if convert(&mut v, &keys, &|x| m.from_si(system, x)) {
+                units.insert(path.into(), m.unit(system).into());
+            }
+        }
+        if let Some(o) = v.as_object_mut() {
+            o.insert("units".into(), units.into());
+        }
+        Ok(v)
     }
 
     /// Short description for chart titles.
@@ -230,5 +253,62 @@ impl Summary {
             self.elements[0],
             self.elements[1]
         )
+    }
+}
+
+/// The keys of summary.json that hold physical values, and what each measures; `*` stands for
+/// every entry of an array (the joints). The rest are pure numbers (V, σ, fractions, the
+/// dimensionless groups, residuals in the paper's units), words or times in seconds.
+pub const MEASURED: &[(&str, Measure)] = &[
+    ("physical.half_length", Measure::Length),
+    ("physical.force", Measure::Force),
+    ("physical.rigidity", Measure::Moment),
+    ("dimensionless.reference_force", Measure::Force),
+    ("w_max", Measure::Deflection),
+    ("pressure_max", Measure::Pressure),
+    ("moments.mx", Measure::MomentPerLength),
+    ("moments.my", Measure::MomentPerLength),
+    ("resultant.load", Measure::Force),
+    ("resultant.reaction", Measure::Force),
+    ("bearing.allowable", Measure::Pressure),
+    ("bearing.length", Measure::Length),
+    ("bearing.average", Measure::Pressure),
+    ("bearing.average_at", Measure::Length),
+    ("bearing.max", Measure::Pressure),
+    ("bearing.area_exceeding", Measure::Area),
+    ("stresses.bottom.value", Measure::Pressure),
+    ("stresses.bottom.x", Measure::Length),
+    ("stresses.bottom.y", Measure::Length),
+    ("stresses.top.value", Measure::Pressure),
+    ("stresses.top.x", Measure::Length),
+    ("stresses.top.y", Measure::Length),
+    ("stresses.thickness", Measure::Length),
+    ("joints.*.line", Measure::Length),
+    ("joints.*.at", Measure::Length),
+    ("joints.*.transferred_force", Measure::Force),
+    ("joints.*.max_shear_per_length", Measure::ForcePerLength),
+    ("joints.*.max_moment_per_length", Measure::MomentPerLength),
+    ("joints.*.max_dowel_force", Measure::Force),
+    ("joints.*.max_bearing_stress", Measure::Pressure),
+];
+
+/// Apply `f` to the numbers at `keys` under `v` (a number, or an array of numbers; `*` walks
+/// every entry of an array); whether any number was there.
+fn convert(v: &mut serde_json::Value, keys: &[&str], f: &dyn Fn(f64) -> f64) -> bool {
+    use serde_json::Value;
+    match (keys.split_first(), v) {
+        (None, Value::Number(n)) => match n.as_f64().and_then(|x| serde_json::Number::from_f64(f(x))) {
+            Some(m) => {
+                *n = m;
+                true
+            }
+            None => false,
+        },
+        (None, Value::Array(a)) => a.iter_mut().fold(false, |any, x| convert(x, &[], f) || any),
+        (Some((&"*", rest)), Value::Array(a)) => {
+            a.iter_mut().fold(false, |any, x| convert(x, rest, f) || any)
+        }
+        (Some((k, rest)), Value::Object(o)) => o.get_mut(*k).is_some_and(|x| convert(x, rest, f)),
+        _ => false,
     }
 }

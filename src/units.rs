@@ -121,6 +121,94 @@ impl Quantity {
     }
 }
 
+/// What a reported value measures — a column of a CSV file, a field of the VTU, a key of
+/// summary.json: its unit in the scene's system, and in a dimensionless scene (no system) the
+/// paper's scale it is given in (L the half side, P the load scale, D the plate's rigidity).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Measure {
+    /// A position or a length: m | in | L.
+    Length,
+    /// A deflection or a gap: m | in | P L²/D.
+    Deflection,
+    /// A rotation: rad | rad | P L/D.
+    Rotation,
+    /// A pressure or a stress: Pa | psi | P/L².
+    Pressure,
+    /// A bending moment per length: N·m/m | lbf·in/in | P.
+    MomentPerLength,
+    /// A shear force per length: N/m | lbf/in | P/L.
+    ForcePerLength,
+    /// A force: N | lbf | P.
+    Force,
+    /// A bending rigidity or a moment: N·m | lbf·in | P L.
+    Moment,
+    /// An area: m² | in² | L².
+    Area,
+    /// An angle in degrees, the same in every system.
+    Degrees,
+    /// A pure number (a ratio, a dimensionless group, a count).
+    Number,
+}
+
+impl Measure {
+    /// The value in `system` (None: a dimensionless scene, whose values are already in the
+    /// paper's scales) of `si`, a value in SI base units (or in those scales).
+    pub fn from_si(self, system: Option<UnitSystem>, si: f64) -> f64 {
+        match (system, self.quantity()) {
+            (Some(s), Some(q)) => q.from_si(s, si),
+            (Some(UnitSystem::Us), None) if self == Measure::Moment => {
+                si / (POUND_FORCE * INCH)
+            }
+            (Some(UnitSystem::Us), None) if self == Measure::Area => si / (INCH * INCH),
+            _ => si,
+        }
+    }
+
+    /// The unit's symbol in `system`; in a dimensionless scene (None) the paper's scale, and
+    /// "-" for a pure number.
+    pub fn unit(self, system: Option<UnitSystem>) -> &'static str {
+        match (system, self) {
+            (_, Measure::Degrees) => "°",
+            (_, Measure::Number) => "-",
+            (Some(_), Measure::Rotation) => "rad",
+            (Some(UnitSystem::Si), Measure::Moment) => "N·m",
+            (Some(UnitSystem::Us), Measure::Moment) => "lbf·in",
+            (Some(UnitSystem::Si), Measure::Area) => "m²",
+            (Some(UnitSystem::Us), Measure::Area) => "in²",
+            (Some(s), m) => m.quantity().map_or("-", |q| q.unit(s)),
+            (None, Measure::Length) => "L",
+            (None, Measure::Deflection) => "P·L²/D",
+            (None, Measure::Rotation) => "P·L/D",
+            (None, Measure::Pressure) => "P/L²",
+            (None, Measure::MomentPerLength | Measure::Force) => "P",
+            (None, Measure::ForcePerLength) => "P/L",
+            (None, Measure::Moment) => "P·L",
+            (None, Measure::Area) => "L²",
+        }
+    }
+
+    /// A column's header: its name and, in brackets, its unit (`w [in]`, `V [-]`).
+    pub fn header(self, name: &str, system: Option<UnitSystem>) -> String {
+        format!("{name} [{}]", self.unit(system))
+    }
+
+    /// The scene quantity of the same unit, where there is one.
+    fn quantity(self) -> Option<Quantity> {
+        match self {
+            Measure::Length | Measure::Deflection => Some(Quantity::Length),
+            Measure::Pressure => Some(Quantity::Pressure),
+            Measure::MomentPerLength => Some(Quantity::MomentPerLength),
+            Measure::ForcePerLength => Some(Quantity::ForcePerLength),
+            Measure::Force => Some(Quantity::Force),
+            Measure::Rotation
+            | Measure::Moment
+            | Measure::Area
+            | Measure::Degrees
+            | Measure::Number => None,
+        }
+    }
+}
+
 fn pick(si: bool, a: &'static str, b: &'static str) -> &'static str {
     if si {
         a
@@ -189,5 +277,24 @@ mod tests {
             assert!(close(back, 123.456, 1e-15), "{q:?} round trip {back}");
             assert_eq!(q.to_si(UnitSystem::Si, 7.5), 7.5);
         }
+    }
+
+    /// Reported values: a moment of 1 lbf·in is 0.112 984 829 N·m, a square inch 6.4516 cm²
+    /// (definitions), a deflection of 1 mm is 0.039 370 in, and a dimensionless scene's values
+    /// pass unchanged with the paper's scales as units.
+    #[test]
+    fn reported_values_convert_by_the_same_definitions() {
+        let us = Some(UnitSystem::Us);
+        let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs();
+        assert!(close(Measure::Moment.from_si(us, 0.112_984_829_027_616_7), 1.0));
+        assert!(close(Measure::Area.from_si(us, 6.4516e-4), 1.0));
+        assert!(close(Measure::Deflection.from_si(us, 1e-3), 1.0 / 25.4));
+        assert!(close(Measure::Pressure.from_si(us, 6_894.757_293_168_361), 1.0));
+        assert_eq!(Measure::Rotation.from_si(us, 0.25), 0.25);
+        assert_eq!(Measure::Pressure.from_si(None, 0.25), 0.25);
+        assert_eq!(Measure::Deflection.header("w", us), "w [in]");
+        assert_eq!(Measure::Pressure.header("sigma", None), "sigma [P/L²]");
+        assert_eq!(Measure::Number.header("V", Some(UnitSystem::Si)), "V [-]");
+        assert_eq!(Measure::MomentPerLength.unit(Some(UnitSystem::Si)), "N·m/m");
     }
 }

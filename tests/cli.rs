@@ -108,8 +108,13 @@ fn bundled_examples_run_and_write_their_files() {
         }
         let header = std::fs::read_to_string(out.join("nodes.csv")).expect("read");
         assert!(
-            header
-                .starts_with("x,y,s,t,w,psi_x,psi_y,pressure,gap,V,sigma,s1_bottom,s1_top,contact"),
+            header.starts_with(
+                "x [m],y [m],s [-],t [-],w [m],psi_x [rad],psi_y [rad],pressure [Pa],gap [m],V [-],\
+                 sigma [-],s1_bottom [Pa],s1_top [Pa],contact [-]"
+            ) || header.starts_with(
+                "x [L],y [L],s [-],t [-],w [P·L²/D],psi_x [P·L/D],psi_y [P·L/D],pressure [P/L²],\
+                 gap [P·L²/D],V [-],sigma [-],s1_bottom [P/L²],s1_top [P/L²],contact [-]"
+            ),
             "{name}: nodes.csv columns"
         );
         let qp = liftoff(&[

@@ -83,7 +83,8 @@ fn the_bar_constants_are_the_direct_beam_solution() {
 /// Lessels 1925), written out here from the file's own force column — so it checks what the
 /// file reports, not only the library's function. A 6 m × 3 m slab on Winkler, the doweled
 /// joint x = 0 (32 mm bars every 0.3 m, 6 mm opening), 200 kN beside it, bonded. The CSV has
-/// 10 significant digits, so each of F and σ_b is good to 5e-10: 2e-9 asserted. The summary's
+/// 13 significant digits, so each of F and σ_b is good to 5e-13; 2e-9 asserted covers the
+/// formula's own round-off. The summary's
 /// largest bearing stress is the largest row's.
 #[test]
 fn dowels_csv_bearing_stress_is_fribergs_formula() {
@@ -101,7 +102,7 @@ opening = 0.006\nsupport_modulus = 4.07e11\nspacing = 0.3\n\
     let mut lines = csv.lines();
     let header: Vec<&str> = lines.next().expect("header").split(',').collect();
     let col = |name: &str| header.iter().position(|h| *h == name).expect(name);
-    let (cf, cs) = (col("force"), col("bearing_stress"));
+    let (cf, cs) = (col("force [N]"), col("bearing_stress [Pa]"));
     // Friberg, from the source: the bar's constants.
     let (d, e_d, k_s, z): (f64, f64, f64, f64) = (0.032, 200e9, 4.07e11, 0.006);
     let i_d = std::f64::consts::PI * d.powi(4) / 64.0;
@@ -167,7 +168,7 @@ poissons_ratio = 0.2\n[foundation]\nmodel = \"winkler\"\nmodulus = {k:e}\n\
     let csv = std::fs::read_to_string(dir.path().join("dowels.csv")).expect("dowels.csv");
     let mut lines = csv.lines();
     let header: Vec<&str> = lines.next().expect("header").split(',').collect();
-    let cf = header.iter().position(|h| *h == "force").expect("force");
+    let cf = header.iter().position(|h| *h == "force [N]").expect("force");
     let rows: Vec<f64> = lines
         .map(|l| {
             l.split(',')

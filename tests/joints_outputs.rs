@@ -169,7 +169,7 @@ fn the_joint_hands_across_what_the_unloaded_panel_soil_carries() {
     let header: Vec<&str> = lines.next().expect("header").split(',').collect();
     let col = header
         .iter()
-        .position(|h| *h == "force")
+        .position(|h| *h == "force [N]")
         .expect("force column");
     let total: f64 = lines
         .map(|l| {
@@ -186,7 +186,7 @@ fn the_joint_hands_across_what_the_unloaded_panel_soil_carries() {
     let transferred = json["joints"][0]["transferred_force"]
         .as_f64()
         .expect("number");
-    // The CSV's forces are printed with 10 significant digits.
+    // The CSV's forces are printed with 13 significant digits.
     assert!(
         (total - transferred).abs() <= 1e-8 * load,
         "csv {total} vs json {transferred}"

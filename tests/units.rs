@@ -70,13 +70,13 @@ fn a_us_scene_equals_its_si_twin() {
             .field
             .columns()
             .iter()
-            .map(|(n, c)| (format!("nodes.{n}"), c.to_vec()))
+            .map(|(n, _, c)| (format!("nodes.{n}"), c.to_vec()))
             .collect();
         v.extend(
             r.elements
                 .columns()
                 .iter()
-                .map(|(n, c)| (format!("elements.{n}"), c.to_vec())),
+                .map(|(n, _, c)| (format!("elements.{n}"), c.to_vec())),
         );
         v
     };
@@ -227,4 +227,219 @@ fn unit_slips_warn_and_still_solve() {
     )
     .expect("example");
     assert!(bundled.warnings.is_empty(), "{:?}", bundled.warnings);
+}
+
+/// Two doweled slabs in US units, unbonded, a wheel beside the joint and the slabs curled up at
+/// night, with a bearing check: every file the solve writes carries physical values.
+const JOINTED_US: &str = r#"title = "Two doweled slabs"
+units = "us"
+[plate]
+length = 288.0
+width = 144.0
+thickness = 10.0
+youngs_modulus = 4.0e6
+poissons_ratio = 0.15
+thermal_expansion = 5.5e-6
+[foundation]
+model = "winkler"
+modulus = 150.0
+allowable_pressure = 12.0
+bearing_length = 12.0
+[[joint]]
+x = 0.0
+kind = "dowels"
+name = "T1"
+diameter = 1.25
+youngs_modulus = 29.0e6
+opening = 0.25
+support_modulus = 1.5e6
+spacing = 12.0
+[[load]]
+kind = "point"
+x = -10.0
+y = -50.0
+force = 9000.0
+[[load]]
+kind = "temperature"
+difference = -18.0
+[mesh]
+elements = [48, 24]
+[solver]
+contact = "unbonded"
+"#;
+
+/// SI per unit of each unit the files print, from the definitions (1 in = 0.0254 m, 1 lbf =
+/// 4.448 221 615 260 5 N), written out here and not taken from liftoff; an SI unit is 1.
+fn si_per(unit: &str) -> f64 {
+    const IN: f64 = 0.0254;
+    const LBF: f64 = 4.448_221_615_260_5;
+    match unit {
+        "in" => IN,
+        "in²" => IN * IN,
+        "psi" => LBF / (IN * IN),
+        "lbf" | "lbf·in/in" => LBF,
+        "lbf/in" => LBF / IN,
+        "lbf·in" => LBF * IN,
+        "m" | "m²" | "Pa" | "N" | "N·m/m" | "N/m" | "N·m" | "rad" | "°" | "-" => 1.0,
+        other => panic!("a unit the test does not know: `{other}`"),
+    }
+}
+
+/// The SI unit a US unit's column must have in the SI twin's file.
+fn si_unit(us: &str) -> &str {
+    match us {
+        "in" => "m",
+        "in²" => "m²",
+        "psi" => "Pa",
+        "lbf" => "N",
+        "lbf·in/in" => "N·m/m",
+        "lbf/in" => "N/m",
+        "lbf·in" => "N·m",
+        same => same,
+    }
+}
+
+/// A CSV file's columns: (name, unit, cells), the unit from the header's `[…]`.
+fn columns(path: &std::path::Path) -> Vec<(String, String, Vec<String>)> {
+    let mut r = csv::Reader::from_path(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let header: Vec<(String, String)> = r
+        .headers()
+        .expect("header")
+        .iter()
+        .map(|h| match h.split_once(" [") {
+            Some((n, u)) => (n.to_string(), u.trim_end_matches(']').to_string()),
+            None => (h.to_string(), String::new()),
+        })
+        .collect();
+    let rows: Vec<csv::StringRecord> = r.records().map(|x| x.expect("row")).collect();
+    header
+        .into_iter()
+        .enumerate()
+        .map(|(k, (n, u))| (n, u, rows.iter().map(|row| row[k].to_string()).collect()))
+        .collect()
+}
+
+/// Every file of a US scene is its SI twin's after conversion by the units its headers (and
+/// summary.json's `units`) name, to 1e-9 of each column's largest value (the solves agree to
+/// round-off, ~1e-15, and the CSVs print 13 significant digits, 5e-13), and the units are the
+/// twin's in the other system. plate.vtu is written from the same converted fields as nodes.csv
+/// and elements.csv (`output::stage_all`). The SI twin is converted by this test from the
+/// definitions, not by liftoff.
+#[test]
+fn every_file_of_a_us_scene_is_its_si_twins_after_conversion() {
+    const IN: f64 = 0.0254;
+    const LBF: f64 = 4.448_221_615_260_5;
+    let psi = LBF / (IN * IN);
+    let si = JOINTED_US
+        .replace("units = \"us\"\n", "")
+        .replace("length = 288.0", &format!("length = {}", 288.0 * IN))
+        .replace("width = 144.0", &format!("width = {}", 144.0 * IN))
+        .replace("thickness = 10.0", &format!("thickness = {}", 10.0 * IN))
+        .replace("youngs_modulus = 4.0e6", &format!("youngs_modulus = {}", 4.0e6 * psi))
+        .replace("thermal_expansion = 5.5e-6", &format!("thermal_expansion = {}", 5.5e-6 * 1.8))
+        .replace("modulus = 150.0", &format!("modulus = {}", 150.0 * psi / IN))
+        .replace("allowable_pressure = 12.0", &format!("allowable_pressure = {}", 12.0 * psi))
+        .replace("bearing_length = 12.0", &format!("bearing_length = {}", 12.0 * IN))
+        .replace("diameter = 1.25", &format!("diameter = {}", 1.25 * IN))
+        .replace("youngs_modulus = 29.0e6", &format!("youngs_modulus = {}", 29.0e6 * psi))
+        .replace("opening = 0.25", &format!("opening = {}", 0.25 * IN))
+        .replace("support_modulus = 1.5e6", &format!("support_modulus = {}", 1.5e6 * psi / IN))
+        .replace("spacing = 12.0", &format!("spacing = {}", 12.0 * IN))
+        .replace("x = -10.0", &format!("x = {}", -10.0 * IN))
+        .replace("y = -50.0", &format!("y = {}", -50.0 * IN))
+        .replace("force = 9000.0", &format!("force = {}", 9000.0 * LBF))
+        .replace("difference = -18.0", "difference = -10.0");
+    let write = |text: &str| {
+        let p = Problem::from_toml(text).expect("scene");
+        let a = analyse(&p).expect("solve");
+        assert!(a.summary.converged, "{}", a.summary.status);
+        let dir = tempfile::tempdir().expect("tempdir");
+        liftoff::output::write_all(dir.path(), &p.model, &a.report, &a.summary).expect("files");
+        dir
+    };
+    let (us, si) = (write(JOINTED_US), write(&si));
+    for file in [
+        "nodes.csv",
+        "elements.csv",
+        "profiles.csv",
+        "joints.csv",
+        "dowels.csv",
+    ] {
+        let (a, b) = (columns(&us.path().join(file)), columns(&si.path().join(file)));
+        assert_eq!(a.len(), b.len(), "{file}: columns");
+        for ((name, unit, x), (name_si, unit_si, y)) in a.iter().zip(&b) {
+            assert_eq!(name, name_si, "{file}");
+            assert_eq!(si_unit(unit), unit_si, "{file}: {name}'s units");
+            let numbers = |v: &[String]| -> Option<Vec<f64>> {
+                v.iter().map(|c| c.parse::<f64>().ok()).collect()
+            };
+            // Words and identifiers (a joint's name, a row or bar number) have no unit: equal.
+            if unit.is_empty() {
+                assert!(
+                    numbers(x).is_none() || ["minus_node", "plus_node", "bar"].contains(&&**name),
+                    "{file}: the numbers of `{name}` have no unit"
+                );
+                assert_eq!(x, y, "{file}: {name}");
+                continue;
+            }
+            let (Some(x), Some(y)) = (numbers(x), numbers(y)) else {
+                panic!("{file}: {name} [{unit}] is not all numbers");
+            };
+            let f = si_per(unit);
+            let peak = y.iter().fold(0.0_f64, |m, v| m.max(v.abs())).max(1e-300);
+            let off = x
+                .iter()
+                .zip(&y)
+                .fold(0.0_f64, |m, (p, q)| m.max((p * f - q).abs()))
+                / peak;
+            assert!(off < 1e-9, "{file}: {name} [{unit}] off by {off:e} of its peak");
+        }
+    }
+    // summary.json: every key its `units` names, and the dimensionless results.
+    let json = |dir: &tempfile::TempDir| -> serde_json::Value {
+        let text = std::fs::read_to_string(dir.path().join("summary.json")).expect("summary");
+        serde_json::from_str(&text).expect("json")
+    };
+    let (a, b) = (json(&us), json(&si));
+    assert_eq!(a["units"]["system"], "us");
+    assert_eq!(b["units"]["system"], "si");
+    let units = a["units"].as_object().expect("units");
+    assert!(units.len() > 20, "{units:?}");
+    let at = |v: &serde_json::Value, path: &str| -> Vec<f64> {
+        let mut nodes = vec![v.clone()];
+        for key in path.split('.') {
+            nodes = nodes
+                .into_iter()
+                .flat_map(|n| match (key, n) {
+                    ("*", serde_json::Value::Array(a)) => a,
+                    (k, n) => vec![n[k].clone()],
+                })
+                .collect();
+        }
+        nodes
+            .iter()
+            .flat_map(|n| match n {
+                serde_json::Value::Array(a) => a.iter().filter_map(|x| x.as_f64()).collect(),
+                n => n.as_f64().into_iter().collect::<Vec<f64>>(),
+            })
+            .collect()
+    };
+    let mut checked = 0;
+    for (path, unit) in units.iter().filter(|(k, _)| *k != "system") {
+        let unit = unit.as_str().expect("a unit");
+        assert_eq!(si_unit(unit), b["units"][path], "summary {path}'s units");
+        let (x, y) = (at(&a, path), at(&b, path));
+        assert!(!y.is_empty() && x.len() == y.len(), "summary {path}: {x:?} {y:?}");
+        let peak = y.iter().fold(0.0_f64, |m, v| m.max(v.abs())).max(1e-300);
+        for (p, q) in x.iter().zip(&y) {
+            let off = (p * si_per(unit) - q).abs() / peak;
+            assert!(off < 1e-9, "summary {path}: {p} {unit} against {q}: {off:e}");
+        }
+        checked += 1;
+    }
+    for path in ["V_max", "V_center", "V_corner", "contact_fraction", "contact_radius"] {
+        let (x, y) = (at(&a, path), at(&b, path));
+        assert!((x[0] - y[0]).abs() <= 1e-9 * y[0].abs(), "summary {path}: {x:?} {y:?}");
+    }
+    assert!(checked >= 25, "{checked} physical keys compared");
 }

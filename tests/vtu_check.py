@@ -28,9 +28,9 @@ import numpy as np
 
 VTK_QUAD = 9  # vtkCellType.h
 
-# The CSV tables are written with 10 significant digits ("%.9e"): rounding to them changes a
-# value by at most 5e-10 relative; the .vtu holds the exact doubles. rtol 1e-9 covers the
-# rounding with a factor 2 of margin; atol covers values the CSV prints as 0.
+# The CSV tables are written with 13 significant digits ("%.12e"): rounding to them changes a
+# value by at most 5e-13 relative; the .vtu holds the exact doubles. rtol 1e-9 covers the
+# rounding with a wide margin; atol covers values the CSV prints as 0.
 RTOL, ATOL = 1e-9, 1e-300
 
 POINT_ARRAYS = {
@@ -69,7 +69,8 @@ def max_rel(a, b):
 
 def read_csv(path):
     with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
+        # Headers carry their unit, `x [m]`: read by name.
+        rows = [{k.split(" [")[0]: v for k, v in r.items()} for r in csv.DictReader(f)]
     return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
 
 

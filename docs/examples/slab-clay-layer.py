@@ -19,8 +19,10 @@ def load(name):
     L, P, D = ph["half_length"], ph["force"], ph["rigidity"]
     wscale = P * L * L / D * 1e3            # mm per unit V
     pscale = P / (mu * L * L) * 1e-3        # kPa per unit σ
-    rows = [r for r in csv.DictReader(open(os.path.join(out, name, "profiles.csv")))
-            if r["line"] == "diagonal"]
+    # Headers carry their unit (`V [-]`): keyed by the name alone.
+    rows = [{k.split(" [")[0]: v for k, v in r.items()}
+            for r in csv.DictReader(open(os.path.join(out, name, "profiles.csv")))]
+    rows = [r for r in rows if r["line"] == "diagonal"]
     # distance from the centre along the diagonal, m (coord is s along it, −1 … 1)
     half_diag = (L * L + (mu * L) ** 2) ** 0.5
     d = [float(r["coord"]) * half_diag for r in rows]

@@ -12,6 +12,7 @@ use std::time::Duration;
 
 use liftoff::scene::{Overrides, Problem, SceneFile};
 use liftoff::study::{stability_plan, stability_run, EpsSweepOptions, TradeoffOptions};
+use liftoff::units::{Measure, UnitSystem};
 use liftoff::{Error, ErrorKind, Monitor, Outcome, Progress, Source};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
@@ -215,17 +216,22 @@ fn check(py: Python<'_>, kind: &str, text: &str, options: &str) -> PyResult<Stri
 }
 
 /// The nodal and element fields of a report, as f64 bytes.
-fn fields<'py>(py: Python<'py>, r: &liftoff::post::Report) -> PyResult<Bound<'py, PyDict>> {
+/// In the scene's unit system (`system`; None for a dimensionless scene), as the CLI's files.
+fn fields<'py>(
+    py: Python<'py>,
+    r: &liftoff::post::Report,
+    system: Option<UnitSystem>,
+) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
-    let f = &r.field;
-    let e = &r.elements;
+    let f = &r.field.in_units(system);
+    let e = &r.elements.in_units(system);
     // The columns of nodes.csv and elements.csv, by the same names and in the same order.
     let contact: Vec<f64> = f.contact.iter().map(|&c| f64::from(u8::from(c))).collect();
     // The faces' stresses recovered at the nodes keep their element-centre twins' names free.
     let mut nodal: Vec<(&str, &[f64])> = f
         .columns()
         .iter()
-        .map(|&(name, v)| match name {
+        .map(|&(name, _, v)| match name {
             "s1_bottom" => ("s1_bottom_nodes", v),
             "s1_top" => ("s1_top_nodes", v),
             _ => (name, v),
@@ -235,7 +241,7 @@ fn fields<'py>(py: Python<'py>, r: &liftoff::post::Report) -> PyResult<Bound<'py
     let element: Vec<(&str, &[f64])> = e
         .columns()
         .iter()
-        .map(|&(name, v)| match name {
+        .map(|&(name, _, v)| match name {
             "x" => ("element_x", v),
             "y" => ("element_y", v),
             _ => (name, v),
@@ -256,7 +262,7 @@ fn fields<'py>(py: Python<'py>, r: &liftoff::post::Report) -> PyResult<Bound<'py
         d.set_item("element_shape", (f.ny, f.nx))?;
     }
     d.set_item("joint_nodes", joint_nodes(py, f)?)?;
-    d.set_item("dowels", dowels(py, &r.joints)?)?;
+    d.set_item("dowels", dowels(py, &r.joints, system)?)?;
     Ok(d)
 }
 
@@ -298,6 +304,7 @@ fn joint_nodes<'py>(py: Python<'py>, f: &liftoff::post::FullField) -> PyResult<B
 fn dowels<'py>(
     py: Python<'py>,
     joints: &[liftoff::post::JointReport],
+    system: Option<UnitSystem>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
     let bytes = |v: &[f64]| v.iter().flat_map(|x| x.to_le_bytes()).collect::<Vec<u8>>();
@@ -307,17 +314,19 @@ fn dowels<'py>(
         .flat_map(|(k, j)| j.dowels.iter().map(move |b| (k, b)))
         .collect();
     type Pick = fn(&(usize, &liftoff::post::DowelForce)) -> f64;
-    let columns: [(&str, Pick); 7] = [
-        ("joint", |r| r.0 as f64),
-        ("bar", |r| r.1.bar as f64),
-        ("x", |r| r.1.x),
-        ("y", |r| r.1.y),
-        ("jump", |r| r.1.jump),
-        ("force", |r| r.1.force),
-        ("bearing_stress", |r| r.1.bearing_stress.unwrap_or(f64::NAN)),
+    let columns: [(&str, Measure, Pick); 7] = [
+        ("joint", Measure::Number, |r| r.0 as f64),
+        ("bar", Measure::Number, |r| r.1.bar as f64),
+        ("x", Measure::Length, |r| r.1.x),
+        ("y", Measure::Length, |r| r.1.y),
+        ("jump", Measure::Deflection, |r| r.1.jump),
+        ("force", Measure::Force, |r| r.1.force),
+        ("bearing_stress", Measure::Pressure, |r| {
+            r.1.bearing_stress.unwrap_or(f64::NAN)
+        }),
     ];
-    for (name, pick) in columns {
-        let v: Vec<f64> = rows.iter().map(pick).collect();
+    for (name, m, pick) in columns {
+        let v: Vec<f64> = rows.iter().map(|r| m.from_si(system, pick(r))).collect();
         d.set_item(name, PyBytes::new(py, &bytes(&v)))?;
     }
     Ok(d)
@@ -331,6 +340,8 @@ fn envelope_fields<'py>(
     env: &liftoff::combination::Envelope,
 ) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
+    // In the scene's unit system, as envelope_*.csv.
+    let env = &env.reported();
     let bytes = |v: &[f64]| v.iter().flat_map(|x| x.to_le_bytes()).collect::<Vec<u8>>();
     let index = |v: &[usize]| v.iter().map(|&i| i as f64).collect::<Vec<f64>>();
     for (group, fields) in [("nodes", &env.nodes), ("elements", &env.elements)] {
@@ -373,14 +384,18 @@ fn solve<'py>(
     match &outcome {
         Outcome::Single(a) => Ok((
             doc,
-            fields(py, &a.report)?.into_any(),
+            fields(py, &a.report, a.summary.physical.map(|p| p.units))?.into_any(),
             py.None().into_bound(py),
         )),
         Outcome::Combinations(c) => {
             let list = PyList::empty(py);
             for r in &c.runs {
                 match &r.outcome {
-                    Ok(o) => list.append(fields(py, &o.report)?)?,
+                    Ok(o) => list.append(fields(
+                        py,
+                        &o.report,
+                        o.summary.physical.map(|p| p.units),
+                    )?)?,
                     Err(_) => list.append(py.None())?,
                 }
             }

@@ -46,7 +46,8 @@ def cli_json(*args: str) -> dict:
 def read_csv(path: pathlib.Path) -> dict:
     with open(path, newline="") as f:
         rows = list(csv.DictReader(f))
-    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+    # Headers carry their unit (`w [m]`): keyed by the name alone.
+    return {k.split(" [")[0]: np.array([float(r[k]) for r in rows]) for k in rows[0]}
 
 
 # -- the must-show line ---------------------------------------------------------------
@@ -67,7 +68,7 @@ def test_arrays_equal_the_cli_csv(name, tmp_path):
     assert r.returncode == 0, r.stderr
     nodes = read_csv(tmp_path / "nodes.csv")
     elements = read_csv(tmp_path / "elements.csv")
-    # The CSV prints 10 significant digits ({:.9e}): equal to that round-off.
+    # The CSV prints 13 significant digits ({:.12e}): equal to that round-off.
     for key, arr in [("x", s.x), ("y", s.y), ("w", s.w), ("psi_x", s.psi_x), ("psi_y", s.psi_y),
                      ("pressure", s.pressure), ("gap", s.gap), ("V", s.V), ("sigma", s.sigma)]:
         ref = nodes[key]
@@ -613,8 +614,9 @@ def test_jointed_arrays_equal_the_cli_joints_csv(tmp_path):
     r = cli("solve", str(scene), "--out", str(tmp_path / "out"))
     assert r.returncode == 0, r.stderr
     nodes = read_csv(tmp_path / "out" / "nodes.csv")
-    joints = read_rows(tmp_path / "out" / "joints.csv")
-    bars = read_rows(tmp_path / "out" / "dowels.csv")
+    unitless = lambda rows: [{k.split(" [")[0]: v for k, v in r.items()} for r in rows]
+    joints = unitless(read_rows(tmp_path / "out" / "joints.csv"))
+    bars = unitless(read_rows(tmp_path / "out" / "dowels.csv"))
     # Numeric columns (the joint's name aside); an empty bearing stress is NaN.
     dowels = {k: np.array([float(r[k]) if r[k] else math.nan for r in bars])
               for k in bars[0] if k != "joint"}
@@ -623,7 +625,7 @@ def test_jointed_arrays_equal_the_cli_joints_csv(tmp_path):
     extra = s.joint_nodes
     # One x-joint (ny copies) and one y-joint (nx copies) crossing: one more copy at the crossing.
     assert len(extra["w"]) == ny + nx + 1 == len(nodes["w"]) - n_grid
-    # The CSV prints 10 significant digits ({:.9e}): equal to that round-off.
+    # The CSV prints 13 significant digits ({:.12e}): equal to that round-off.
     close = lambda a, b: np.allclose(a, b, rtol=1e-9, atol=1e-12 * max(np.abs(b).max(), 1e-300))
     for key in ("w", "psi_x", "psi_y", "pressure", "gap"):
         assert close(getattr(s, key).ravel(), nodes[key][:n_grid]), key

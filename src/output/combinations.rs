@@ -62,6 +62,8 @@ pub fn write_combinations(dir: &Path, c: &Combinations, env: &Envelope) -> Resul
     for part in parts {
         st.absorb(part?);
     }
+    // The files report the scene's unit system; the maps above scale the SI envelope.
+    let reported = env.reported();
     let json = EnvelopeJson {
         combinations: c
             .runs
@@ -79,7 +81,7 @@ pub fn write_combinations(dir: &Path, c: &Combinations, env: &Envelope) -> Resul
             .collect(),
         assemble_s: c.assemble_s,
         total_s: c.total_s,
-        extremes: &env.quantities,
+        extremes: &reported.quantities,
     };
     let text = serde_json::to_string_pretty(&json)
         .map_err(|e| Error::numerical("envelope", format!("cannot serialise: {e}")))?;
@@ -87,17 +89,18 @@ pub fn write_combinations(dir: &Path, c: &Combinations, env: &Envelope) -> Resul
 
     let p = st.path("envelope.csv");
     let mut w = csv::Writer::from_path(&p).map_err(csv_err(&p))?;
+    let length = crate::units::Measure::Length.unit(env.system);
     w.write_record([
-        "quantity",
-        "unit",
-        "extreme",
-        "value",
-        "combination",
-        "x",
-        "y",
+        "quantity".to_string(),
+        "unit".to_string(),
+        "extreme".to_string(),
+        "value".to_string(),
+        "combination".to_string(),
+        format!("x [{length}]"),
+        format!("y [{length}]"),
     ])
     .map_err(csv_err(&p))?;
-    for q in &env.quantities {
+    for q in &reported.quantities {
         for (which, e) in [("max", &q.max), ("min", &q.min)] {
             w.write_record([
                 q.quantity.to_string(),
@@ -117,11 +120,11 @@ pub fn write_combinations(dir: &Path, c: &Combinations, env: &Envelope) -> Resul
     })?;
     stage_envelope_maps(&mut st, c, env)?;
     for (file, xy, fields) in [
-        ("envelope_nodes.csv", &env.node_xy, &env.nodes),
-        ("envelope_elements.csv", &env.element_xy, &env.elements),
+        ("envelope_nodes.csv", &reported.node_xy, &reported.nodes),
+        ("envelope_elements.csv", &reported.element_xy, &reported.elements),
     ] {
         let p = st.path(file);
-        write_points(&p, xy, fields, &env.names)?;
+        write_points(&p, xy, fields, &env.names, env.system)?;
     }
     st.commit()
 }
@@ -239,9 +242,11 @@ fn write_points(
     xy: &[(f64, f64)],
     fields: &[(&'static str, &'static str, PointEnvelope)],
     names: &[String],
+    system: Option<crate::units::UnitSystem>,
 ) -> Result<()> {
     let mut w = csv::Writer::from_path(p).map_err(csv_err(p))?;
-    let mut header = vec!["x".to_string(), "y".to_string()];
+    let length = crate::units::Measure::Length.unit(system);
+    let mut header = vec![format!("x [{length}]"), format!("y [{length}]")];
     for (n, u, _) in fields {
         header.push(format!("{n}_max [{u}]"));
         header.push(format!("{n}_max_by"));

@@ -8,6 +8,7 @@ use std::path::Path;
 use crate::error::{Error, Result};
 use crate::output::chart::Units;
 use crate::post::{JointReport, Side};
+use crate::units::{Measure, UnitSystem};
 
 fn csv_err(path: &Path, e: csv::Error) -> Error {
     Error::Io {
@@ -17,7 +18,7 @@ fn csv_err(path: &Path, e: csv::Error) -> Error {
 }
 
 /// A CSV file from its header and rows of formatted cells.
-fn write_csv(path: &Path, header: &[&str], rows: Vec<Vec<String>>) -> Result<()> {
+fn write_csv(path: &Path, header: &[String], rows: Vec<Vec<String>>) -> Result<()> {
     let mut w = csv::Writer::from_path(path).map_err(|e| csv_err(path, e))?;
     w.write_record(header).map_err(|e| csv_err(path, e))?;
     for rec in rows {
@@ -29,47 +30,56 @@ fn write_csv(path: &Path, header: &[&str], rows: Vec<Vec<String>>) -> Result<()>
     })
 }
 
-fn num(v: f64) -> String {
-    format!("{v:.9e}")
+/// Headers: a word column's name as it is, a measured one with its unit in `system`.
+fn headers(columns: &[(&str, Option<Measure>)], system: Option<UnitSystem>) -> Vec<String> {
+    columns
+        .iter()
+        .map(|&(name, m)| m.map_or(name.to_string(), |m| m.header(name, system)))
+        .collect()
 }
 
 /// joints.csv: joint, kind, x, y, minus_node, plus_node (the two copies' rows in nodes.csv, 0
 /// for the first data row), w_minus, w_plus, jump (w⁻ − w⁺), shear_per_length,
 /// moment_per_length, pressure_minus, pressure_plus — one row per node pair along each joint,
-/// in order along it.
-pub fn write_joints(path: &Path, joints: &[JointReport]) -> Result<()> {
-    let header = [
-        "joint",
-        "kind",
-        "x",
-        "y",
-        "minus_node",
-        "plus_node",
-        "w_minus",
-        "w_plus",
-        "jump",
-        "shear_per_length",
-        "moment_per_length",
-        "pressure_minus",
-        "pressure_plus",
-    ];
+/// in order along it; the values in `system`'s units, each header with its unit.
+pub fn write_joints(path: &Path, joints: &[JointReport], system: Option<UnitSystem>) -> Result<()> {
+    use Measure::{Deflection as D, Length as L, Pressure as P};
+    let header = headers(
+        &[
+            ("joint", None),
+            ("kind", None),
+            ("x", Some(L)),
+            ("y", Some(L)),
+            ("minus_node", None),
+            ("plus_node", None),
+            ("w_minus", Some(D)),
+            ("w_plus", Some(D)),
+            ("jump", Some(D)),
+            ("shear_per_length", Some(Measure::ForcePerLength)),
+            ("moment_per_length", Some(Measure::MomentPerLength)),
+            ("pressure_minus", Some(P)),
+            ("pressure_plus", Some(P)),
+        ],
+        system,
+    );
+    let num = |m: Measure, v: f64| format!("{:.12e}", m.from_si(system, v));
     let mut rows = Vec::new();
     for j in joints {
         for n in &j.nodes {
             rows.push(vec![
                 j.name.clone(),
                 j.kind.name().to_string(),
-                num(n.x),
-                num(n.y),
+                num(L, n.x),
+                num(L, n.y),
                 n.minus.to_string(),
                 n.plus.to_string(),
-                num(n.w_minus),
-                num(n.w_plus),
-                num(n.jump),
-                num(n.shear_per_length),
-                num(n.moment_per_length),
-                num(n.pressure_minus),
-                num(n.pressure_plus),
+                num(D, n.w_minus),
+                num(D, n.w_plus),
+                num(D, n.jump),
+                num(Measure::ForcePerLength, n.shear_per_length),
+                num(Measure::MomentPerLength, n.moment_per_length),
+                num(P, n.pressure_minus),
+                num(P, n.pressure_plus),
             ]);
         }
     }
@@ -77,20 +87,34 @@ pub fn write_joints(path: &Path, joints: &[JointReport]) -> Result<()> {
 }
 
 /// dowels.csv: joint, bar (its index in the joint's positions), x, y, jump, force,
-/// bearing_stress (empty when the bar's properties are not given).
-pub fn write_dowels(path: &Path, joints: &[JointReport]) -> Result<()> {
-    let header = ["joint", "bar", "x", "y", "jump", "force", "bearing_stress"];
+/// bearing_stress (empty when the bar's properties are not given); the values in `system`'s
+/// units, each header with its unit.
+pub fn write_dowels(path: &Path, joints: &[JointReport], system: Option<UnitSystem>) -> Result<()> {
+    use Measure::{Deflection as D, Force as F, Length as L, Pressure as P};
+    let header = headers(
+        &[
+            ("joint", None),
+            ("bar", None),
+            ("x", Some(L)),
+            ("y", Some(L)),
+            ("jump", Some(D)),
+            ("force", Some(F)),
+            ("bearing_stress", Some(P)),
+        ],
+        system,
+    );
+    let num = |m: Measure, v: f64| format!("{:.12e}", m.from_si(system, v));
     let mut rows = Vec::new();
     for j in joints {
         for d in &j.dowels {
             rows.push(vec![
                 j.name.clone(),
                 d.bar.to_string(),
-                num(d.x),
-                num(d.y),
-                num(d.jump),
-                num(d.force),
-                d.bearing_stress.map_or(String::new(), num),
+                num(L, d.x),
+                num(L, d.y),
+                num(D, d.jump),
+                num(F, d.force),
+                d.bearing_stress.map_or(String::new(), |b| num(P, b)),
             ]);
         }
     }

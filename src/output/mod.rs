@@ -228,22 +228,26 @@ pub fn stage_all(
     overlay: &chart::Overlay,
 ) -> Result<()> {
     st.write_text(&format!("{prefix}summary.json"), &summary.to_json()?)?;
+    // The files report the scene's unit system; the charts scale the SI fields themselves.
+    let system = summary.physical.map(|p| p.units);
+    let field = report.field.in_units(system);
+    let elements = report.elements.in_units(system);
     let p = st.path(&format!("{prefix}nodes.csv"));
-    tables::write_nodes(&p, &report.field)?;
+    tables::write_nodes(&p, &field, system)?;
     let p = st.path(&format!("{prefix}elements.csv"));
-    tables::write_elements(&p, &report.elements)?;
+    tables::write_elements(&p, &elements, system)?;
     let p = st.path(&format!("{prefix}profiles.csv"));
     tables::write_profiles(&p, &report.profiles)?;
     if !report.joints.is_empty() {
         let p = st.path(&format!("{prefix}joints.csv"));
-        joints::write_joints(&p, &report.joints)?;
+        joints::write_joints(&p, &report.joints, system)?;
         if report.joints.iter().any(|j| !j.dowels.is_empty()) {
             let p = st.path(&format!("{prefix}dowels.csv"));
-            joints::write_dowels(&p, &report.joints)?;
+            joints::write_dowels(&p, &report.joints, system)?;
         }
     }
     let p = st.path(&format!("{prefix}plate.vtu"));
-    vtk::write_vtu(&p, &report.field, &report.elements)?;
+    vtk::write_vtu(&p, &field, &elements)?;
     let title = format!("{} — {}", summary.title, summary.headline());
     let units = chart::Units::new(summary.physical, summary.dimensionless.mu);
     let p = st.path(&format!("{prefix}profiles.svg"));

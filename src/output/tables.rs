@@ -9,6 +9,7 @@ use crate::model::LoadReference;
 use crate::output::chart::Units;
 use crate::output::Summary;
 use crate::post::{ElementField, FullField, Profile};
+use crate::units::{Measure, UnitSystem};
 
 fn csv_err(path: &Path, e: csv::Error) -> Error {
     Error::Io {
@@ -17,15 +18,19 @@ fn csv_err(path: &Path, e: csv::Error) -> Error {
     }
 }
 
-/// nodes.csv: x,y,s,t,w,psi_x,psi_y,pressure,gap,V,sigma,s1_bottom,s1_top,contact (whole plate).
-pub fn write_nodes(path: &Path, f: &FullField) -> Result<()> {
+/// nodes.csv: x,y,s,t,w,psi_x,psi_y,pressure,gap,V,sigma,s1_bottom,s1_top,contact (whole plate),
+/// each header with its unit (`w [in]`); `f` in the units of `system` ([`FullField::in_units`]).
+pub fn write_nodes(path: &Path, f: &FullField, system: Option<UnitSystem>) -> Result<()> {
     let columns = f.columns();
-    let mut header: Vec<&str> = columns.iter().map(|(name, _)| *name).collect();
-    header.push("contact");
+    let mut header: Vec<String> = columns
+        .iter()
+        .map(|(name, m, _)| m.header(name, system))
+        .collect();
+    header.push(Measure::Number.header("contact", system));
     let rows = (0..f.x.len()).map(|i| {
         let mut rec: Vec<String> = columns
             .iter()
-            .map(|(_, c)| format!("{:.9e}", c[i]))
+            .map(|(_, _, c)| format!("{:.12e}", c[i]))
             .collect();
         rec.push(if f.contact[i] { "1" } else { "0" }.to_string());
         rec
@@ -33,21 +38,25 @@ pub fn write_nodes(path: &Path, f: &FullField) -> Result<()> {
     write_csv(path, &header, rows)
 }
 
-/// elements.csv: x,y,mx,my,mxy,qx,qy and the faces' stresses (sx_bottom … angle_top) at element centres.
-pub fn write_elements(path: &Path, e: &ElementField) -> Result<()> {
+/// elements.csv: x,y,mx,my,mxy,qx,qy and the faces' stresses (sx_bottom … angle_top) at element
+/// centres, each header with its unit; `e` in the units of `system`.
+pub fn write_elements(path: &Path, e: &ElementField, system: Option<UnitSystem>) -> Result<()> {
     let columns = e.columns();
-    let header: Vec<&str> = columns.iter().map(|(name, _)| *name).collect();
+    let header: Vec<String> = columns
+        .iter()
+        .map(|(name, m, _)| m.header(name, system))
+        .collect();
     let rows = (0..e.x.len()).map(|i| {
         columns
             .iter()
-            .map(|(_, c)| format!("{:.9e}", c[i]))
+            .map(|(_, _, c)| format!("{:.12e}", c[i]))
             .collect()
     });
     write_csv(path, &header, rows)
 }
 
 /// A CSV file from its header and rows of formatted cells.
-fn write_csv(path: &Path, header: &[&str], rows: impl Iterator<Item = Vec<String>>) -> Result<()> {
+fn write_csv(path: &Path, header: &[String], rows: impl Iterator<Item = Vec<String>>) -> Result<()> {
     let mut w = csv::Writer::from_path(path).map_err(|e| csv_err(path, e))?;
     w.write_record(header).map_err(|e| csv_err(path, e))?;
     for rec in rows {
@@ -59,20 +68,20 @@ fn write_csv(path: &Path, header: &[&str], rows: impl Iterator<Item = Vec<String
     })
 }
 
-/// profiles.csv: line,coord,s,t,V,sigma.
+/// profiles.csv: line,coord,s,t,V,sigma — dimensionless, each header with its unit `[-]`.
 pub fn write_profiles(path: &Path, profiles: &[Profile]) -> Result<()> {
     let mut w = csv::Writer::from_path(path).map_err(|e| csv_err(path, e))?;
-    w.write_record(["line", "coord", "s", "t", "V", "sigma"])
+    w.write_record(["line", "coord [-]", "s [-]", "t [-]", "V [-]", "sigma [-]"])
         .map_err(|e| csv_err(path, e))?;
     for p in profiles {
         for q in &p.points {
             w.write_record([
                 p.line.to_string(),
-                format!("{:.9e}", q.coord),
-                format!("{:.9e}", q.s),
-                format!("{:.9e}", q.t),
-                format!("{:.9e}", q.v),
-                format!("{:.9e}", q.sigma),
+                format!("{:.12e}", q.coord),
+                format!("{:.12e}", q.s),
+                format!("{:.12e}", q.t),
+                format!("{:.12e}", q.v),
+                format!("{:.12e}", q.sigma),
             ])
             .map_err(|e| csv_err(path, e))?;
         }

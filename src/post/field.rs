@@ -11,6 +11,7 @@
 //! value) reads the grid nodes, i.e. the lower / left side of a joint.
 
 use crate::layout::{Axis, JointType};
+use crate::units::{Measure, UnitSystem};
 
 /// A joint line of the whole plate, for drawing and tables.
 #[derive(Debug, Clone, PartialEq)]
@@ -140,24 +141,59 @@ impl FullField {
         out
     }
 
-    /// The numeric per-node columns of nodes.csv in its order, by name (node copies in the
-    /// order of the arrays); `contact` is the one boolean column beside them.
-    pub fn columns(&self) -> [(&'static str, &[f64]); 13] {
+    /// The numeric per-node columns of nodes.csv in its order, by name, with what each
+    /// measures (node copies in the order of the arrays); `contact` is the one boolean column
+    /// beside them.
+    pub fn columns(&self) -> [(&'static str, Measure, &[f64]); 13] {
         [
-            ("x", &self.x),
-            ("y", &self.y),
-            ("s", &self.s),
-            ("t", &self.t),
-            ("w", &self.w),
-            ("psi_x", &self.psi_x),
-            ("psi_y", &self.psi_y),
-            ("pressure", &self.pressure),
-            ("gap", &self.gap),
-            ("V", &self.v),
-            ("sigma", &self.sigma),
-            ("s1_bottom", &self.s1_bottom),
-            ("s1_top", &self.s1_top),
+            ("x", Measure::Length, &self.x),
+            ("y", Measure::Length, &self.y),
+            ("s", Measure::Number, &self.s),
+            ("t", Measure::Number, &self.t),
+            ("w", Measure::Deflection, &self.w),
+            ("psi_x", Measure::Rotation, &self.psi_x),
+            ("psi_y", Measure::Rotation, &self.psi_y),
+            ("pressure", Measure::Pressure, &self.pressure),
+            ("gap", Measure::Deflection, &self.gap),
+            ("V", Measure::Number, &self.v),
+            ("sigma", Measure::Number, &self.sigma),
+            ("s1_bottom", Measure::Pressure, &self.s1_bottom),
+            ("s1_top", Measure::Pressure, &self.s1_top),
         ]
+    }
+
+    /// The same field with every physical value in `system`'s units (None, a dimensionless
+    /// scene: unchanged), for the files that report it in the scene's system.
+    pub fn in_units(&self, system: Option<UnitSystem>) -> FullField {
+        let c = |m: Measure, v: &[f64]| -> Vec<f64> { v.iter().map(|&x| m.from_si(system, x)).collect() };
+        let (l, d, r, p) = (
+            Measure::Length,
+            Measure::Deflection,
+            Measure::Rotation,
+            Measure::Pressure,
+        );
+        FullField {
+            x: c(l, &self.x),
+            y: c(l, &self.y),
+            w: c(d, &self.w),
+            psi_x: c(r, &self.psi_x),
+            psi_y: c(r, &self.psi_y),
+            pressure: c(p, &self.pressure),
+            gap: c(d, &self.gap),
+            signed_gap: c(d, &self.signed_gap),
+            gap_per_sigma: d.from_si(system, self.gap_per_sigma),
+            s1_bottom: c(p, &self.s1_bottom),
+            s1_top: c(p, &self.s1_top),
+            joints: self
+                .joints
+                .iter()
+                .map(|j| JointLine {
+                    at: l.from_si(system, j.at),
+                    ..j.clone()
+                })
+                .collect(),
+            ..self.clone()
+        }
     }
 
     /// Bilinear interpolation of a nodal field at (s, t) ∈ [−1, 1]², from the grid nodes (on a
@@ -206,28 +242,60 @@ pub struct ElementField {
 
 impl ElementField {
     /// The per-element columns of elements.csv in its order, by name (element ie + je nx).
-    pub fn columns(&self) -> Vec<(&'static str, &[f64])> {
+    pub fn columns(&self) -> Vec<(&'static str, Measure, &[f64])> {
         let (b, t) = (&self.bottom, &self.top);
+        let (l, m, q, p, d) = (
+            Measure::Length,
+            Measure::MomentPerLength,
+            Measure::ForcePerLength,
+            Measure::Pressure,
+            Measure::Degrees,
+        );
         vec![
-            ("x", &self.x),
-            ("y", &self.y),
-            ("mx", &self.mx),
-            ("my", &self.my),
-            ("mxy", &self.mxy),
-            ("qx", &self.qx),
-            ("qy", &self.qy),
-            ("sx_bottom", &b.sx),
-            ("sy_bottom", &b.sy),
-            ("sxy_bottom", &b.sxy),
-            ("s1_bottom", &b.s1),
-            ("s2_bottom", &b.s2),
-            ("angle_bottom", &b.angle),
-            ("sx_top", &t.sx),
-            ("sy_top", &t.sy),
-            ("sxy_top", &t.sxy),
-            ("s1_top", &t.s1),
-            ("s2_top", &t.s2),
-            ("angle_top", &t.angle),
+            ("x", l, &self.x),
+            ("y", l, &self.y),
+            ("mx", m, &self.mx),
+            ("my", m, &self.my),
+            ("mxy", m, &self.mxy),
+            ("qx", q, &self.qx),
+            ("qy", q, &self.qy),
+            ("sx_bottom", p, &b.sx),
+            ("sy_bottom", p, &b.sy),
+            ("sxy_bottom", p, &b.sxy),
+            ("s1_bottom", p, &b.s1),
+            ("s2_bottom", p, &b.s2),
+            ("angle_bottom", d, &b.angle),
+            ("sx_top", p, &t.sx),
+            ("sy_top", p, &t.sy),
+            ("sxy_top", p, &t.sxy),
+            ("s1_top", p, &t.s1),
+            ("s2_top", p, &t.s2),
+            ("angle_top", d, &t.angle),
         ]
+    }
+
+    /// The same field with every physical value in `system`'s units (None: unchanged).
+    pub fn in_units(&self, system: Option<UnitSystem>) -> ElementField {
+        let c = |m: Measure, v: &[f64]| -> Vec<f64> { v.iter().map(|&x| m.from_si(system, x)).collect() };
+        let face = |f: &super::stress::FaceStress| super::stress::FaceStress {
+            sx: c(Measure::Pressure, &f.sx),
+            sy: c(Measure::Pressure, &f.sy),
+            sxy: c(Measure::Pressure, &f.sxy),
+            s1: c(Measure::Pressure, &f.s1),
+            s2: c(Measure::Pressure, &f.s2),
+            angle: f.angle.clone(),
+        };
+        ElementField {
+            x: c(Measure::Length, &self.x),
+            y: c(Measure::Length, &self.y),
+            mx: c(Measure::MomentPerLength, &self.mx),
+            my: c(Measure::MomentPerLength, &self.my),
+            mxy: c(Measure::MomentPerLength, &self.mxy),
+            qx: c(Measure::ForcePerLength, &self.qx),
+            qy: c(Measure::ForcePerLength, &self.qy),
+            bottom: face(&self.bottom),
+            top: face(&self.top),
+            thickness: c(Measure::Length, &self.thickness),
+        }
     }
 }

@@ -196,7 +196,8 @@ fn cell_arrays(elements: &ElementField) -> Vec<(&'static str, &[f64])> {
     elements
         .columns()
         .into_iter()
-        .filter(|(name, _)| !matches!(*name, "x" | "y"))
+        .filter(|(name, _, _)| !matches!(*name, "x" | "y"))
+        .map(|(name, _, values)| (name, values))
         .collect()
 }
 
