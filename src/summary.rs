@@ -297,17 +297,24 @@ pub const MEASURED: &[(&str, Measure)] = &[
 fn convert(v: &mut serde_json::Value, keys: &[&str], f: &dyn Fn(f64) -> f64) -> bool {
     use serde_json::Value;
     match (keys.split_first(), v) {
-        (None, Value::Number(n)) => match n.as_f64().and_then(|x| serde_json::Number::from_f64(f(x))) {
-            Some(m) => {
-                *n = m;
-                true
+        (None, Value::Number(n)) => {
+            match n.as_f64().and_then(|x| serde_json::Number::from_f64(f(x))) {
+                Some(m) => {
+                    *n = m;
+                    true
+                }
+                None => false,
             }
-            None => false,
-        },
-        (None, Value::Array(a)) => a.iter_mut().fold(false, |any, x| convert(x, &[], f) || any),
-        (Some((&"*", rest)), Value::Array(a)) => {
-            a.iter_mut().fold(false, |any, x| convert(x, rest, f) || any)
         }
+        // Every entry is converted: no short circuit.
+        (None, Value::Array(a)) => a
+            .iter_mut()
+            .map(|x| convert(x, &[], f))
+            .fold(false, bool::max),
+        (Some((&"*", rest)), Value::Array(a)) => a
+            .iter_mut()
+            .map(|x| convert(x, rest, f))
+            .fold(false, bool::max),
         (Some((k, rest)), Value::Object(o)) => o.get_mut(*k).is_some_and(|x| convert(x, rest, f)),
         _ => false,
     }

@@ -156,9 +156,7 @@ impl Measure {
     pub fn from_si(self, system: Option<UnitSystem>, si: f64) -> f64 {
         match (system, self.quantity()) {
             (Some(s), Some(q)) => q.from_si(s, si),
-            (Some(UnitSystem::Us), None) if self == Measure::Moment => {
-                si / (POUND_FORCE * INCH)
-            }
+            (Some(UnitSystem::Us), None) if self == Measure::Moment => si / (POUND_FORCE * INCH),
             (Some(UnitSystem::Us), None) if self == Measure::Area => si / (INCH * INCH),
             _ => si,
         }
@@ -286,10 +284,16 @@ mod tests {
     fn reported_values_convert_by_the_same_definitions() {
         let us = Some(UnitSystem::Us);
         let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs();
-        assert!(close(Measure::Moment.from_si(us, 0.112_984_829_027_616_7), 1.0));
+        assert!(close(
+            Measure::Moment.from_si(us, 0.112_984_829_027_616_7),
+            1.0
+        ));
         assert!(close(Measure::Area.from_si(us, 6.4516e-4), 1.0));
         assert!(close(Measure::Deflection.from_si(us, 1e-3), 1.0 / 25.4));
-        assert!(close(Measure::Pressure.from_si(us, 6_894.757_293_168_361), 1.0));
+        assert!(close(
+            Measure::Pressure.from_si(us, 6_894.757_293_168_361),
+            1.0
+        ));
         assert_eq!(Measure::Rotation.from_si(us, 0.25), 0.25);
         assert_eq!(Measure::Pressure.from_si(None, 0.25), 0.25);
         assert_eq!(Measure::Deflection.header("w", us), "w [in]");

@@ -168,7 +168,10 @@ poissons_ratio = 0.2\n[foundation]\nmodel = \"winkler\"\nmodulus = {k:e}\n\
     let csv = std::fs::read_to_string(dir.path().join("dowels.csv")).expect("dowels.csv");
     let mut lines = csv.lines();
     let header: Vec<&str> = lines.next().expect("header").split(',').collect();
-    let cf = header.iter().position(|h| *h == "force [N]").expect("force");
+    let cf = header
+        .iter()
+        .position(|h| *h == "force [N]")
+        .expect("force");
     let rows: Vec<f64> = lines
         .map(|l| {
             l.split(',')

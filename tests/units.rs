@@ -335,15 +335,36 @@ fn every_file_of_a_us_scene_is_its_si_twins_after_conversion() {
         .replace("length = 288.0", &format!("length = {}", 288.0 * IN))
         .replace("width = 144.0", &format!("width = {}", 144.0 * IN))
         .replace("thickness = 10.0", &format!("thickness = {}", 10.0 * IN))
-        .replace("youngs_modulus = 4.0e6", &format!("youngs_modulus = {}", 4.0e6 * psi))
-        .replace("thermal_expansion = 5.5e-6", &format!("thermal_expansion = {}", 5.5e-6 * 1.8))
-        .replace("modulus = 150.0", &format!("modulus = {}", 150.0 * psi / IN))
-        .replace("allowable_pressure = 12.0", &format!("allowable_pressure = {}", 12.0 * psi))
-        .replace("bearing_length = 12.0", &format!("bearing_length = {}", 12.0 * IN))
+        .replace(
+            "youngs_modulus = 4.0e6",
+            &format!("youngs_modulus = {}", 4.0e6 * psi),
+        )
+        .replace(
+            "thermal_expansion = 5.5e-6",
+            &format!("thermal_expansion = {}", 5.5e-6 * 1.8),
+        )
+        .replace(
+            "modulus = 150.0",
+            &format!("modulus = {}", 150.0 * psi / IN),
+        )
+        .replace(
+            "allowable_pressure = 12.0",
+            &format!("allowable_pressure = {}", 12.0 * psi),
+        )
+        .replace(
+            "bearing_length = 12.0",
+            &format!("bearing_length = {}", 12.0 * IN),
+        )
         .replace("diameter = 1.25", &format!("diameter = {}", 1.25 * IN))
-        .replace("youngs_modulus = 29.0e6", &format!("youngs_modulus = {}", 29.0e6 * psi))
+        .replace(
+            "youngs_modulus = 29.0e6",
+            &format!("youngs_modulus = {}", 29.0e6 * psi),
+        )
         .replace("opening = 0.25", &format!("opening = {}", 0.25 * IN))
-        .replace("support_modulus = 1.5e6", &format!("support_modulus = {}", 1.5e6 * psi / IN))
+        .replace(
+            "support_modulus = 1.5e6",
+            &format!("support_modulus = {}", 1.5e6 * psi / IN),
+        )
         .replace("spacing = 12.0", &format!("spacing = {}", 12.0 * IN))
         .replace("x = -10.0", &format!("x = {}", -10.0 * IN))
         .replace("y = -50.0", &format!("y = {}", -50.0 * IN))
@@ -365,7 +386,10 @@ fn every_file_of_a_us_scene_is_its_si_twins_after_conversion() {
         "joints.csv",
         "dowels.csv",
     ] {
-        let (a, b) = (columns(&us.path().join(file)), columns(&si.path().join(file)));
+        let (a, b) = (
+            columns(&us.path().join(file)),
+            columns(&si.path().join(file)),
+        );
         assert_eq!(a.len(), b.len(), "{file}: columns");
         for ((name, unit, x), (name_si, unit_si, y)) in a.iter().zip(&b) {
             assert_eq!(name, name_si, "{file}");
@@ -392,7 +416,10 @@ fn every_file_of_a_us_scene_is_its_si_twins_after_conversion() {
                 .zip(&y)
                 .fold(0.0_f64, |m, (p, q)| m.max((p * f - q).abs()))
                 / peak;
-            assert!(off < 1e-9, "{file}: {name} [{unit}] off by {off:e} of its peak");
+            assert!(
+                off < 1e-9,
+                "{file}: {name} [{unit}] off by {off:e} of its peak"
+            );
         }
     }
     // summary.json: every key its `units` names, and the dimensionless results.
@@ -429,17 +456,32 @@ fn every_file_of_a_us_scene_is_its_si_twins_after_conversion() {
         let unit = unit.as_str().expect("a unit");
         assert_eq!(si_unit(unit), b["units"][path], "summary {path}'s units");
         let (x, y) = (at(&a, path), at(&b, path));
-        assert!(!y.is_empty() && x.len() == y.len(), "summary {path}: {x:?} {y:?}");
+        assert!(
+            !y.is_empty() && x.len() == y.len(),
+            "summary {path}: {x:?} {y:?}"
+        );
         let peak = y.iter().fold(0.0_f64, |m, v| m.max(v.abs())).max(1e-300);
         for (p, q) in x.iter().zip(&y) {
             let off = (p * si_per(unit) - q).abs() / peak;
-            assert!(off < 1e-9, "summary {path}: {p} {unit} against {q}: {off:e}");
+            assert!(
+                off < 1e-9,
+                "summary {path}: {p} {unit} against {q}: {off:e}"
+            );
         }
         checked += 1;
     }
-    for path in ["V_max", "V_center", "V_corner", "contact_fraction", "contact_radius"] {
+    for path in [
+        "V_max",
+        "V_center",
+        "V_corner",
+        "contact_fraction",
+        "contact_radius",
+    ] {
         let (x, y) = (at(&a, path), at(&b, path));
-        assert!((x[0] - y[0]).abs() <= 1e-9 * y[0].abs(), "summary {path}: {x:?} {y:?}");
+        assert!(
+            (x[0] - y[0]).abs() <= 1e-9 * y[0].abs(),
+            "summary {path}: {x:?} {y:?}"
+        );
     }
     assert!(checked >= 25, "{checked} physical keys compared");
 }

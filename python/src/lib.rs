@@ -391,11 +391,9 @@ fn solve<'py>(
             let list = PyList::empty(py);
             for r in &c.runs {
                 match &r.outcome {
-                    Ok(o) => list.append(fields(
-                        py,
-                        &o.report,
-                        o.summary.physical.map(|p| p.units),
-                    )?)?,
+                    Ok(o) => {
+                        list.append(fields(py, &o.report, o.summary.physical.map(|p| p.units))?)?
+                    }
                     Err(_) => list.append(py.None())?,
                 }
             }

@@ -506,6 +506,52 @@ def test_progress_reaches_a_callable_for_studies_and_combinations():
         liftoff.solve("example:raft-combinations", progress=lambda *e: 1 / 0)
 
 
+def test_a_sweep_reports_progress_per_scene():
+    events = []
+    g = liftoff.grid(SMALL, {"dimensionless.gamma": [1e-4, 1e-3, 1e-2]})
+    liftoff.sweep(g, workers=1, progress=lambda *e: events.append(e))
+    assert [(e[0], e[1], e[2]) for e in events] == [("case", k, 3) for k in (1, 2, 3)], events
+    events.clear()
+    liftoff.sweep(g, workers=2, progress=lambda *e: events.append(e))
+    assert sorted(e[1] for e in events) == [1, 2, 3], events
+
+
+def test_a_quick_solve_draws_no_bar_and_a_long_one_does(capsys):
+    """``progress=True`` on a solve of a few milliseconds draws nothing (no flash of a bar);
+    the same bar fed an event after its quiet time draws."""
+    liftoff.solve(SMALL, progress=True)
+    assert capsys.readouterr().err == ""
+    from liftoff import _progress
+    import io
+    stream = io.StringIO()
+    bar = _progress.Bar(stream)
+    bar("case", 1, 4, "first")
+    assert stream.getvalue() == ""
+    bar.start -= _progress.QUIET
+    bar("case", 2, 4, "second")
+    assert "2/4" in stream.getvalue() and "second" in stream.getvalue()
+
+
+def test_sweep_rows_carry_the_stresses_and_a_row_per_combination():
+    """A row's stresses are the solve's own summary's (both faces' largest σ₁ and where), in
+    the scene's units; a scene with combinations gives a row per combination, each equal to
+    that combination's summary in the solve of the whole scene."""
+    rows = liftoff.sweep(["example:slab-on-grade", "example:raft-combinations"], workers=1)
+    one = liftoff.solve("example:slab-on-grade")
+    st = one.summary["stresses"]
+    assert rows[0]["s1_bottom"] == st["bottom"]["value"] > 0
+    assert (rows[0]["s1_bottom_x"], rows[0]["s1_bottom_y"]) == (st["bottom"]["x"], st["bottom"]["y"])
+    assert rows[0]["s1_top"] == st["top"]["value"] and rows[0]["units"] == "si"
+    whole = liftoff.solve("example:raft-combinations")
+    combos = whole.summary["combinations"]
+    assert [r["combination"] for r in rows[1:]] == [c["name"] for c in combos]
+    assert all(r["index"] == 1 and r["ok"] for r in rows[1:])
+    for r, c in zip(rows[1:], combos):
+        assert r["s1_bottom"] == c["summary"]["stresses"]["bottom"]["value"]
+        assert r["w_max"] == c["summary"]["w_max"]
+    assert rows.meta == {"cases": 2, "failed": 0}
+
+
 # -- the critical position of a vehicle load ----------------------------------------------------
 
 SLAB_WITH_AXLE = """

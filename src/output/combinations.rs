@@ -121,7 +121,11 @@ pub fn write_combinations(dir: &Path, c: &Combinations, env: &Envelope) -> Resul
     stage_envelope_maps(&mut st, c, env)?;
     for (file, xy, fields) in [
         ("envelope_nodes.csv", &reported.node_xy, &reported.nodes),
-        ("envelope_elements.csv", &reported.element_xy, &reported.elements),
+        (
+            "envelope_elements.csv",
+            &reported.element_xy,
+            &reported.elements,
+        ),
     ] {
         let p = st.path(file);
         write_points(&p, xy, fields, &env.names, env.system)?;

@@ -56,7 +56,11 @@ pub fn write_elements(path: &Path, e: &ElementField, system: Option<UnitSystem>)
 }
 
 /// A CSV file from its header and rows of formatted cells.
-fn write_csv(path: &Path, header: &[String], rows: impl Iterator<Item = Vec<String>>) -> Result<()> {
+fn write_csv(
+    path: &Path,
+    header: &[String],
+    rows: impl Iterator<Item = Vec<String>>,
+) -> Result<()> {
     let mut w = csv::Writer::from_path(path).map_err(|e| csv_err(path, e))?;
     w.write_record(header).map_err(|e| csv_err(path, e))?;
     for rec in rows {

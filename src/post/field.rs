@@ -165,7 +165,9 @@ impl FullField {
     /// The same field with every physical value in `system`'s units (None, a dimensionless
     /// scene: unchanged), for the files that report it in the scene's system.
     pub fn in_units(&self, system: Option<UnitSystem>) -> FullField {
-        let c = |m: Measure, v: &[f64]| -> Vec<f64> { v.iter().map(|&x| m.from_si(system, x)).collect() };
+        let c = |m: Measure, v: &[f64]| -> Vec<f64> {
+            v.iter().map(|&x| m.from_si(system, x)).collect()
+        };
         let (l, d, r, p) = (
             Measure::Length,
             Measure::Deflection,
@@ -276,7 +278,9 @@ impl ElementField {
 
     /// The same field with every physical value in `system`'s units (None: unchanged).
     pub fn in_units(&self, system: Option<UnitSystem>) -> ElementField {
-        let c = |m: Measure, v: &[f64]| -> Vec<f64> { v.iter().map(|&x| m.from_si(system, x)).collect() };
+        let c = |m: Measure, v: &[f64]| -> Vec<f64> {
+            v.iter().map(|&x| m.from_si(system, x)).collect()
+        };
         let face = |f: &super::stress::FaceStress| super::stress::FaceStress {
             sx: c(Measure::Pressure, &f.sx),
             sy: c(Measure::Pressure, &f.sy),

@@ -269,14 +269,22 @@ def sweep(
     *,
     client: Any = None,
     workers: Optional[int] = None,
+    progress: Any = None,
     **options: Any,
 ) -> Records:
     """Solve many independent scenes: a list of scenes, or a :func:`grid`.
 
     Runs on a local process pool (``workers`` processes, default: the CPU count) or, given a
     ``dask.distributed.Client``, on its cluster (``pip install liftoff[dask]``; dask is imported
-    only by you). One record per scene in input order: its parameters, ``ok``, ``error`` and
-    ``error_kind`` (a failed case is a row, never a lost sweep), and the summary's scalars
-    (V_max, contact_fraction, w_max, pressure_max, status, iterations, …).
+    only by you). One record per scene in input order — per combination, named by
+    ``combination``, for a scene with combinations: its parameters, ``ok``, ``error`` and
+    ``error_kind`` (a failed case is a row, never a lost sweep), the summary's scalars
+    (V_max, contact_fraction, w_max, pressure_max, status, iterations, …), the surface stresses
+    ``s1_bottom`` and ``s1_top`` (each face's largest principal stress, tension positive; None
+    where a face has none) with where they act (``s1_bottom_x``, ``s1_bottom_y``, …), and
+    ``units``: the values are in the scene's system (``si``, ``us`` or ``dimensionless``).
+    ``progress``: as in :func:`solve`, counting the scenes solved.
     """
-    return _run_sweep(scenes_or_grid, method, client=client, workers=workers, **options)
+    return _run_sweep(
+        scenes_or_grid, method, client=client, workers=workers, progress=progress, **options
+    )

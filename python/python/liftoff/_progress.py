@@ -13,9 +13,14 @@ from typing import Any, Callable, Optional
 Callback = Callable[[str, int, int, str], Any]
 
 
+#: A run shorter than this draws no bar at all (no flash on a quick solve), seconds.
+QUIET = 0.5
+
+
 class Bar:
     """A one-line bar on stderr, redrawn at most ten times a second: ``12/40 [#####     ]
-    1.3 s  label``; iteration events show as the label of the current case."""
+    1.3 s  label``; iteration events show as the label of the current case. Nothing is drawn
+    before the run has taken :data:`QUIET` seconds."""
 
     def __init__(self, stream=None):
         self.stream = stream or sys.stderr
@@ -32,6 +37,8 @@ class Bar:
         else:
             self.label = f"{kind} {done} ({total} changed)"
         now = time.monotonic()
+        if now - self.start < QUIET:
+            return
         if now - self.last < 0.1 and not (kind == "case" and done == total):
             return
         self.last = now
