@@ -3,10 +3,68 @@
 
 use plotters::chart::ChartContext;
 use plotters::coord::cartesian::Cartesian2d;
+use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
 use plotters::coord::types::RangedCoordf64;
 
-/// A plan-view chart in the plate's coordinates.
-pub(super) type Plan<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+/// A plan-view chart in the plate's coordinates, its ticks at round values of the shown unit.
+pub(super) type Plan<'a, DB> = ChartContext<'a, DB, Cartesian2d<Ticked, Ticked>>;
+
+/// A linear axis in the plate's coordinates whose ticks are given ([`round_ticks`]): plotters'
+/// own `WithKeyPoints` has no default label formatting, which the mesh needs.
+pub(super) struct Ticked {
+    inner: RangedCoordf64,
+    ticks: Vec<f64>,
+}
+
+impl Ticked {
+    /// [lo, hi] with ticks at round values of the shown unit (`shown` per field unit).
+    pub(super) fn new(lo: f64, hi: f64, shown: f64) -> Self {
+        Self {
+            inner: (lo..hi).into(),
+            ticks: round_ticks(lo, hi, shown),
+        }
+    }
+}
+
+impl Ranged for Ticked {
+    type FormatOption = DefaultFormatting;
+    type ValueType = f64;
+
+    fn map(&self, value: &f64, limit: (i32, i32)) -> i32 {
+        self.inner.map(value, limit)
+    }
+
+    fn key_points<Hint: KeyPointHint>(&self, hint: Hint) -> Vec<f64> {
+        // Fewer when the axis has no room for all (the hint's largest count).
+        let room = hint.max_num_points().max(1);
+        let every = self.ticks.len().div_ceil(room).max(1);
+        self.ticks.iter().step_by(every).copied().collect()
+    }
+
+    fn range(&self) -> std::ops::Range<f64> {
+        self.inner.range()
+    }
+}
+
+/// Tick positions in [lo, hi] (field units) at round values of the shown unit, `shown` shown
+/// units per field unit: steps of 1, 2 or 5 × 10^k shown units, the largest giving at least
+/// four ticks (an inch-labelled map of a 4 m slab: every 20 in).
+pub(super) fn round_ticks(lo: f64, hi: f64, shown: f64) -> Vec<f64> {
+    let (a, b) = (lo.min(hi) * shown, lo.max(hi) * shown);
+    let span = b - a;
+    if !(span > 0.0 && span.is_finite() && shown > 0.0) {
+        return vec![lo];
+    }
+    let base = 10f64.powf((span / 4.0).log10().floor());
+    let step = [5.0, 2.0, 1.0]
+        .iter()
+        .map(|m| m * base)
+        .find(|st| (span / st).floor() >= 4.0)
+        .unwrap_or(base);
+    let first = (a / step).ceil() as i64;
+    let last = (b / step).floor() as i64;
+    (first..=last).map(|k| k as f64 * step / shown).collect()
+}
 
 /// Finite range of `values` including `always` (if given), padded by 5 % on both sides and
 /// never empty: a single value v gets ±10 % of |v| (±1 for 0); no finite value gives (−1, 1).
@@ -275,5 +333,29 @@ mod tests {
         // Very wide ranges keep a bounded number of labels.
         let w = log_axis([-300.0, 300.0].into_iter());
         assert!(w.bold.len() <= 13, "{}", w.bold.len());
+    }
+}
+
+#[cfg(test)]
+mod round_tick_tests {
+    use super::round_ticks;
+
+    /// A 4.267 m (168 in) side shown in inches: ticks every 20 in, each a whole number of
+    /// inches; in metres on ±2 m, every metre.
+    #[test]
+    fn ticks_sit_at_round_values_of_the_shown_unit() {
+        let shown = 1.0 / 0.0254;
+        let t = round_ticks(-2.1336, 2.1336, shown);
+        let inches: Vec<f64> = t.iter().map(|v| v * shown).collect();
+        assert!(inches.len() >= 4, "{inches:?}");
+        for v in &inches {
+            assert!(
+                (v - v.round()).abs() < 1e-9 && (v.round() as i64) % 20 == 0,
+                "{inches:?}"
+            );
+        }
+        let m = round_ticks(-2.0, 2.0, 1.0);
+        assert_eq!(m, vec![-2.0, -1.0, 0.0, 1.0, 2.0]);
+        assert_eq!(round_ticks(1.0, 1.0, 1.0), vec![1.0]);
     }
 }

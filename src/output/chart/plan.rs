@@ -5,7 +5,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::axis::{finite_extent, tick_format, Plan};
+use super::axis::{finite_extent, tick_format, Plan, Ticked};
 use super::overlay::{draw_exceedance, draw_features, Overlay, Swatch, SWATCH_W};
 use super::style::{self, DESC_FONT, LABEL_FONT};
 use super::units::Scale;
@@ -42,10 +42,10 @@ pub(super) fn plan_axes<'a, DB: DrawingBackend>(
         .margin_bottom(MARGIN + extra_h)
         .x_label_area_size(X_AREA)
         .y_label_area_size(Y_AREA)
-        .build_cartesian_2d(x0..x1, y0..y1)
+        .build_cartesian_2d(Ticked::new(x0, x1, shown), Ticked::new(y0, y1, shown))
         .map_err(txt)?;
-    // Ticks sit at round values of the field's coordinates; their labels are in the shown
-    // unit (`shown` per field unit: 1 for metres, 39.37 for inches).
+    // Ticks sit at round values of the shown unit (`shown` per field unit: 1 for metres,
+    // 39.37 for inches), labelled in it.
     let (x_tick, y_tick) = (
         tick_format(x0 * shown, x1 * shown),
         tick_format(y0 * shown, y1 * shown),
