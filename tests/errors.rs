@@ -210,6 +210,61 @@ fn solve_scene(dir: &std::path::Path, scene: &str, args: &[&str]) -> (Option<i32
     )
 }
 
+/// E69 and E18 for `liftoff critical`'s grid options: a joint `--along` does not name (found
+/// when the scene is loaded, so reported with the scene and listing its joints and the edges),
+/// a line that is neither a joint nor an edge, `--grid` with `--grid-per-panel` (clap's
+/// conflict), and a per-panel count out of range (reported under the flag's name). Exit 2 each,
+/// and nothing written to `--out`.
+#[test]
+fn e69_critical_along_a_joint_the_scene_does_not_have() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let out = dir.path().join("out");
+    let run = |args: &[&str]| -> (Option<i32>, String) {
+        let o = Command::new(env!("CARGO_BIN_EXE_liftoff"))
+            .args([
+                "critical",
+                "example:pavement-3x3",
+                "--load",
+                "axle",
+                "--out",
+            ])
+            .arg(&out)
+            .args(args)
+            .output()
+            .expect("run liftoff");
+        let files = std::fs::read_dir(&out).map(|d| d.count()).unwrap_or(0);
+        assert_eq!(files, 0, "no output files after a failure ({args:?})");
+        (o.status.code(), String::from_utf8_lossy(&o.stderr).into())
+    };
+    let (code, err) = run(&["--along", "joint:T9"]);
+    assert_eq!(code, Some(2), "E69: exit code ({err})");
+    assert!(
+        err.contains("example:pavement-3x3: scene field `along`: no joint named `T9`: the plate's joints are T1, T2, shoulder, lanes; the plate's edges are edge:x-, edge:x+, edge:y-, edge:y+"),
+        "E69: message: {err}"
+    );
+    for (args, message) in [
+        (
+            &["--along", "edge:z"][..],
+            "expected joint:NAME or edge:x-, edge:x+, edge:y-, edge:y+, got `edge:z`",
+        ),
+        (
+            &["--grid", "3,3", "--grid-per-panel", "3,3"][..],
+            "the argument '--grid <GRID>' cannot be used with '--grid-per-panel <GRID_PER_PANEL>'",
+        ),
+        (
+            &["--grid-per-panel", "0,3"][..],
+            "--grid-per-panel must be 1..=201 points per panel along x and y, got [0, 3]",
+        ),
+    ] {
+        let (code, err) = run(args);
+        assert_eq!(code, Some(2), "E18 critical {args:?}: exit code ({err})");
+        assert!(
+            err.contains(message),
+            "E18 critical {args:?}: message: {err}"
+        );
+    }
+}
+
 /// E21: clarabel itself proves the QP infeasible where the pre-check cannot: with Gauss-point
 /// constraints the pre-check allows a resultant anywhere on the plate, but bilinear pressures
 /// non-negative at the Gauss points only reach the convex hull of those points (the outermost

@@ -608,6 +608,25 @@ def test_critical_equals_the_cli_and_spreads_over_a_cluster(client, tmp_path):
         liftoff.critical(scene, "bus")
 
 
+def test_critical_takes_a_grid_per_panel_and_lines_as_the_cli_does(tmp_path):
+    scene = tmp_path / "slab.toml"
+    scene.write_text(SLAB_WITH_AXLE)
+    per_panel = liftoff.critical(scene, "truck", grid_per_panel=(3, 3))
+    r = cli("critical", str(scene), "--load", "truck", "--grid-per-panel", "3,3", "--json")
+    assert r.returncode == 0, r.stderr
+    ref = json.loads(r.stdout)
+    assert [(p["x"], p["y"]) for p in per_panel] == [(p["x"], p["y"]) for p in ref["positions"]]
+    assert per_panel.meta["grid_per_panel"] == [3, 3] and "grid" not in per_panel.meta
+    # One panel: its middle and its sides, the sides moved in to where the prints touch them.
+    assert len(per_panel) == 9 and any(p["x"] == 0.0 and p["y"] == 0.0 for p in per_panel)
+    edge = liftoff.critical(scene, "truck", grid=(5, 3), along=["edge:y+"])
+    assert len(edge) == 5 and len({row["y"] for row in edge}) == 1
+    with pytest.raises(liftoff.SceneError, match="not both"):
+        liftoff.critical(scene, "truck", grid=(3, 3), grid_per_panel=(3, 3))
+    with pytest.raises(liftoff.SceneError, match="no joint named `T9`"):
+        liftoff.critical(scene, "truck", along=["joint:T9"])
+
+
 # -- jointed slabs ----------------------------------------------------------------------------
 
 JOINTED = """

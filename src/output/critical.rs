@@ -1,6 +1,7 @@
 //! The files and the table of `liftoff critical`: `critical.csv` (every position), `critical.json`
 //! (the search with its critical positions) and influence maps of the bottom and top stresses
-//! and of the deflection (`influence-{bottom,top,deflection}.svg/png`).
+//! and of the deflection (`influence-{bottom,top,deflection}.svg/png`: the searched positions
+//! as dots, the critical one ringed with the load's prints there, the plate's joints).
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -8,8 +9,10 @@ use std::path::{Path, PathBuf};
 use super::chart::{self, Influence, Units};
 use super::Staged;
 use crate::error::{Error, Result};
+use crate::layout::Axis;
 use crate::model::Physical;
-use crate::study::{Critical, Position};
+use crate::post::JointLine;
+use crate::study::{Critical, Position, RunOutcome};
 
 /// critical.csv: one row per position.
 fn csv(c: &Critical) -> String {
@@ -68,14 +71,68 @@ pub fn write_critical(dir: &Path, c: &Critical, title: &str) -> Result<Vec<PathB
         .filter(|p| p.heading == heading)
         .collect();
     let points: Vec<(f64, f64)> = mine.iter().map(|p| (p.x, p.y)).collect();
+    let joints: Vec<JointLine> = c
+        .joints
+        .iter()
+        .map(|j| JointLine {
+            name: j.name.clone(),
+            kind: j.kind,
+            axis: if j.axis == "x" { Axis::X } else { Axis::Y },
+            at: j.at,
+        })
+        .collect();
     type Pick = fn(&Position) -> f64;
-    let maps: [(&str, &str, Pick, chart::Scale); 3] = [
-        ("bottom", "σ₁ bottom", |p| p.bottom, units.stress()),
-        ("top", "σ₁ top", |p| p.top, units.stress()),
-        ("deflection", "w max", |p| p.w_max, units.deflection()),
+    let maps: [(&str, &str, Pick, chart::Scale, Option<usize>); 3] = [
+        (
+            "bottom",
+            "σ₁ bottom",
+            |p| p.bottom,
+            units.stress(),
+            c.bottom,
+        ),
+        ("top", "σ₁ top", |p| p.top, units.stress(), c.top),
+        (
+            "deflection",
+            "w max",
+            |p| p.w_max,
+            units.deflection(),
+            c.deflection,
+        ),
     ];
-    for (file, name, pick, scale) in maps {
-        let values: Vec<f64> = mine.iter().map(|p| pick(p)).collect();
+    for (file, name, pick, scale, critical) in maps {
+        // A solve that did not converge has no value to show: its cell is grey.
+        let values: Vec<f64> = mine
+            .iter()
+            .map(|p| {
+                if p.outcome == RunOutcome::CONVERGED {
+                    pick(p)
+                } else {
+                    f64::NAN
+                }
+            })
+            .collect();
+        // The critical position is marked where it belongs to the heading drawn.
+        let critical = critical.filter(|&i| c.positions[i].heading == heading);
+        let mark = critical.map(|i| {
+            let p = &c.positions[i];
+            let value = scale.apply(pick(p));
+            (
+                (p.x, p.y),
+                format!(
+                    "critical position: largest {name} {} {}",
+                    chart::short(value),
+                    scale.unit
+                )
+                .trim_end()
+                .to_string(),
+            )
+        });
+        let prints = critical.map_or_else(Vec::new, |i| {
+            c.prints_at(i)
+                .iter()
+                .map(|[x, y]| [(x[0], y[0]), (x[1], y[1])])
+                .collect()
+        });
         let svg = st.path(&format!("influence-{file}.svg"));
         let png = st.path(&format!("influence-{file}.png"));
         chart::write_influence_map(
@@ -84,10 +141,12 @@ pub fn write_critical(dir: &Path, c: &Critical, title: &str) -> Result<Vec<PathB
             &Influence {
                 plate: c.plate,
                 points: &points,
-                spacing: c.spacing,
                 values: &values,
                 name,
                 scale,
+                joints: joints.clone(),
+                critical: mark,
+                prints,
             },
             &format!(
                 "{title} — {name} with `{}` standing at each point (heading {heading}°)",
@@ -116,6 +175,7 @@ pub fn critical_table(title: &str, c: &Critical, files: Option<(usize, &Path)>) 
         "liftoff critical — {title}: `{}` over {n} positions",
         c.load
     );
+    let _ = writeln!(s, "  search     : {}", c.search());
     if let Some(comb) = &c.combination {
         let _ = writeln!(s, "  combination: {comb} (the rest of its loads present)");
     }

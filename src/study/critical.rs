@@ -9,9 +9,16 @@
 //!
 //! The grid runs, for each heading, from the position where the prints touch one edge of the
 //! plate to where they touch the other, so the edge positions of the classical critical cases
-//! (the outer tire on the free edge) are on it.
+//! (the outer tire on the free edge) are on it. A uniform grid over a jointed plate misses the
+//! middle of a panel's edge and the joints wherever its step does not fit the panels; a grid
+//! per panel ([`CriticalOptions::grid_per_panel`]) puts the same fractions of every panel on
+//! it — its edges included, so an odd count has the middle —, and [`Along`] runs the search
+//! along a joint (the prints just before it, the load on it, the prints just after it) or an
+//! edge of the plate. A reference point whose prints would leave the plate (a panel's side on
+//! the plate's edge) moves inward to where the prints touch the edge, as the uniform grid's
+//! outermost points do; points that coincide then are one.
 //!
-//! The scene is validated once ([`crate::load`]); the load is the model's [`Vehicle`], moved to
+//! The scene is validated once ([`crate::load`]); the load is the model's [`Vehicle`](crate::vehicle::Vehicle), moved to
 //! each position by [`Model::place`].
 
 use std::time::Instant;
@@ -23,10 +30,10 @@ use super::RunOutcome;
 use crate::analysis;
 use crate::combination::assemble_for;
 use crate::error::{Error, Result};
+use crate::layout::{Axis, JointType};
 use crate::model::{Model, SymmetryMode};
 use crate::monitor::{Cases, Monitor};
 use crate::scene::Problem;
-use crate::vehicle::Vehicle;
 
 /// What to move and over what.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
@@ -34,8 +41,20 @@ use crate::vehicle::Vehicle;
 pub struct CriticalOptions {
     /// The `name` of the `axle` or `gear` load to move.
     pub load: String,
-    /// Reference points along x and y (≥ 1 each; 1 keeps the load's own coordinate).
+    /// Reference points along x and y (≥ 1 each; 1 keeps the load's own coordinate), evenly
+    /// spaced over the plate from where the prints touch one edge to where they touch the
+    /// other.
     pub grid: [usize; 2],
+    /// Reference points per panel along x and y instead of the uniform `grid` (which is then
+    /// not read): in each panel (the rectangles between the joint lines of every kind; a plate
+    /// without joints is one panel) NX × NY points at the fractions 0, 1/(N − 1), …, 1 of its
+    /// sides — the middle of the panel when N = 1 —, a point on a joint line taken once for
+    /// both panels, a point whose prints would leave the plate moved inward to where they
+    /// touch its edge.
+    pub grid_per_panel: Option<[usize; 2]>,
+    /// Search along these lines only (a joint by name, an edge of the plate; see [`Along`]);
+    /// empty: the whole plate.
+    pub along: Vec<Along>,
     /// Headings, degrees (empty: the load's own).
     pub headings: Vec<f64>,
     /// The combination the load acts in (default: the first that has its case).
@@ -53,6 +72,8 @@ impl Default for CriticalOptions {
         Self {
             load: String::new(),
             grid: [11, 9],
+            grid_per_panel: None,
+            along: Vec::new(),
             headings: Vec::new(),
             combination: None,
             warm: true,
@@ -85,6 +106,15 @@ impl CriticalOptions {
                 format!("must be 1..=201 points along x and y, got {:?}", self.grid),
             ));
         }
+        if let Some(n) = self
+            .grid_per_panel
+            .filter(|n| n.iter().any(|&n| n == 0 || n > 201))
+        {
+            return Err(Error::invalid(
+                "grid_per_panel",
+                format!("must be 1..=201 points per panel along x and y, got {n:?}"),
+            ));
+        }
         if let Some(h) = self.headings.iter().find(|h| !h.is_finite()) {
             return Err(Error::invalid(
                 "headings",
@@ -103,6 +133,129 @@ impl CriticalOptions {
     pub fn positions(&self, problem: &Problem) -> Result<usize> {
         critical_positions(problem, self)
     }
+
+    /// The reference points (x, y, m; heading, degrees) the search solves on `problem`, in its
+    /// order, without solving ([`critical_points`]).
+    pub fn points(&self, problem: &Problem) -> Result<Vec<[f64; 3]>> {
+        critical_points(problem, self)
+    }
+}
+/// An edge of the plate (`edge:x-` … in [`Along`]): the side x = −a/2 (`x-`), x = +a/2 (`x+`),
+/// y = −b/2 (`y-`) or y = +b/2 (`y+`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Edge {
+    /// x = −a/2.
+    XMinus,
+    /// x = +a/2.
+    XPlus,
+    /// y = −b/2.
+    YMinus,
+    /// y = +b/2.
+    YPlus,
+}
+
+impl Edge {
+    /// Every edge with its word.
+    const WORDS: [(Edge, &'static str); 4] = [
+        (Edge::XMinus, "x-"),
+        (Edge::XPlus, "x+"),
+        (Edge::YMinus, "y-"),
+        (Edge::YPlus, "y+"),
+    ];
+
+    /// Its word (`x-`, `x+`, `y-`, `y+`).
+    pub fn word(self) -> &'static str {
+        Edge::WORDS
+            .iter()
+            .find(|(e, _)| *e == self)
+            .map_or("", |(_, w)| w)
+    }
+}
+
+/// A line the search runs along instead of covering the whole plate (`--along`): a joint by
+/// its name (`joint:T2`) or an edge of the plate (`edge:y+`). Along the line the reference
+/// points are those of the grid along the line's direction ([`CriticalOptions::grid`] or
+/// [`CriticalOptions::grid_per_panel`]); across it, on a joint, three: the prints ending at the
+/// line on its lower side (before: a transverse joint's approach slab for a load travelling
+/// towards +x), the reference point on the line, and the prints starting at the line on its
+/// upper side (after: the leave slab); on an edge one, the prints touching the edge from
+/// inside (as the uniform grid's outermost points).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(try_from = "String", into = "String")]
+pub enum Along {
+    /// The joint of this `name`.
+    Joint(String),
+    /// An edge of the plate.
+    Edge(Edge),
+}
+
+impl std::str::FromStr for Along {
+    type Err = Error;
+
+    /// `joint:NAME`, or `edge:` with one of `x-`, `x+`, `y-`, `y+`.
+    fn from_str(s: &str) -> Result<Self> {
+        let bad = || {
+            Error::invalid(
+                "along",
+                format!("expected joint:NAME or edge:x-, edge:x+, edge:y-, edge:y+, got `{s}`"),
+            )
+        };
+        match s.trim().split_once(':') {
+            Some(("joint", name)) if !name.trim().is_empty() => {
+                Ok(Along::Joint(name.trim().to_string()))
+            }
+            Some(("edge", word)) => Edge::WORDS
+                .iter()
+                .find(|(_, w)| *w == word.trim())
+                .map(|(e, _)| Along::Edge(*e))
+                .ok_or_else(bad),
+            _ => Err(bad()),
+        }
+    }
+}
+
+impl std::fmt::Display for Along {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Along::Joint(name) => write!(f, "joint:{name}"),
+            Along::Edge(e) => write!(f, "edge:{}", e.word()),
+        }
+    }
+}
+
+impl TryFrom<String> for Along {
+    type Error = Error;
+    fn try_from(s: String) -> Result<Self> {
+        s.parse()
+    }
+}
+
+impl From<Along> for String {
+    fn from(a: Along) -> String {
+        a.to_string()
+    }
+}
+
+/// A joint line of the searched plate in metres (for the maps and critical.json).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct JointLine {
+    /// The joint's name.
+    pub name: String,
+    /// Its kind.
+    pub kind: JointType,
+    /// `x` for a line x = `at` (across the plate's width), `y` for a line y = `at`.
+    pub axis: &'static str,
+    /// The line's coordinate, m from the plate's centre.
+    pub at: f64,
+}
+
+/// The moved load's tire prints about its reference point at one heading.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Footprint {
+    /// Heading, degrees.
+    pub heading: f64,
+    /// Each print's [x0, x1] and [y0, y1], m, relative to the reference point.
+    pub prints: Vec<[[f64; 2]; 2]>,
 }
 
 /// One position's outcome: where, and what it causes.
@@ -150,8 +303,24 @@ pub struct Critical {
     pub combination: Option<String>,
     /// Plate sides (length along x, width along y), m.
     pub plate: [f64; 2],
-    /// Grid spacing of the reference points (x, y), m (0 where the grid has one point).
+    /// The uniform grid searched (absent when the grid was per panel).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub grid: Option<[usize; 2]>,
+    /// The grid per panel searched (absent when the grid was uniform).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub grid_per_panel: Option<[usize; 2]>,
+    /// Panels along x and y (1 × 1 without joints).
+    pub panels: [usize; 2],
+    /// The lines searched along (absent: the whole plate).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub along: Vec<Along>,
+    /// The largest step between neighbouring reference points of the first heading along x and
+    /// y, m (a uniform grid's spacing; 0 where there is one coordinate).
     pub spacing: [f64; 2],
+    /// The plate's joint lines (empty without joints).
+    pub joints: Vec<JointLine>,
+    /// The load's prints about its reference point, one footprint per heading searched.
+    pub prints: Vec<Footprint>,
     /// Every position solved, in grid order (heading, then y, then x).
     pub positions: Vec<Position>,
     /// Index of the largest bottom tension among the converged positions.
@@ -174,6 +343,41 @@ pub struct Critical {
 }
 
 impl Critical {
+    /// The tire prints of the load at position `i`, as [x0, x1] and [y0, y1] in m (empty for
+    /// an index beyond the positions).
+    pub fn prints_at(&self, i: usize) -> Vec<[[f64; 2]; 2]> {
+        let Some(p) = self.positions.get(i) else {
+            return Vec::new();
+        };
+        self.prints
+            .iter()
+            .find(|f| f.heading == p.heading)
+            .map_or_else(Vec::new, |f| {
+                f.prints
+                    .iter()
+                    .map(|[x, y]| [[p.x + x[0], p.x + x[1]], [p.y + y[0], p.y + y[1]]])
+                    .collect()
+            })
+    }
+
+    /// What was searched, for a table: `a uniform 11 × 9 grid`, `5 × 3 points per panel on
+    /// 3 × 3 panels`, with ` along joint:T2` where lines were given.
+    pub fn search(&self) -> String {
+        let mut s = match (self.grid_per_panel, self.grid) {
+            (Some([nx, ny]), _) => format!(
+                "{nx} × {ny} points per panel on {} × {} panels",
+                self.panels[0], self.panels[1]
+            ),
+            (None, Some([nx, ny])) => format!("a uniform {nx} × {ny} grid"),
+            (None, None) => String::from("no grid"),
+        };
+        if !self.along.is_empty() {
+            let lines: Vec<String> = self.along.iter().map(Along::to_string).collect();
+            s = format!("{s}, along {}", lines.join(", "));
+        }
+        s
+    }
+
     /// The index of the converged position with the largest `value`.
     fn argmax(positions: &[Position], value: impl Fn(&Position) -> f64) -> Option<usize> {
         (0..positions.len())
@@ -217,40 +421,160 @@ fn largest(values: impl Iterator<Item = Option<f64>>) -> Option<f64> {
     values.flatten().reduce(f64::max)
 }
 
-/// The reference points (x, y, heading) in grid order, the plate's sides and the spacing of the
-/// first heading's grid.
-type Grid = (Vec<[f64; 3]>, [f64; 2], [f64; 2]);
+/// The reference points of a search and what its maps and table need of the plate.
+struct Grid {
+    /// (x, y, heading) in grid order: heading, then y, then x (along lines: line by line).
+    points: Vec<[f64; 3]>,
+    /// The plate's sides, m.
+    plate: [f64; 2],
+    /// The largest step between neighbouring coordinates of the first heading's points, m.
+    spacing: [f64; 2],
+    /// Panels along x and y.
+    panels: [usize; 2],
+    /// The joint lines, m.
+    joints: Vec<JointLine>,
+    /// The prints about the reference point, per heading.
+    prints: Vec<Footprint>,
+}
 
-/// The grid of reference points of vehicle `v` for each heading: (x, y, heading) in grid
-/// order, and the spacing of the first heading's grid.
-fn grid(v: &Vehicle, options: &CriticalOptions) -> Result<Grid> {
+/// A line of [`Along`] resolved on the plate: the axis it lies across (0: a line x = const) and
+/// either a joint's coordinate (m) or which edge (false: the lower one).
+#[derive(Debug, Clone, Copy)]
+enum Line {
+    Joint { across: usize, at: f64 },
+    Edge { across: usize, high: bool },
+}
+
+/// `n` points across the panel [w0, w1], its sides included (the middle alone for n = 1);
+/// written so that t = 0 and t = 1 give w0 and w1 exactly, and a joint line shared by two
+/// panels is the same number from both.
+fn panel_points([w0, w1]: [f64; 2], n: usize) -> Vec<f64> {
+    if n == 1 {
+        return vec![0.5 * w0 + 0.5 * w1];
+    }
+    (0..n)
+        .map(|j| {
+            let t = j as f64 / (n - 1) as f64;
+            w0 * (1.0 - t) + w1 * t
+        })
+        .collect()
+}
+
+/// The grid of reference points of the model's vehicle `k` for each heading (see the module's
+/// description and [`CriticalOptions`]).
+fn grid(model: &Model, k: usize, options: &CriticalOptions) -> Result<Grid> {
+    let v = &model.vehicles[k];
     let [a, b] = v.frame.plate;
+    let half = [a / 2.0, b / 2.0];
     let [own_x, own_y, own] = v.at;
+    let axes = [Axis::X, Axis::Y];
+    // Joint lines in metres (the layout holds them in the unit system).
+    let to_m = |axis: Axis, u: f64| u / v.frame.scale_xy[usize::from(axis == Axis::Y)];
+    let joints: Vec<JointLine> = model
+        .layout
+        .joints
+        .iter()
+        .map(|j| JointLine {
+            name: j.name.clone(),
+            kind: j.kind.kind(),
+            axis: j.axis.name(),
+            at: to_m(j.axis, j.at),
+        })
+        .collect();
+    // The panels' sides along each axis: the plate's edges and every joint line between them.
+    let bounds: Vec<Vec<f64>> = axes
+        .iter()
+        .enumerate()
+        .map(|(i, &axis)| {
+            let mut s = vec![-half[i]];
+            s.extend(model.layout.lines(axis).iter().map(|&u| to_m(axis, u)));
+            s.push(half[i]);
+            s
+        })
+        .collect();
+    let panels = model.layout.panel_counts();
+    // The lines to search along, each checked against the plate before anything is solved.
+    let lines: Vec<Line> = options
+        .along
+        .iter()
+        .map(|line| match line {
+            Along::Joint(name) => model
+                .layout
+                .joints
+                .iter()
+                .find(|j| &j.name == name)
+                .map(|j| Line::Joint {
+                    across: usize::from(j.axis == Axis::Y),
+                    at: to_m(j.axis, j.at),
+                })
+                .ok_or_else(|| {
+                    let names: Vec<&str> = joints.iter().map(|j| j.name.as_str()).collect();
+                    Error::invalid(
+                        "along",
+                        format!(
+                            "no joint named `{name}`: {}; the plate's edges are edge:x-, edge:x+, edge:y-, edge:y+",
+                            if names.is_empty() {
+                                "the plate has no joints".to_string()
+                            } else {
+                                format!("the plate's joints are {}", names.join(", "))
+                            }
+                        ),
+                    )
+                }),
+            Along::Edge(e) => Ok(match e {
+                Edge::XMinus => Line::Edge { across: 0, high: false },
+                Edge::XPlus => Line::Edge { across: 0, high: true },
+                Edge::YMinus => Line::Edge { across: 1, high: false },
+                Edge::YPlus => Line::Edge { across: 1, high: true },
+            }),
+        })
+        .collect::<Result<_>>()?;
     let headings = if options.headings.is_empty() {
         vec![own]
     } else {
         options.headings.clone()
     };
+    // Coordinates closer than this are one (a hair, as the inset below).
+    let tol = 1e-9 * a.max(b);
+    let clean = |mut c: Vec<f64>| -> Vec<f64> {
+        c.sort_by(f64::total_cmp);
+        c.dedup_by(|p, q| (*p - *q).abs() <= tol);
+        c
+    };
     let mut points = Vec::new();
-    let mut spacing = [0.0; 2];
-    for (h, &heading) in headings.iter().enumerate() {
-        let prints = v.tires([0.0, 0.0, heading])?;
+    let mut prints = Vec::with_capacity(headings.len());
+    for &heading in &headings {
+        let tires = v.tires([0.0, 0.0, heading])?;
         let lo = |axis: usize| {
-            prints
+            tires
                 .iter()
                 .map(|t| t.centre[axis] - t.size[axis] / 2.0)
                 .fold(f64::INFINITY, f64::min)
         };
         let hi = |axis: usize| {
-            prints
+            tires
                 .iter()
                 .map(|t| t.centre[axis] + t.size[axis] / 2.0)
                 .fold(f64::NEG_INFINITY, f64::max)
         };
+        prints.push(Footprint {
+            heading,
+            prints: tires
+                .iter()
+                .map(|t| {
+                    let side =
+                        |i: usize| [t.centre[i] - t.size[i] / 2.0, t.centre[i] + t.size[i] / 2.0];
+                    [side(0), side(1)]
+                })
+                .collect(),
+        });
         // The reference points that keep every print on the plate, a hair inside.
         let inset = 1e-9 * a.max(b);
-        let range = |axis: usize, half: f64| -> Result<[f64; 2]> {
-            let r = [-half - lo(axis) + inset, half - hi(axis) - inset];
+        let range = |axis: usize| -> Result<[f64; 2]> {
+            let r = [
+                -half[axis] - lo(axis) + inset,
+                half[axis] - hi(axis) - inset,
+            ];
             if r[0] > r[1] {
                 return Err(Error::invalid(
                     "load",
@@ -263,31 +587,92 @@ fn grid(v: &Vehicle, options: &CriticalOptions) -> Result<Grid> {
             }
             Ok(r)
         };
-        let (rx, ry) = (range(0, a / 2.0)?, range(1, b / 2.0)?);
-        let along = |r: [f64; 2], n: usize, own: f64| -> Vec<f64> {
-            if n == 1 {
-                vec![own.clamp(r[0], r[1])]
-            } else {
-                (0..n)
-                    .map(|i| r[0] + (r[1] - r[0]) * i as f64 / (n - 1) as f64)
-                    .collect()
+        let r = [range(0)?, range(1)?];
+        let on_plate = |axis: usize, c: Vec<f64>| -> Vec<f64> {
+            clean(
+                c.into_iter()
+                    .map(|p| p.clamp(r[axis][0], r[axis][1]))
+                    .collect(),
+            )
+        };
+        // The grid's coordinates along one axis: uniform over the range, or per panel.
+        let along = |axis: usize, own: f64| -> Vec<f64> {
+            match options.grid_per_panel {
+                Some(n) => on_plate(
+                    axis,
+                    bounds[axis]
+                        .windows(2)
+                        .flat_map(|w| panel_points([w[0], w[1]], n[axis]))
+                        .collect(),
+                ),
+                None => {
+                    let (r, n) = (r[axis], options.grid[axis]);
+                    if n == 1 {
+                        vec![own.clamp(r[0], r[1])]
+                    } else {
+                        (0..n)
+                            .map(|i| r[0] + (r[1] - r[0]) * i as f64 / (n - 1) as f64)
+                            .collect()
+                    }
+                }
             }
         };
-        let xs = along(rx, options.grid[0], own_x);
-        let ys = along(ry, options.grid[1], own_y);
-        if h == 0 {
-            spacing = [
-                xs.get(1).map_or(0.0, |x1| x1 - xs[0]),
-                ys.get(1).map_or(0.0, |y1| y1 - ys[0]),
-            ];
+        let own_at = [own_x, own_y];
+        if lines.is_empty() {
+            let (xs, ys) = (along(0, own_x), along(1, own_y));
+            for &y in &ys {
+                for &x in &xs {
+                    points.push([x, y, heading]);
+                }
+            }
+            continue;
         }
-        for &y in &ys {
-            for &x in &xs {
-                points.push([x, y, heading]);
+        let first = points.len();
+        for &line in &lines {
+            // Across the line: before it, on it and after it (a joint), or the edge's own.
+            let (across, at) = match line {
+                Line::Joint { across, at } => (
+                    across,
+                    on_plate(across, vec![at - hi(across), at, at - lo(across)]),
+                ),
+                Line::Edge { across, high } => (across, vec![r[across][usize::from(high)]]),
+            };
+            let length = along(1 - across, own_at[1 - across]);
+            let (xs, ys) = if across == 0 {
+                (at, length)
+            } else {
+                (length, at)
+            };
+            for &y in &ys {
+                for &x in &xs {
+                    // A point two lines share (where they cross) is solved once.
+                    let seen = points[first..]
+                        .iter()
+                        .any(|p: &[f64; 3]| (p[0] - x).abs() <= tol && (p[1] - y).abs() <= tol);
+                    if !seen {
+                        points.push([x, y, heading]);
+                    }
+                }
             }
         }
     }
-    Ok((points, [a, b], spacing))
+    // The largest step between neighbouring coordinates of the first heading's points.
+    let first: Vec<&[f64; 3]> = points.iter().take_while(|p| p[2] == headings[0]).collect();
+    let step = |axis: usize| {
+        clean(first.iter().map(|p| p[axis]).collect())
+            .windows(2)
+            .map(|w| w[1] - w[0])
+            .fold(0.0, f64::max)
+    };
+    let spacing = [step(0), step(1)];
+    Ok(Grid {
+        points,
+        plate: [a, b],
+        spacing,
+        panels,
+        joints,
+        prints,
+    })
 }
 
 /// The model to move the load in: the problem's (or, with combinations, the one the load acts
@@ -381,9 +766,15 @@ fn chosen(problem: &Problem, options: &CriticalOptions) -> Result<(Model, usize,
 /// How many positions the search of `options` has (every heading's grid): what a caller that
 /// spreads them over workers (`options.indices`) splits.
 pub fn critical_positions(problem: &Problem, options: &CriticalOptions) -> Result<usize> {
+    Ok(critical_points(problem, options)?.len())
+}
+
+/// The reference points (x, y, m; heading, degrees) of the search of `options`, in the order
+/// it solves them (every heading's grid), without solving.
+pub fn critical_points(problem: &Problem, options: &CriticalOptions) -> Result<Vec<[f64; 3]>> {
     options.validate()?;
     let (model, k, _) = chosen(problem, options)?;
-    Ok(grid(&model.vehicles[k], options)?.0.len())
+    Ok(grid(&model, k, options)?.points)
 }
 
 /// Move the load over the grid and solve every position; see the module's description.
@@ -395,7 +786,14 @@ pub fn critical(
     options.validate()?;
     let t0 = Instant::now();
     let (model, k, combination) = chosen(problem, options)?;
-    let (points, plate, spacing) = grid(&model.vehicles[k], options)?;
+    let Grid {
+        points,
+        plate,
+        spacing,
+        panels,
+        joints,
+        prints,
+    } = grid(&model, k, options)?;
     let picked: Vec<usize> = match &options.indices {
         Some(ix) => {
             if let Some(&bad) = ix.iter().find(|&&i| i >= points.len()) {
@@ -493,7 +891,13 @@ pub fn critical(
         load: options.load.clone(),
         combination,
         plate,
+        grid: options.grid_per_panel.is_none().then_some(options.grid),
+        grid_per_panel: options.grid_per_panel,
+        panels,
+        along: options.along.clone(),
         spacing,
+        joints,
+        prints,
         bottom: Critical::argmax(&positions, |p| p.bottom),
         top: Critical::argmax(&positions, |p| p.top),
         deflection: Critical::argmax(&positions, |p| p.w_max),

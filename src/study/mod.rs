@@ -22,7 +22,10 @@ mod options;
 mod stability;
 mod tradeoff;
 
-pub use critical::{critical, critical_positions, Critical, CriticalOptions, Position};
+pub use critical::{
+    critical, critical_points, critical_positions, Along, Critical, CriticalOptions, Edge,
+    Footprint, JointLine, Position,
+};
 pub use eps_sweep::{eps_sweep, Sweep, SweepRow};
 pub use options::{ConstraintVariants, EpsSweepOptions, TradeoffOptions};
 pub use stability::{

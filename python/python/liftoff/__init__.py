@@ -196,7 +196,9 @@ def critical(
     scene: Scene,
     load: str,
     *,
-    grid: Sequence[int] = (11, 9),
+    grid: Optional[Sequence[int]] = None,
+    grid_per_panel: Optional[Sequence[int]] = None,
+    along: Optional[Sequence[str]] = None,
     headings: Optional[Sequence[float]] = None,
     combination: Optional[str] = None,
     warm: bool = True,
@@ -220,10 +222,21 @@ def critical(
     tasks of ``chunk`` positions (each task assembles the operators once); rows come back in
     grid order. The search warm-starts runs of 10 positions of the grid, whatever the cores:
     a ``chunk`` that is a multiple of 10 gives every digit (and step count) of a local search.
+
+    ``grid`` (default ``(11, 9)``) spaces the points evenly over the plate; ``grid_per_panel``
+    (``(NX, NY)``, not with ``grid``) puts NX × NY points in every panel between the joint
+    lines, its sides included (``5`` → 0, ¼, ½, ¾, 1 of the panel), so that the middle of a
+    panel's edge and the joints are on it. ``along`` (``["joint:T2", "edge:y-"]``) searches
+    along those lines only: across a joint the prints just before it, the load on it and the
+    prints just after it; on an edge the prints touching it (as ``liftoff critical --along``).
     """
+    if grid is not None and grid_per_panel is not None:
+        raise SceneError("give grid or grid_per_panel, not both", "invalid", "grid_per_panel")
     kind, text = scene_pair(scene)
     opts = options_json(method, options)
-    spec = {"load": load, "grid": list(grid), "headings": list(headings or []),
+    spec = {"load": load, "grid": list(grid if grid is not None else (11, 9)),
+            "grid_per_panel": list(grid_per_panel) if grid_per_panel is not None else None,
+            "along": list(along or []), "headings": list(headings or []),
             "combination": combination, "warm": warm}
     if client is None:
         doc = json.loads(_progress.run(_core.critical, progress, kind, text, opts, json.dumps(spec)))

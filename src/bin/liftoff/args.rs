@@ -9,7 +9,7 @@ use liftoff::choice::Choice;
 use liftoff::method::{Contact, MethodKind, QpForm, QpSolver, Route, Start};
 use liftoff::model::{ConstraintPoints, SymmetryMode};
 use liftoff::scene::PenaltySpec;
-use liftoff::study::{ConstraintVariants, EpsSweepOptions};
+use liftoff::study::{Along, ConstraintVariants, EpsSweepOptions};
 
 #[derive(Parser)]
 #[command(
@@ -236,9 +236,21 @@ pub(crate) struct CriticalArgs {
     /// The `name` of the axle or gear load to move.
     #[arg(long)]
     pub(crate) load: String,
-    /// Reference points along x and y, NX,NY (1 keeps the load's own coordinate).
+    /// Reference points along x and y, NX,NY, evenly over the plate (1 keeps the load's own
+    /// coordinate).
     #[arg(long, value_parser = parse_grid, default_value = "11,9")]
     pub(crate) grid: [usize; 2],
+    /// Reference points per panel instead, NX,NY: in every panel between the joint lines, its
+    /// sides included (5 → 0, ¼, ½, ¾, 1 of the panel; 1 → its middle); points on the plate's
+    /// edge move inward to where the prints touch it.
+    #[arg(long, value_parser = parse_grid, conflicts_with = "grid")]
+    pub(crate) grid_per_panel: Option<[usize; 2]>,
+    /// Search along a line only: joint:NAME (the prints just before the joint, the load on it,
+    /// the prints just after it) or edge:x-, edge:x+, edge:y-, edge:y+ (the prints touching
+    /// that edge); the points along it from --grid or --grid-per-panel. Repeat or separate by
+    /// commas for several lines.
+    #[arg(long, value_delimiter = ',', value_parser = parse_along)]
+    pub(crate) along: Vec<Along>,
     /// Headings to try, degrees (default: the load's own).
     #[arg(long, value_delimiter = ',')]
     pub(crate) headings: Vec<f64>,
@@ -262,6 +274,13 @@ pub(crate) struct CriticalArgs {
     /// Print critical.json to stdout instead of the table.
     #[arg(long)]
     pub(crate) json: bool,
+}
+
+fn parse_along(s: &str) -> Result<Along, String> {
+    s.parse().map_err(|e: liftoff::Error| match e {
+        liftoff::Error::Invalid { message, .. } => message,
+        e => e.to_string(),
+    })
 }
 
 fn parse_grid(s: &str) -> Result<[usize; 2], String> {

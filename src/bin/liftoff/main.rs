@@ -269,6 +269,8 @@ fn critical(args: CriticalArgs) -> Result<(), Failure> {
     let options = study::CriticalOptions {
         load: args.load,
         grid: args.grid,
+        grid_per_panel: args.grid_per_panel,
+        along: args.along,
         headings: args.headings,
         combination: args.combination,
         warm: !args.cold,

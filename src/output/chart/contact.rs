@@ -132,6 +132,7 @@ fn contact_picture<'a>(
         boundary: true,
         overlay,
         levelled: Some((&field.pressure, shown)),
+        grey: None,
     }
 }
 
@@ -252,6 +253,7 @@ pub fn write_field_map(
         boundary: false,
         overlay,
         levelled: nodal.then_some((map.values, shown)),
+        grey: None,
     };
     write_svg(svg, &picture)?;
     write_png(png, &picture)
@@ -405,6 +407,7 @@ mod tests {
             zones: vec![[(0.5, -0.8), (1.8, 0.2)]],
             lines: vec![[(-2.0, 0.8), (2.0, 0.8)]],
             prints: vec![[(1.0, -0.2), (1.3, 0.1)]],
+            ..Overlay::default()
         };
         draw(&svg, &png, &overlay).expect("map with overlay");
         let over = std::fs::read_to_string(&svg).expect("read svg");

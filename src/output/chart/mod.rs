@@ -50,6 +50,7 @@ pub(crate) use contact::{write_contact_regions, Region};
 pub use influence::{write_influence_map, Influence};
 pub use loglog::{write_loglog_svg, Series};
 pub use overlay::Overlay;
+pub(crate) use plan::short;
 pub use profile::write_profiles_svg;
 pub use semilog::{write_semilogx, SemilogSeries};
 pub use units::{Scale, Units};

@@ -1,6 +1,8 @@
 //! What a plan view draws over its colour map: the area where the pressure exceeds the allowable
 //! one (hatched, outlined by a dashed contour), voids (dashed rectangles), soft or stiff zones
-//! (dotted rectangles) and line loads (thick lines), each named in the legend when present.
+//! (dotted rectangles), line loads (thick lines), tire prints (thin rectangles) and, on a
+//! critical search's maps, its positions (small dots) and the critical one (a ringed dot),
+//! each named in the legend when present.
 
 use plotters::coord::Shift;
 use plotters::element::{DashedPathElement, DottedPathElement};
@@ -28,6 +30,10 @@ pub struct Overlay {
     pub lines: Vec<[(f64, f64); 2]>,
     /// The tire prints of the axles and gears, as opposite corners.
     pub prints: Vec<[(f64, f64); 2]>,
+    /// Points drawn as small dots: the positions a critical search solved.
+    pub dots: Vec<(f64, f64)>,
+    /// Marked points, each with its legend text: a critical search's governing position.
+    pub marks: Vec<((f64, f64), String)>,
 }
 
 impl Overlay {
@@ -60,6 +66,8 @@ impl Overlay {
                     _ => None,
                 })
                 .collect(),
+            dots: Vec::new(),
+            marks: Vec::new(),
         }
     }
 
@@ -70,6 +78,8 @@ impl Overlay {
             && self.zones.is_empty()
             && self.lines.is_empty()
             && self.prints.is_empty()
+            && self.dots.is_empty()
+            && self.marks.is_empty()
     }
 }
 
@@ -95,6 +105,10 @@ pub(super) enum Swatch {
     Lifted,
     /// A tire print: a thin solid rectangle.
     Print,
+    /// A searched position: a small dot.
+    Dot,
+    /// A marked (critical) position: a ringed dot.
+    Mark,
 }
 
 /// Width of a legend swatch, pixels.
@@ -179,6 +193,13 @@ impl Swatch {
                     style::LINE_LOAD.stroke_width(LINE_LOAD_W),
                 ))
                 .map_err(txt),
+            Swatch::Dot => area.draw(&dot((x + w / 2, y))).map_err(txt),
+            Swatch::Mark => {
+                for part in mark((x + w / 2, y)) {
+                    area.draw(&part).map_err(txt)?;
+                }
+                Ok(())
+            }
             Swatch::Joint(kind) => {
                 let ((dash, gap), colour) = style::joint(kind);
                 area.draw(&DashedPathElement::new(
@@ -199,6 +220,40 @@ const ZONE_DOT: i32 = 2;
 const ZONE_SPACING: i32 = 6;
 /// Stroke width of line loads, pixels.
 const LINE_LOAD_W: u32 = 5;
+
+/// Radius of a searched position's dot, pixels.
+const DOT_R: i32 = 2;
+/// Outer radius of a marked position's ring, pixels.
+const MARK_R: i32 = 8;
+
+/// A searched position's dot at `at` (any coordinates).
+fn dot<C>(at: C) -> Circle<C, i32> {
+    Circle::new(at, DOT_R, style::MARKER.mix(0.75).filled())
+}
+
+/// A marked position at `at`: a white disc ringed in black with a black centre — visible on
+/// the pale and the dark end of the ramp.
+fn mark<C: Clone>(at: C) -> [Circle<C, i32>; 3] {
+    [
+        Circle::new(at.clone(), MARK_R, style::HALO.filled()),
+        Circle::new(at.clone(), MARK_R - 1, style::MARKER.stroke_width(2)),
+        Circle::new(at, 3, style::MARKER.filled()),
+    ]
+}
+
+/// The dots and the marks of `overlay` (drawn last, over the joint lines).
+pub(super) fn draw_marks<DB: DrawingBackend>(
+    chart: &mut Plan<'_, DB>,
+    overlay: &Overlay,
+) -> DrawResult<()> {
+    chart
+        .draw_series(overlay.dots.iter().map(|&p| dot(p)))
+        .map_err(txt)?;
+    for (p, _) in &overlay.marks {
+        chart.draw_series(mark(*p)).map_err(txt)?;
+    }
+    Ok(())
+}
 
 /// A zone outline along `path`: dots [`ZONE_SPACING`] pixels apart.
 fn dotted<I>(path: I) -> DottedPathElement<I::IntoIter, i32, Circle<(i32, i32), i32>>

@@ -6,7 +6,7 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::axis::{finite_extent, tick_format, Plan, Ticked};
-use super::overlay::{draw_exceedance, draw_features, Overlay, Swatch, SWATCH_W};
+use super::overlay::{draw_exceedance, draw_features, draw_marks, Overlay, Swatch, SWATCH_W};
 use super::style::{self, DESC_FONT, LABEL_FONT};
 use super::units::Scale;
 use super::{text_width, titled, txt, DrawResult, Picture, FONT};
@@ -237,6 +237,9 @@ pub(super) struct ColourMap<'a> {
     /// Nodal values (field units) the overlay's allowable level applies to, and how they are
     /// shown; without them no level is drawn.
     pub levelled: Option<(&'a [f64], Scale)>,
+    /// What a grey cell means, for the legend, where not the default (lifted off on a contact
+    /// map, no value elsewhere).
+    pub grey: Option<&'a str>,
 }
 
 /// Height of one legend row, pixels.
@@ -259,15 +262,12 @@ impl ColourMap<'_> {
         // Grey cells say what they are: lifted on a contact map (its boundary drawn), no value
         // elsewhere.
         if self.cells.iter().any(|c| c.1.is_none()) {
-            out.push((
-                Swatch::Lifted,
-                if self.boundary {
-                    "lifted off (no pressure)"
-                } else {
-                    "no value"
-                }
-                .to_string(),
-            ));
+            let default = if self.boundary {
+                "lifted off (no pressure)"
+            } else {
+                "no value"
+            };
+            out.push((Swatch::Lifted, self.grey.unwrap_or(default).to_string()));
         }
         // The joint lines of a jointed plate, one entry per kind, in the order first drawn.
         let mut kinds: Vec<JointType> = Vec::new();
@@ -310,10 +310,14 @@ impl ColourMap<'_> {
             (!o.zones.is_empty(), Swatch::Zone, "soft or stiff zone"),
             (!o.lines.is_empty(), Swatch::LineLoad, "line load"),
             (!o.prints.is_empty(), Swatch::Print, "tire print"),
+            (!o.dots.is_empty(), Swatch::Dot, "searched position"),
         ] {
             if present {
                 out.push((swatch, text.to_string()));
             }
+        }
+        for (_, text) in &o.marks {
+            out.push((Swatch::Mark, text.clone()));
         }
         out.extend(joints);
         out
@@ -338,7 +342,7 @@ impl ColourMap<'_> {
 }
 
 /// A value with three significant digits, trailing zeros dropped.
-pub(super) fn short(v: f64) -> String {
+pub(crate) fn short(v: f64) -> String {
     if v == 0.0 || !v.is_finite() {
         return format!("{v}");
     }
@@ -401,6 +405,7 @@ impl Picture for ColourMap<'_> {
         }
         joints(&mut chart, field, xr, yr)?;
         outline(&mut chart, xr, yr)?;
+        draw_marks(&mut chart, self.overlay)?;
 
         // Colour bar, its ends level with the map's (up to a quarter of the height).
         let (lo, hi) = (self.scale.lo, self.scale.hi);

@@ -149,6 +149,8 @@ pub(crate) const ZONE: RGBColor = RGBColor(20, 70, 160);
 pub(crate) const LINE_LOAD: RGBColor = RGBColor(25, 25, 90);
 /// Tire prints of axles and gears: thin outlines.
 pub(crate) const PRINT: RGBColor = RGBColor(20, 20, 20);
+/// Positions of a critical search: the searched ones' dots, the critical one's ring.
+pub(crate) const MARKER: RGBColor = RGBColor(0, 0, 0);
 
 /// Joint lines on plan views, by kind ([`joint`]).
 pub(crate) const JOINT_FREE: RGBColor = RGBColor(0, 0, 0);
