@@ -255,7 +255,7 @@ fn jointed_slabs_report_the_critical_joint_shear_and_dowel_force() {
     let csv = std::fs::read_to_string(dir.path().join("critical.csv")).expect("csv");
     let header = csv.lines().next().expect("header");
     assert!(
-        header.contains("joint_shear_N_per_m,dowel_force_N"),
+        header.contains("joint_shear [N/m],dowel_force [N]"),
         "{header}"
     );
     let json = std::fs::read_to_string(dir.path().join("critical.json")).expect("json");

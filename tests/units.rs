@@ -485,3 +485,63 @@ fn every_file_of_a_us_scene_is_its_si_twins_after_conversion() {
     }
     assert!(checked >= 25, "{checked} physical keys compared");
 }
+
+/// `critical` on a US scene reports in US units: critical.csv's headers name them, and every
+/// position's stresses, deflection and place are its SI twin's after conversion (1e-9 of the
+/// largest: the two searches solve the same problems). The twin is the WSDOT slab's with an
+/// ESAL axle, moved over a 3 × 3 grid.
+#[test]
+fn critical_reports_a_us_scene_in_us_units() {
+    use liftoff::study::CriticalOptions;
+    let axle = "[[load]]\nkind = \"axle\"\nname = \"truck\"\nstandard = \"esal-single-dual\"\n\
+                x = 0.0\ny = 0.0\n";
+    let options = CriticalOptions {
+        load: "truck".into(),
+        grid: [3, 3],
+        ..CriticalOptions::default()
+    };
+    let search = |scene: &str| {
+        let p =
+            Problem::from_toml(&scene.replace("[mesh]", &format!("{axle}[mesh]"))).expect("scene");
+        options.run(&p, &liftoff::Monitor::NONE).expect("critical")
+    };
+    let (us, si) = (search(US), search(SI));
+    let (a, b) = (us.reported(), si.reported());
+    assert_eq!(a.positions.len(), b.positions.len());
+    let psi = PSI;
+    let peak = b
+        .positions
+        .iter()
+        .fold(0.0_f64, |m, p| m.max(p.bottom.abs()));
+    for (p, q) in a.positions.iter().zip(&b.positions) {
+        assert!(
+            (p.bottom * psi - q.bottom).abs() <= 1e-9 * peak,
+            "{} {}",
+            p.bottom,
+            q.bottom
+        );
+        assert!(
+            (p.x * 0.0254 - q.x).abs() <= 1e-12,
+            "{} in vs {} m",
+            p.x,
+            q.x
+        );
+        assert!(
+            (p.w_max * 0.0254 - q.w_max).abs() <= 1e-9 * q.w_max.abs(),
+            "w_max"
+        );
+    }
+    let dir = tempfile::tempdir().expect("tempdir");
+    liftoff::output::critical::write_critical(dir.path(), &us, "WSDOT").expect("files");
+    let csv = std::fs::read_to_string(dir.path().join("critical.csv")).expect("csv");
+    let header = csv.lines().next().expect("header");
+    assert!(
+        header.starts_with("x [in],y [in],heading [°]") && header.contains("bottom [psi]"),
+        "{header}"
+    );
+    let table = liftoff::output::critical::critical_table("WSDOT", &us, None);
+    assert!(
+        table.contains(" psi") && table.contains(" in,") && !table.contains("MPa"),
+        "{table}"
+    );
+}

@@ -463,9 +463,8 @@ fn critical(
 ) -> PyResult<String> {
     let o: liftoff::study::CriticalOptions = serde_json::from_str(critical)
         .map_err(|e| to_py(Error::invalid("critical", e.to_string())))?;
-    json(&run(py, progress, |m| {
-        o.run(&problem(kind, text, options)?, m)
-    })?)
+    // In the scene's unit system, as critical.json.
+    json(&run(py, progress, |m| o.run(&problem(kind, text, options)?, m))?.reported())
 }
 
 /// How many positions `critical` has for these options.

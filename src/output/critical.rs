@@ -14,11 +14,41 @@ use crate::model::Physical;
 use crate::post::JointLine;
 use crate::study::{Critical, Position, RunOutcome};
 
-/// critical.csv: one row per position.
+/// critical.csv: one row per position, `c` as reported ([`Critical::reported`]), each header
+/// with its unit.
 fn csv(c: &Critical) -> String {
-    let mut s = String::from(
-        "x_m,y_m,heading_deg,outcome,iterations,bottom_Pa,bottom_x_m,bottom_y_m,top_Pa,top_x_m,top_y_m,w_max_m,contact_fraction,joint_shear_N_per_m,dowel_force_N,time_s\n",
-    );
+    use crate::units::Measure::{
+        self, Deflection, Force, ForcePerLength, Length, Number, Pressure,
+    };
+    let sys = c.units;
+    let columns: [(&str, Option<Measure>); 16] = [
+        ("x", Some(Length)),
+        ("y", Some(Length)),
+        ("heading", Some(Measure::Degrees)),
+        ("outcome", None),
+        ("iterations", None),
+        ("bottom", Some(Pressure)),
+        ("bottom_x", Some(Length)),
+        ("bottom_y", Some(Length)),
+        ("top", Some(Pressure)),
+        ("top_x", Some(Length)),
+        ("top_y", Some(Length)),
+        ("w_max", Some(Deflection)),
+        ("contact_fraction", Some(Number)),
+        ("joint_shear", Some(ForcePerLength)),
+        ("dowel_force", Some(Force)),
+        ("time", None),
+    ];
+    let header: Vec<String> = columns
+        .iter()
+        .map(|&(n, m)| match (n, m) {
+            ("time", _) => "time [s]".to_string(),
+            (n, Some(m)) => m.header(n, sys),
+            (n, None) => n.to_string(),
+        })
+        .collect();
+    let mut s = header.join(",");
+    s.push('\n');
     // Empty where the plate has no joint of that kind.
     let opt = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v:e}"));
     for p in &c.positions {
@@ -46,23 +76,30 @@ fn csv(c: &Critical) -> String {
     s
 }
 
-/// Write critical.csv, critical.json and the influence maps into `dir`, staged.
-pub fn write_critical(dir: &Path, c: &Critical, title: &str) -> Result<Vec<PathBuf>> {
-    let mut st = Staged::new(dir)?;
-    st.write_text("critical.csv", &csv(c))?;
-    let json = serde_json::to_string_pretty(c)
-        .map_err(|e| Error::numerical("critical.json", format!("cannot serialise: {e}")))?;
-    st.write_text("critical.json", &json)?;
-    // Stresses and deflections are SI (Pa, m): the maps show MPa and mm.
-    let units = Units::new(
+/// The maps' and the table's units: the scene's system, lengths in metres of the search.
+fn units_of(c: &Critical) -> Units {
+    Units::new(
         Some(Physical {
             half_length: 1.0,
             force: 1.0,
             rigidity: 1.0,
-            units: crate::units::UnitSystem::Si,
+            units: c.units.unwrap_or_default(),
         }),
         1.0,
-    );
+    )
+}
+
+/// Write critical.csv, critical.json and the influence maps into `dir`, staged.
+pub fn write_critical(dir: &Path, c: &Critical, title: &str) -> Result<Vec<PathBuf>> {
+    let mut st = Staged::new(dir)?;
+    let reported = c.reported();
+    st.write_text("critical.csv", &csv(&reported))?;
+    let json = serde_json::to_string_pretty(&reported)
+        .map_err(|e| Error::numerical("critical.json", format!("cannot serialise: {e}")))?;
+    st.write_text("critical.json", &json)?;
+    // The search is in SI (Pa, m): the maps show it in the scene's system (MPa and mm, or
+    // psi and mils).
+    let units = units_of(c);
     // One map per heading would need its own grid; the maps show the first heading's.
     let heading = c.positions.first().map_or(0.0, |p| p.heading);
     let mine: Vec<&Position> = c
@@ -186,31 +223,47 @@ pub fn critical_table(title: &str, c: &Critical, files: Option<(usize, &Path)>) 
         c.total_s,
         1e3 * (c.total_s - c.assemble_s) / n.max(1) as f64
     );
+    let units = units_of(c);
+    let (len, st, defl) = (units.length(), units.stress(), units.deflection());
     let line = |what: &str, i: Option<usize>, value: &dyn Fn(&Position) -> String| -> String {
         match i {
             Some(i) => {
                 let p = &c.positions[i];
                 format!(
-                    "  {what:<20}: {} with the load at ({:.3}, {:.3}) m, heading {}°",
+                    "  {what:<20}: {} with the load at ({:.3}, {:.3}) {}, heading {}°",
                     value(p),
-                    p.x,
-                    p.y,
+                    len.apply(p.x),
+                    len.apply(p.y),
+                    len.unit,
                     p.heading
                 )
             }
             None => format!("  {what:<20}: no position converged"),
         }
     };
-    let stress =
-        |v: f64, at: [f64; 2]| format!("{:.3} MPa at ({:.2}, {:.2})", v * 1e-6, at[0], at[1]);
-    let kilo = |v: Option<f64>, unit: &str| format!("{:.3} {unit}", v.unwrap_or(f64::NAN) * 1e-3);
+    let stress = |v: f64, at: [f64; 2]| {
+        format!(
+            "{:.3} {} at ({:.2}, {:.2})",
+            st.apply(v),
+            st.unit,
+            len.apply(at[0]),
+            len.apply(at[1])
+        )
+    };
     let (bottom, top) = (
         |p: &Position| stress(p.bottom, p.bottom_at),
         |p: &Position| stress(p.top, p.top_at),
     );
-    let deflection = |p: &Position| format!("{:.3} mm", p.w_max * 1e3);
-    let shear = |p: &Position| kilo(p.joint_shear, "kN/m");
-    let dowel = |p: &Position| kilo(p.dowel_force, "kN");
+    let deflection = |p: &Position| format!("{:.3} {}", defl.apply(p.w_max), defl.unit);
+    let (sh, fo) = (units.shear(), units.force());
+    let shear = |p: &Position| {
+        let v = p.joint_shear.unwrap_or(f64::NAN);
+        format!("{:.3} {}", sh.apply(v), sh.unit)
+    };
+    let dowel = |p: &Position| {
+        let v = p.dowel_force.unwrap_or(f64::NAN);
+        format!("{:.3} {}", fo.apply(v), fo.unit)
+    };
     let mut rows: Vec<(&str, Option<usize>, &ValueOf)> = vec![
         ("bottom tension", c.bottom, &bottom),
         ("top tension", c.top, &top),

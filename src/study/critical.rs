@@ -34,6 +34,7 @@ use crate::layout::{Axis, JointType};
 use crate::model::{Model, SymmetryMode};
 use crate::monitor::{Cases, Monitor};
 use crate::scene::Problem;
+use crate::units::{Measure, UnitSystem};
 
 /// What to move and over what.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
@@ -340,9 +341,59 @@ pub struct Critical {
     pub assemble_s: f64,
     /// Wall-clock seconds of the whole search.
     pub total_s: f64,
+    /// The scene's unit system (None: a dimensionless scene). The values above are SI;
+    /// [`Self::reported`] gives them in this system, as the files show them.
+    pub units: Option<UnitSystem>,
 }
 
 impl Critical {
+    /// The search as critical.csv and critical.json report it: every position, stress,
+    /// deflection and force in the scene's unit system (an SI or dimensionless scene's
+    /// unchanged).
+    pub fn reported(&self) -> Critical {
+        let sys = self.units;
+        let (l, p, d) = (Measure::Length, Measure::Pressure, Measure::Deflection);
+        let c = |m: Measure, v: f64| m.from_si(sys, v);
+        let pair = |v: [f64; 2]| [c(l, v[0]), c(l, v[1])];
+        Critical {
+            plate: pair(self.plate),
+            spacing: pair(self.spacing),
+            joints: self
+                .joints
+                .iter()
+                .map(|j| JointLine {
+                    at: c(l, j.at),
+                    ..j.clone()
+                })
+                .collect(),
+            prints: self
+                .prints
+                .iter()
+                .map(|f| Footprint {
+                    heading: f.heading,
+                    prints: f.prints.iter().map(|[x, y]| [pair(*x), pair(*y)]).collect(),
+                })
+                .collect(),
+            positions: self
+                .positions
+                .iter()
+                .map(|q| Position {
+                    x: c(l, q.x),
+                    y: c(l, q.y),
+                    bottom: c(p, q.bottom),
+                    bottom_at: pair(q.bottom_at),
+                    top: c(p, q.top),
+                    top_at: pair(q.top_at),
+                    w_max: c(d, q.w_max),
+                    joint_shear: q.joint_shear.map(|v| c(Measure::ForcePerLength, v)),
+                    dowel_force: q.dowel_force.map(|v| c(Measure::Force, v)),
+                    ..q.clone()
+                })
+                .collect(),
+            ..self.clone()
+        }
+    }
+
     /// The tire prints of the load at position `i`, as [x0, x1] and [y0, y1] in m (empty for
     /// an index beyond the positions).
     pub fn prints_at(&self, i: usize) -> Vec<[[f64; 2]; 2]> {
@@ -906,6 +957,7 @@ pub fn critical(
         positions,
         assemble_s,
         total_s: t0.elapsed().as_secs_f64(),
+        units: model.physical.map(|p| p.units),
     })
 }
 

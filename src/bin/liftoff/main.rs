@@ -293,7 +293,7 @@ fn critical(args: CriticalArgs) -> Result<(), Failure> {
         None => 0,
     };
     if args.json {
-        let json = serde_json::to_string_pretty(&c)
+        let json = serde_json::to_string_pretty(&c.reported())
             .map_err(|e| Failure::new(exit::IO, format!("cannot serialise critical.json: {e}")))?;
         println!("{json}");
     } else {
