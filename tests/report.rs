@@ -113,7 +113,7 @@ fn at<'a>(v: &'a Value, path: &str) -> Option<&'a Value> {
 
 /// The number and the unit of a shown value (`0.3108 mm`, `95.24 %`).
 fn shown_number(s: &str) -> (f64, String) {
-    let mut parts = s.split('\u{2009}');
+    let mut parts = s.split('\u{202F}');
     let n = parts
         .next()
         .unwrap_or_default()

@@ -718,12 +718,12 @@ impl<'a> Shown<'a> {
     }
 }
 
-/// `number unit` (a thin space before the unit), or the number alone.
+/// `number unit` (a narrow no-break space before the unit, so that the two never part), or the number alone.
 pub(crate) fn with_unit(number: &str, unit: &str) -> String {
     if unit.is_empty() {
         number.to_string()
     } else {
-        format!("{number}\u{2009}{}", esc(unit))
+        format!("{number}\u{202F}{}", esc(unit))
     }
 }
 
