@@ -46,6 +46,14 @@ pub enum Error {
     /// The caller asked the run to stop (a cancel flag, Ctrl-C in Python) before it finished.
     #[error("cancelled before the run finished: {0}")]
     Cancelled(String),
+    /// A directory given as liftoff's output holds none (`liftoff report DIR`).
+    #[error("`{dir}` holds no liftoff output: expected {expected}")]
+    NoOutput {
+        /// The directory.
+        dir: String,
+        /// The files that would have made it one.
+        expected: String,
+    },
     /// Reading or writing a file failed.
     #[error("{path}: {source}")]
     Io {
@@ -72,7 +80,10 @@ impl Error {
             Error::TooLarge { .. } => ErrorKind::TooLarge,
             Error::Infeasible(_) => ErrorKind::Infeasible,
             Error::Numerical { .. } => ErrorKind::Numerical,
-            Error::Parse(_) | Error::Invalid { .. } | Error::Unsupported(_) => ErrorKind::Invalid,
+            Error::Parse(_)
+            | Error::Invalid { .. }
+            | Error::Unsupported(_)
+            | Error::NoOutput { .. } => ErrorKind::Invalid,
             Error::Io { .. } => ErrorKind::Io,
             Error::Cancelled(_) => ErrorKind::Cancelled,
         }

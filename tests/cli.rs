@@ -618,7 +618,8 @@ fn bad_options_exit_2_and_write_nothing(
 }
 
 /// A solve that did not converge prints its diagnosis and no result: no deflection, pressure
-/// or stress line (its last iterate is not a solution), no files, exit 4 (issue 32 §1.2).
+/// or stress line (its last iterate is not a solution), no files — no report.html either,
+/// with `--report` — exit 4 (issue 32 §1.2).
 #[test]
 fn a_solve_that_did_not_converge_shows_no_result() {
     let dir = tempfile::tempdir().expect("tempdir");
@@ -633,6 +634,7 @@ fn a_solve_that_did_not_converge_shows_no_result() {
         path.to_str().unwrap_or_default(),
         "--out",
         out.to_str().unwrap_or_default(),
+        "--report",
     ]);
     let (text, err) = (stdout(&o), stderr(&o));
     assert_eq!(o.status.code(), Some(4), "{text}{err}");
@@ -651,4 +653,25 @@ fn a_solve_that_did_not_converge_shows_no_result() {
     }
     assert!(err.contains("no result is shown"), "{err}");
     assert!(!out.join("summary.json").exists(), "files written");
+    assert!(!out.exists(), "the output directory created");
+}
+
+/// `--report` writes into `--out`: without it the command line refuses the flag (exit 2) and
+/// runs nothing.
+#[test]
+fn report_flag_needs_out() {
+    for args in [
+        vec!["solve", "example:footing", "--report"],
+        vec![
+            "critical",
+            "example:pavement-3x3",
+            "--load",
+            "axle",
+            "--report",
+        ],
+    ] {
+        let o = liftoff(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains("--out"), "{args:?}: {}", stderr(&o));
+    }
 }

@@ -627,3 +627,37 @@ fn e67_an_interrupted_run_writes_nothing_and_exits_130() {
     );
     assert!(!out.exists(), "E68: no --out after an interrupted solve");
 }
+
+/// E70: a directory without liftoff output (or none at all) is refused, naming it and what was
+/// expected, and nothing is written.
+#[test]
+fn e69_a_report_of_a_directory_without_output_is_refused() {
+    let tmp = tempfile::tempdir().expect("tempdir");
+    let empty = tmp.path().join("empty");
+    std::fs::create_dir(&empty).expect("mkdir");
+    std::fs::write(empty.join("notes.txt"), "not liftoff's").expect("write");
+    let missing = tmp.path().join("missing");
+    for dir in [&empty, &missing] {
+        let o = Command::new(env!("CARGO_BIN_EXE_liftoff"))
+            .args(["report", dir.to_str().unwrap_or_default()])
+            .output()
+            .expect("run liftoff");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "E70: exit code ({err})");
+        assert!(
+            err.contains(&format!(
+                "`{}` holds no liftoff output: expected",
+                dir.display()
+            )) && err.contains("summary.json")
+                && err.contains("critical.json"),
+            "E70: message: {err}"
+        );
+    }
+    let left: Vec<_> = std::fs::read_dir(&empty)
+        .expect("read_dir")
+        .flatten()
+        .map(|e| e.file_name())
+        .collect();
+    assert_eq!(left, ["notes.txt"], "E70: nothing written");
+    assert!(!missing.exists(), "E70: no directory created");
+}

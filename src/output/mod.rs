@@ -8,6 +8,7 @@ pub mod chart;
 pub mod combinations;
 pub mod critical;
 pub mod joints;
+pub mod report;
 pub mod studies;
 
 pub mod study_tables;

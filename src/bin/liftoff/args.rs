@@ -39,6 +39,9 @@ pub(crate) enum Command {
     Critical(CriticalArgs),
     /// Regenerate the paper's Figs. 3–7 (SVG and PNG), paper.json and paper.md.
     Paper(PaperArgs),
+    /// Write one self-contained HTML page (summary, tables, charts) from an output directory
+    /// of `solve` or `critical`.
+    Report(ReportArgs),
     /// Print a bundled example scene (without NAME: list them).
     Example {
         /// Name of the example.
@@ -57,6 +60,7 @@ impl Command {
             Command::Stability(_) => "stability",
             Command::Critical(_) => "critical",
             Command::Paper(_) => "paper",
+            Command::Report(_) => "report",
             Command::Example { .. } => "example",
         }
     }
@@ -131,6 +135,9 @@ pub(crate) struct SolveArgs {
     /// Print summary.json to stdout instead of the table.
     #[arg(long)]
     pub(crate) json: bool,
+    /// Also write report.html (one self-contained page) into --out.
+    #[arg(long, requires = "out")]
+    pub(crate) report: bool,
 }
 
 #[derive(clap::Args)]
@@ -274,6 +281,18 @@ pub(crate) struct CriticalArgs {
     /// Print critical.json to stdout instead of the table.
     #[arg(long)]
     pub(crate) json: bool,
+    /// Also write report.html (one self-contained page) into --out.
+    #[arg(long, requires = "out")]
+    pub(crate) report: bool,
+}
+
+#[derive(clap::Args)]
+pub(crate) struct ReportArgs {
+    /// An output directory of `liftoff solve` or `liftoff critical`.
+    pub(crate) dir: PathBuf,
+    /// The page to write (default: DIR/report.html).
+    #[arg(long)]
+    pub(crate) out: Option<PathBuf>,
 }
 
 fn parse_along(s: &str) -> Result<Along, String> {

@@ -15,8 +15,8 @@ use liftoff::study::{self, EpsSweepOptions, TradeoffOptions};
 use liftoff::{Error, ErrorKind, Outcome, Problem, Source};
 
 use args::{
-    Cli, Command, CompareArgs, CriticalArgs, EpsSweepArgs, PaperArgs, SolveArgs, StabilityArgs,
-    TradeoffArgs,
+    Cli, Command, CompareArgs, CriticalArgs, EpsSweepArgs, PaperArgs, ReportArgs, SolveArgs,
+    StabilityArgs, TradeoffArgs,
 };
 use failure::{exit, Failure};
 use progress::with_progress;
@@ -34,6 +34,7 @@ fn main() -> ExitCode {
         Command::Stability(args) => stability(args),
         Command::Critical(args) => critical(args),
         Command::Paper(args) => paper(args),
+        Command::Report(args) => report(args),
         Command::Example { name } => example(name.as_deref()),
     };
     // A failure after Ctrl-C is the interruption's doing, whatever the error says.
@@ -129,6 +130,7 @@ fn solve(args: SolveArgs) -> Result<(), Failure> {
         },
         _ => 0,
     };
+    let written = written + with_report(args.report, args.out.as_deref(), written)?;
     let files = args.out.as_deref().map(|dir| (written, dir));
     if args.json {
         println!("{}", outcome.to_json()?);
@@ -292,6 +294,7 @@ fn critical(args: CriticalArgs) -> Result<(), Failure> {
         Some(dir) => output::critical::write_critical(dir, &c, title)?.len(),
         None => 0,
     };
+    let written = written + with_report(args.report, args.out.as_deref(), written)?;
     if args.json {
         let json = serde_json::to_string_pretty(&c.reported())
             .map_err(|e| Failure::new(exit::IO, format!("cannot serialise critical.json: {e}")))?;
@@ -300,6 +303,28 @@ fn critical(args: CriticalArgs) -> Result<(), Failure> {
         let files = args.out.as_deref().map(|dir| (written, dir));
         print!("{}", output::critical::critical_table(title, &c, files));
     }
+    Ok(())
+}
+
+/// `--report`: report.html into the output directory once its other files are in place
+/// (`written` of them; none when the run wrote none). Returns the files it added.
+fn with_report(
+    report: bool,
+    dir: Option<&std::path::Path>,
+    written: usize,
+) -> Result<usize, Failure> {
+    match dir {
+        Some(dir) if report && written > 0 => {
+            output::report::write_report(dir, None)?;
+            Ok(1)
+        }
+        _ => Ok(0),
+    }
+}
+
+fn report(args: ReportArgs) -> Result<(), Failure> {
+    let path = output::report::write_report(&args.dir, args.out.as_deref())?;
+    println!("written: {}", path.display());
     Ok(())
 }
 
@@ -353,7 +378,7 @@ mod tests {
             let mut v: Vec<String> = cmd
                 .get_arguments()
                 .filter_map(|a| a.get_long())
-                .filter(|l| !matches!(*l, "out" | "json" | "help"))
+                .filter(|l| !matches!(*l, "out" | "json" | "report" | "help"))
                 .map(|l| l.replace('-', "_"))
                 .collect();
             v.sort();
