@@ -545,3 +545,45 @@ fn critical_reports_a_us_scene_in_us_units() {
         "{table}"
     );
 }
+
+/// The report of a US scene's solve shows its numbers in US units: the page's largest bottom
+/// stress is summary.json's (psi, held as the file holds it) and its deflection in mils (the
+/// file's inches × 1000), so the page never reads inches or psi as metres or pascals.
+#[test]
+fn the_report_of_a_us_scene_shows_us_units() {
+    let p = Problem::from_toml(JOINTED_US).expect("scene");
+    let a = analyse(&p).expect("solve");
+    let dir = tempfile::tempdir().expect("tempdir");
+    liftoff::output::write_all(dir.path(), &p.model, &a.report, &a.summary).expect("files");
+    let page = liftoff::output::report::write_report(dir.path(), None).expect("report");
+    let html = std::fs::read_to_string(page).expect("page");
+    let summary: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(dir.path().join("summary.json")).expect("summary"),
+    )
+    .expect("json");
+    // A row's shown value: `<td class="value">92.61 psi</td>` after its data-key.
+    let shown = |key: &str| -> (f64, String) {
+        let at = html
+            .find(&format!("data-key=\"{key}\""))
+            .unwrap_or_else(|| panic!("no row {key}"));
+        let cell = &html[at..];
+        let start = cell.find("class=\"value\">").expect("value cell") + 14;
+        let text = &cell[start..start + cell[start..].find('<').expect("end")];
+        let (n, unit) = text.split_once('\u{202F}').expect("number and unit");
+        (n.parse().expect("number"), unit.to_string())
+    };
+    let (stress, unit) = shown("stresses.bottom.value");
+    let held = summary["stresses"]["bottom"]["value"]
+        .as_f64()
+        .expect("psi");
+    assert_eq!(unit, "psi");
+    // The page prints four significant digits.
+    assert!(
+        (stress - held).abs() <= 5e-4 * held,
+        "{stress} psi vs {held}"
+    );
+    let (w, unit) = shown("w_max");
+    let held = summary["w_max"].as_f64().expect("in") * 1e3;
+    assert_eq!(unit, "mils");
+    assert!((w - held).abs() <= 5e-4 * held, "{w} mils vs {held}");
+}

@@ -51,16 +51,19 @@ pub(crate) fn read(l: &mut Listing) -> Result<Option<Part>> {
         Some(t) => t.to_string(),
         None => format!("Critical positions of the load {load}"),
     };
-    // critical.json holds SI values (Pa, m, N/m, N); a US scene's file may say so.
+    // critical.json holds its values in the scene's system (`units`: "si" — Pa, m, N/m, N —
+    // or "us" — psi, in, lbf/in, lbf).
+    let system = v
+        .get("units")
+        .and_then(Value::as_str)
+        .and_then(<crate::units::UnitSystem as crate::choice::Choice>::from_name)
+        .unwrap_or_default();
     let units = Units::new(
         Some(crate::model::Physical {
             half_length: 1.0,
             force: 1.0,
             rigidity: 1.0,
-            units: match at(&v, "physical.units").and_then(Value::as_str) {
-                Some("us") => crate::units::UnitSystem::Us,
-                _ => crate::units::UnitSystem::Si,
-            },
+            units: system,
         }),
         1.0,
     );
@@ -78,9 +81,10 @@ pub(crate) fn read(l: &mut Listing) -> Result<Option<Part>> {
         .filter(|p| p.get("outcome").and_then(Value::as_str) == Some("converged"))
         .count();
     let mut html = String::new();
+    let held = esc(Kind::Length.held(&shown.units));
     let _ = writeln!(
         html,
-        "<p>The load <code>{}</code>{} moved over {} positions ({} converged) on a plate of {} m; grid spacing {} m; operators assembled once in {} s, the whole search {} s.</p>",
+        "<p>The load <code>{}</code>{} moved over {} positions ({} converged) on a plate of {} {held}; grid spacing {} {held}; operators assembled once in {} s, the whole search {} s.</p>",
         esc(load),
         match at(&v, "combination").and_then(Value::as_str) {
             Some(c) => format!(" in the combination <code>{}</code> (the rest of its loads present)", esc(c)),

@@ -13,6 +13,7 @@ use serde_json::Value;
 
 use crate::error::{Error, Result};
 use crate::output::chart::{Scale, Units};
+use crate::units::Measure;
 
 /// The files of an output directory — its own and those of its sub-folders one level down (the
 /// combinations' folders) — with what the report does with each.
@@ -625,8 +626,41 @@ impl Kind {
         }
     }
 
-    /// How a value held in the files is shown (the charts' own units).
+    /// What the kind measures, for the unit a file holds it in.
+    fn measure(self) -> Option<Measure> {
+        match self {
+            Kind::Length => Some(Measure::Length),
+            Kind::Deflection => Some(Measure::Deflection),
+            Kind::Pressure | Kind::Stress => Some(Measure::Pressure),
+            Kind::Moment => Some(Measure::MomentPerLength),
+            Kind::Shear => Some(Measure::ForcePerLength),
+            Kind::Force => Some(Measure::Force),
+            Kind::Fraction | Kind::Plain => None,
+        }
+    }
+
+    /// The unit a physical scene's files hold this kind in: its system's base unit (m, Pa, N
+    /// in SI; in, psi, lbf in US units).
+    pub(crate) fn held(self, u: &Units) -> &'static str {
+        self.measure().map_or("", |m| m.unit(Some(u.system())))
+    }
+
+    /// How a value held in the files is shown (the charts' own units): the files hold the
+    /// scene's system (in, psi for a US scene), the charts' scales start from SI.
     pub(crate) fn scale(self, u: &Units) -> Scale {
+        let s = self.shown(u);
+        let to_si = match self.measure() {
+            Some(m) if u.is_physical() => 1.0 / m.from_si(Some(u.system()), 1.0),
+            _ => 1.0,
+        };
+        Scale {
+            factor: s.factor * to_si,
+            ..s
+        }
+    }
+
+    /// The charts' scale of this kind, from SI.
+    fn shown(self, u: &Units) -> Scale {
         match self {
             Kind::Length => u.length(),
             Kind::Deflection => u.deflection(),
@@ -693,7 +727,7 @@ impl<'a> Shown<'a> {
             return u.to_string();
         }
         if self.units.is_physical() || kind.si().is_empty() {
-            kind.si().to_string()
+            kind.held(&self.units).to_string()
         } else {
             "units of P, L".to_string()
         }
@@ -704,7 +738,7 @@ impl<'a> Shown<'a> {
     /// held otherwise.
     pub(crate) fn value(&self, path: &str, kind: Kind, v: f64) -> (String, String) {
         let held = self.held(path, kind);
-        let standard = held == kind.si() || held == "units of P, L";
+        let standard = held == kind.held(&self.units) || held == "units of P, L";
         let shown = if standard {
             let s = kind.scale(&self.units);
             with_unit(&num(s.apply(v)), s.unit)
