@@ -44,6 +44,7 @@ pub mod check;
 pub mod choice;
 pub mod combination;
 pub mod compare;
+pub mod damage;
 pub mod entry;
 pub mod error;
 pub mod examples;
