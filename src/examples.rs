@@ -38,6 +38,11 @@ pub const SCENES: &[(&str, &str, &str)] = &[
         include_str!("../examples/pavement-3x3.toml"),
     ),
     (
+        "pavement-damage",
+        "a lane of three doweled slabs over 20 years: single axles in three levels, lateral wander, day and night curling; `liftoff damage` sums the MEPDG's fatigue damage",
+        include_str!("../examples/pavement-damage.toml"),
+    ),
+    (
         "warehouse-bay",
         "warehouse floor: 3 × 3 sawn panels of 6 m on a clay layer, drying-shrinkage curl, a 60 kN rack post at a joint crossing",
         include_str!("../examples/warehouse-bay.toml"),

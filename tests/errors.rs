@@ -661,3 +661,69 @@ fn e69_a_report_of_a_directory_without_output_is_refused() {
     assert_eq!(left, ["notes.txt"], "E70: nothing written");
     assert!(!missing.exists(), "E70: no directory created");
 }
+
+/// E71 and E72 for `liftoff damage`: a bad value of `[traffic]`, `[climate]` or `[damage]` is
+/// refused naming its key (here a group naming no axle of the scene, with the names it has;
+/// climate shares that do not add up to one; an unknown relation) — also when the scene is only
+/// solved —, and `damage` of a scene without `[traffic]` says what it needs. Exit 2 each, and
+/// nothing written to `--out`.
+#[test]
+fn e71_e72_damage_inputs_are_refused_naming_the_key() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let out = dir.path().join("out");
+    let scene = liftoff::examples::SCENES
+        .iter()
+        .find(|(n, _, _)| *n == "pavement-damage")
+        .map(|(_, _, t)| *t)
+        .expect("bundled");
+    let run = |text: &str, command: &str| -> (Option<i32>, String) {
+        let path = dir.path().join("scene.toml");
+        std::fs::write(&path, text).expect("write");
+        let o = Command::new(env!("CARGO_BIN_EXE_liftoff"))
+            .arg(command)
+            .arg(&path)
+            .arg("--out")
+            .arg(&out)
+            .output()
+            .expect("run liftoff");
+        let files = std::fs::read_dir(&out).map(|d| d.count()).unwrap_or(0);
+        assert_eq!(files, 0, "no output files after a failure");
+        (o.status.code(), String::from_utf8_lossy(&o.stderr).into())
+    };
+    for (from, to, message) in [
+        (
+            "load = \"single\"",
+            "load = \"tandem\"",
+            "scene field `traffic.group[0].load`: no axle or gear named `tandem` in the scene; named axles and gears: single",
+        ),
+        (
+            "share = 0.30",
+            "share = 0.40",
+            "scene field `climate.bin`: the shares add up to 1.1",
+        ),
+        (
+            "model = \"mepdg\"",
+            "model = \"aashto93\"",
+            "scene field `damage.model`:",
+        ),
+    ] {
+        assert!(scene.contains(from), "{from}");
+        for command in ["damage", "solve"] {
+            let (code, err) = run(&scene.replace(from, to), command);
+            assert_eq!(code, Some(2), "E71: exit code ({err})");
+            assert!(err.contains(message), "E71: message: {err}");
+        }
+    }
+    let bare = scene
+        .split("[traffic]")
+        .next()
+        .unwrap_or_default()
+        .to_string()
+        + "[mesh]\nelements = [90, 24]\n";
+    let (code, err) = run(&bare, "damage");
+    assert_eq!(code, Some(2), "E72: exit code ({err})");
+    assert!(
+        err.contains("scene field `traffic`: missing: `liftoff damage` needs the scene's [traffic] and [damage]"),
+        "E72: message: {err}"
+    );
+}

@@ -91,6 +91,7 @@ impl RandomScene {
             route: liftoff::Route::Auto,
             memory_limit: liftoff::budget::default_memory_limit(),
             warnings: Vec::new(),
+            damage: None,
         }
     }
 }

@@ -7,6 +7,7 @@
 pub mod chart;
 pub mod combinations;
 pub mod critical;
+pub mod damage;
 pub mod joints;
 pub mod report;
 pub mod studies;

@@ -213,6 +213,7 @@ impl Case {
             route: crate::method::Route::Auto,
             memory_limit: default_memory_limit(),
             warnings: Vec::new(),
+            damage: None,
         })
     }
 }

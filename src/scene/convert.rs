@@ -52,6 +52,10 @@ pub fn quantity(
             _ => None,
         },
         ("load", "temperatures") => Some(Temperature),
+        ("traffic.wander", "mean" | "deviation") => Some(Length),
+        ("traffic.group", "levels") => Some(Force),
+        ("climate.bin", "difference") => Some(TemperatureDifference),
+        ("damage", "modulus_of_rupture") => Some(Pressure),
         _ => None,
     }
 }
@@ -103,6 +107,20 @@ pub fn scene_to_si(scene: &mut Value, system: UnitSystem) -> Result<()> {
                     each(zones, |z| table(z, "zone", None, soil, system));
                 }
             }
+            "traffic" => {
+                if let Some(w) = value.get_mut("wander") {
+                    table(w, "traffic.wander", None, soil, system);
+                }
+                if let Some(groups) = value.get_mut("group") {
+                    each(groups, |g| table(g, "traffic.group", None, soil, system));
+                }
+            }
+            "climate" => {
+                if let Some(bins) = value.get_mut("bin") {
+                    each(bins, |b| table(b, "climate.bin", None, soil, system));
+                }
+            }
+            "damage" => table(value, "damage", None, soil, system),
             "void" | "joint" | "panel" | "load" => {
                 each(value, |entry| {
                     let kind = entry

@@ -79,6 +79,9 @@ pub struct Problem {
     /// Values that suggest a unit slip, each naming its key ([`plausible`]); the scene still
     /// solves.
     pub warnings: Vec<String>,
+    /// The traffic, climate and fatigue relation of `liftoff damage` (None: the scene has no
+    /// `[traffic]`/`[damage]`).
+    pub damage: Option<crate::damage::plan::DamagePlan>,
 }
 
 impl SceneFile {

@@ -510,6 +510,15 @@ pub struct SceneFile {
     /// Panels with their own thickness or Young's modulus.
     #[serde(default)]
     pub panel: Vec<PanelSpec>,
+    /// Traffic over the design life (`liftoff damage`).
+    #[serde(default)]
+    pub traffic: Option<crate::damage::plan::TrafficSpec>,
+    /// Climate bins of temperature difference (`liftoff damage`).
+    #[serde(default)]
+    pub climate: Option<crate::damage::plan::ClimateSpec>,
+    /// The fatigue relation and the concrete's strength (`liftoff damage`).
+    #[serde(default)]
+    pub damage: Option<crate::damage::plan::DamageSpec>,
     /// Mesh.
     #[serde(default)]
     pub mesh: MeshSpec,

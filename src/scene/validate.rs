@@ -547,6 +547,7 @@ pub fn problem(file: &SceneFile) -> Result<Problem> {
         ));
     }
     let warnings = super::plausible::warnings(file, &model);
+    let damage = damage_plan(file, &model, !combinations.is_empty())?;
     Ok(Problem {
         model,
         combinations,
@@ -554,5 +555,45 @@ pub fn problem(file: &SceneFile) -> Result<Problem> {
         route: file.solver.route,
         memory_limit,
         warnings,
+        damage,
     })
+}
+
+/// The scene's `[traffic]`, `[climate]` and `[damage]`, checked against its model, with the
+/// curvature of one kelvin of temperature difference in the model's units (κ D / P = D α / (H P)).
+fn damage_plan(
+    file: &SceneFile,
+    model: &Model,
+    combinations: bool,
+) -> Result<Option<crate::damage::plan::DamagePlan>> {
+    let names: Vec<Option<&str>> = model.vehicles.iter().map(|v| v.name.as_deref()).collect();
+    let Some(mut plan) = crate::damage::plan::DamagePlan::new(
+        file.traffic.as_ref(),
+        file.climate.as_ref(),
+        file.damage.as_ref(),
+        &names,
+    )?
+    else {
+        return Ok(None);
+    };
+    if combinations {
+        return Err(Error::invalid(
+            "combination",
+            "a damage scene holds its loads without [[combination]]: the traffic's groups, levels and climate bins make its cases",
+        ));
+    }
+    plan.curvature_per_kelvin = match (&file.plate, model.physical) {
+        (Some(p), Some(ph)) => p
+            .thermal_expansion
+            .map(|alpha| ph.rigidity * alpha / (p.thickness * model.load_scale)),
+        _ => None,
+    };
+    if plan.curvature_per_kelvin.is_none() && plan.climate.iter().any(|c| c.difference.is_finite())
+    {
+        return Err(Error::invalid(
+            "plate.thermal_expansion",
+            "missing: the climate bins give temperature differences; give the plate's coefficient of thermal expansion in 1/K (concrete ≈ 1.0e-5)",
+        ));
+    }
+    Ok(Some(plan))
 }

@@ -17,6 +17,7 @@ use crate::error::ErrorKind;
 use crate::solve::StatusKind;
 
 mod critical;
+mod damage;
 mod eps_sweep;
 mod options;
 mod stability;
@@ -26,6 +27,7 @@ pub use critical::{
     critical, critical_points, critical_positions, Along, Critical, CriticalOptions, Edge,
     Footprint, JointLine, Position,
 };
+pub use damage::{damage, Cracking, Damage, Governing, Pass, Peak};
 pub use eps_sweep::{eps_sweep, Sweep, SweepRow};
 pub use options::{ConstraintVariants, EpsSweepOptions, TradeoffOptions};
 pub use stability::{

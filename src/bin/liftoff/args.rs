@@ -37,6 +37,9 @@ pub(crate) enum Command {
     /// Move a named axle or gear load over the plate: the positions that give the largest
     /// bottom and top stress and deflection, and influence maps.
     Critical(CriticalArgs),
+    /// Fatigue damage over the scene's [traffic] and [climate]: every case a pass of its axle
+    /// group along the lane, the Miner sum at both faces of every element.
+    Damage(DamageArgs),
     /// Regenerate the paper's Figs. 3–7 (SVG and PNG), paper.json and paper.md.
     Paper(PaperArgs),
     /// Write one self-contained HTML page (summary, tables, charts) from an output directory
@@ -59,6 +62,7 @@ impl Command {
             Command::Tradeoff(_) => "tradeoff",
             Command::Stability(_) => "stability",
             Command::Critical(_) => "critical",
+            Command::Damage(_) => "damage",
             Command::Paper(_) => "paper",
             Command::Report(_) => "report",
             Command::Example { .. } => "example",
@@ -284,6 +288,24 @@ pub(crate) struct CriticalArgs {
     /// Also write report.html (one self-contained page) into --out.
     #[arg(long, requires = "out")]
     pub(crate) report: bool,
+}
+
+/// The flags of `damage`; the traffic, climate and relation are the scene's.
+#[derive(clap::Args)]
+pub(crate) struct DamageArgs {
+    /// Scene file (TOML) with [traffic], [damage] and optionally [climate], or `example:NAME`.
+    pub(crate) scene: String,
+    /// Method for unbonded contact (overrides [solver] method).
+    #[arg(long, value_parser = choice::<MethodKind>())]
+    pub(crate) method: Option<MethodKind>,
+    #[command(flatten)]
+    pub(crate) overrides: Overrides,
+    /// Directory for damage.csv, passes.csv, damage.json and the damage maps.
+    #[arg(long)]
+    pub(crate) out: Option<PathBuf>,
+    /// Print damage.json to stdout instead of the table.
+    #[arg(long)]
+    pub(crate) json: bool,
 }
 
 #[derive(clap::Args)]

@@ -15,8 +15,8 @@ use liftoff::study::{self, EpsSweepOptions, TradeoffOptions};
 use liftoff::{Error, ErrorKind, Outcome, Problem, Source};
 
 use args::{
-    Cli, Command, CompareArgs, CriticalArgs, EpsSweepArgs, PaperArgs, ReportArgs, SolveArgs,
-    StabilityArgs, TradeoffArgs,
+    Cli, Command, CompareArgs, CriticalArgs, DamageArgs, EpsSweepArgs, PaperArgs, ReportArgs,
+    SolveArgs, StabilityArgs, TradeoffArgs,
 };
 use failure::{exit, Failure};
 use progress::with_progress;
@@ -33,6 +33,7 @@ fn main() -> ExitCode {
         Command::Tradeoff(args) => tradeoff(args),
         Command::Stability(args) => stability(args),
         Command::Critical(args) => critical(args),
+        Command::Damage(args) => damage(args),
         Command::Paper(args) => paper(args),
         Command::Report(args) => report(args),
         Command::Example { name } => example(name.as_deref()),
@@ -302,6 +303,43 @@ fn critical(args: CriticalArgs) -> Result<(), Failure> {
     } else {
         let files = args.out.as_deref().map(|dir| (written, dir));
         print!("{}", output::critical::critical_table(title, &c, files));
+    }
+    Ok(())
+}
+
+fn damage(args: DamageArgs) -> Result<(), Failure> {
+    let overrides = liftoff::scene::Overrides {
+        method: args.method,
+        ..args.overrides.library()
+    };
+    let problem = load_problem(&args.scene, &overrides)?;
+    if let Some(dir) = &args.out {
+        output::prepare_dir(dir)?;
+    }
+    let d = with_progress(false, |m| study::damage(&problem, m))
+        .map_err(|e| Failure::in_scene(&args.scene, e))?;
+    interrupt::check()?;
+    let title = &problem.model.title;
+    let written = match &args.out {
+        Some(dir) => output::damage::write_damage(dir, &d, title)?.len(),
+        None => 0,
+    };
+    if args.json {
+        let json = serde_json::to_string_pretty(&d.reported())
+            .map_err(|e| Failure::new(exit::IO, format!("cannot serialise damage.json: {e}")))?;
+        println!("{json}");
+    } else {
+        let files = args.out.as_deref().map(|dir| (written, dir));
+        print!("{}", output::damage::damage_table(title, &d, files));
+    }
+    if !d.complete {
+        return Err(Failure::new(
+            exit::SOLVER,
+            format!(
+                "{} pass(es) did not converge: the damage sums are incomplete",
+                d.missing.len()
+            ),
+        ));
     }
     Ok(())
 }

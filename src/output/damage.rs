@@ -1,0 +1,234 @@
+//! The files and the table of `liftoff damage`: `damage.csv` (Σ n/N at both faces of every
+//! element), `passes.csv` (one row per case: the group, its load, lateral position and climate
+//! bin, its repetitions, its largest stress of each face and where, the allowed repetitions
+//! there and its share of the governing damage), `damage.json` (all of it) and the damage maps
+//! `damage-bottom.svg/png` (bottom-up) and `damage-top.svg/png` (top-down), the governing element
+//! marked. Every value is in the scene's unit system, each header with its unit.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use super::chart::{self, Overlay, Units};
+use super::Staged;
+use crate::error::{Error, Result};
+use crate::study::Damage;
+use crate::units::Measure;
+
+fn csv_damage(d: &Damage) -> String {
+    let sys = d.units;
+    let mut s = format!(
+        "{},{},{},{}\n",
+        Measure::Length.header("x", sys),
+        Measure::Length.header("y", sys),
+        Measure::Number.header("damage_bottom", sys),
+        Measure::Number.header("damage_top", sys),
+    );
+    let l = |v: f64| Measure::Length.from_si(sys, v);
+    for i in 0..d.x.len() {
+        let _ = writeln!(
+            s,
+            "{:.12e},{:.12e},{:.12e},{:.12e}",
+            l(d.x[i]),
+            l(d.y[i]),
+            d.bottom[i],
+            d.top[i]
+        );
+    }
+    s
+}
+
+fn csv_passes(d: &Damage) -> String {
+    let sys = d.units;
+    let (l, p, f) = (Measure::Length, Measure::Pressure, Measure::Force);
+    let t = match sys {
+        Some(crate::units::UnitSystem::Us) => "°F",
+        _ => "K",
+    };
+    let mut s = [
+        "group".to_string(),
+        f.header("load", sys),
+        l.header("offset", sys),
+        format!("difference [{t}]"),
+        "repetitions".into(),
+        "outcome".into(),
+        "solves".into(),
+        p.header("bottom", sys),
+        l.header("bottom_x", sys),
+        l.header("bottom_y", sys),
+        "bottom_allowed".into(),
+        p.header("top", sys),
+        l.header("top_x", sys),
+        l.header("top_y", sys),
+        "top_allowed".into(),
+        "bottom_share".into(),
+        "top_share".into(),
+    ]
+    .join(",");
+    s.push('\n');
+    let c = |m: Measure, v: f64| m.from_si(sys, v);
+    let opt = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v:e}"));
+    for q in &d.passes {
+        let diff = q.difference.map(|k| match sys {
+            Some(crate::units::UnitSystem::Us) => k * 9.0 / 5.0,
+            _ => k,
+        });
+        let _ = writeln!(
+            s,
+            "{},{:e},{:e},{},{:e},{},{},{:e},{:e},{:e},{},{:e},{:e},{:e},{},{:e},{:e}",
+            q.group,
+            c(f, q.load),
+            c(l, q.offset),
+            opt(diff),
+            q.repetitions,
+            q.outcome,
+            q.solves,
+            c(p, q.bottom.stress),
+            c(l, q.bottom.x),
+            c(l, q.bottom.y),
+            opt(q.bottom.allowed),
+            c(p, q.top.stress),
+            c(l, q.top.x),
+            c(l, q.top.y),
+            opt(q.top.allowed),
+            q.bottom_share,
+            q.top_share,
+        );
+    }
+    s
+}
+
+/// The maps' units: the scene's system, lengths in metres of the field.
+fn units_of(d: &Damage) -> Units {
+    Units::new(
+        Some(crate::model::Physical {
+            half_length: 1.0,
+            force: 1.0,
+            rigidity: 1.0,
+            units: d.units.unwrap_or_default(),
+        }),
+        1.0,
+    )
+}
+
+/// Write damage.csv, passes.csv, damage.json and the two damage maps into `dir`, staged.
+pub fn write_damage(dir: &Path, d: &Damage, title: &str) -> Result<Vec<PathBuf>> {
+    let mut st = Staged::new(dir)?;
+    st.write_text("damage.csv", &csv_damage(d))?;
+    st.write_text("passes.csv", &csv_passes(d))?;
+    let json = serde_json::to_string_pretty(&d.reported())
+        .map_err(|e| Error::numerical("damage.json", format!("cannot serialise: {e}")))?;
+    st.write_text("damage.json", &json)?;
+    let units = units_of(d);
+    let length = units.length();
+    let number = chart::Scale {
+        unit: "",
+        factor: 1.0,
+    };
+    for (face, values, g, what) in [
+        ("bottom", &d.bottom, d.governing_bottom, "bottom-up"),
+        ("top", &d.top, d.governing_top, "top-down"),
+    ] {
+        let overlay = Overlay {
+            marks: vec![(
+                (g.x, g.y),
+                format!(
+                    "governing: Σ n/N = {} at ({:.2}, {:.2}) {}",
+                    chart::short(g.damage),
+                    length.apply(g.x),
+                    length.apply(g.y),
+                    length.unit
+                ),
+            )],
+            ..Overlay::default()
+        };
+        let svg = st.path(&format!("damage-{face}.svg"));
+        let png = st.path(&format!("damage-{face}.png"));
+        chart::write_field_map(
+            &svg,
+            &png,
+            &d.field,
+            &chart::MapValues {
+                values,
+                name: "Σ n/N",
+                scale: number,
+            },
+            &format!(
+                "{title} — {what} fatigue damage ({}), largest {}{}",
+                d.model,
+                chart::short(g.damage),
+                if d.complete { "" } else { " (incomplete)" }
+            ),
+            &units,
+            &overlay,
+        )?;
+    }
+    st.commit()
+}
+
+/// What the command line prints.
+pub fn damage_table(title: &str, d: &Damage, files: Option<(usize, &Path)>) -> String {
+    let mut s = String::new();
+    let units = units_of(d);
+    let (len, st) = (units.length(), units.stress());
+    let converged = d.passes.len() - d.missing.len();
+    let _ = writeln!(
+        s,
+        "liftoff damage — {title}: {} passes ({converged} converged), {} solves",
+        d.passes.len(),
+        d.solves
+    );
+    let _ = writeln!(
+        s,
+        "  relation   : {}, modulus of rupture {:.3} {}; repetitions over the life {:.4} × the first year's",
+        d.model,
+        st.apply(d.rupture),
+        st.unit,
+        d.life_factor
+    );
+    let _ = writeln!(
+        s,
+        "  time       : operators assembled once in {:.3} s; the whole run {:.3} s",
+        d.assemble_s, d.total_s
+    );
+    for (what, g) in [
+        ("bottom-up", d.governing_bottom),
+        ("top-down", d.governing_top),
+    ] {
+        let _ = writeln!(
+            s,
+            "  {what:<11}: Σ n/N = {:.4e} at ({:.2}, {:.2}) {}",
+            g.damage,
+            len.apply(g.x),
+            len.apply(g.y),
+            len.unit
+        );
+    }
+    if let Some(c) = d.cracking {
+        let _ = writeln!(
+            s,
+            "  cracking   : bottom-up {:.2} %, top-down {:.2} %, total {:.2} % of slabs{}",
+            c.bottom,
+            c.top,
+            c.total,
+            c.at_reliability.map_or(String::new(), |r| format!(
+                ", {r:.2} % at the reliability asked"
+            ))
+        );
+    }
+    if !d.complete {
+        let _ = writeln!(
+            s,
+            "  INCOMPLETE : {} pass(es) did not converge and are not in the sums: {}",
+            d.missing.len(),
+            d.missing.join("; ")
+        );
+    }
+    if let Some((k, dir)) = files {
+        let _ = writeln!(
+            s,
+            "  files      : {k} in {} (damage.csv, passes.csv, damage.json, damage maps)",
+            dir.display()
+        );
+    }
+    s
+}

@@ -1,0 +1,548 @@
+//! Fatigue damage over traffic and climate (`liftoff damage`): every case of the scene's
+//! [`DamagePlan`] — an axle group or gear at a load level, at a lateral position, in a climate
+//! bin — is a pass of the group along the lane over the slab, each of its positions an
+//! unbonded contact solve of the whole jointed system (nothing is superposed across contact
+//! sets: a foundation that cannot pull makes each its own problem), on operators assembled
+//! once, each position started from the one before it, the passes side by side.
+//!
+//! **A pass is one cycle.** Each element and face takes one load cycle per pass, at the largest
+//! principal stress of that face over the pass's positions (tension positive; a face never in
+//! tension takes no damage). A tandem or a tridem counts as one cycle per pass too: the stress
+//! between its axles does not return to the unloaded state at the element the group governs,
+//! and counting one cycle per axle would need the stress history between the positions, which
+//! a pass of a few positions per slab does not resolve (the MEPDG counts axle groups as one
+//! load, FAARFIELD counts wheels in tandem closer than 72 in as one coverage).
+//!
+//! **The stress that enters N** is the largest principal stress σ₁ at the face, under the
+//! group, the scene's own loads (self-weight, built-in curl) and the bin's temperature
+//! difference together: the damage map covers every element, where no one direction of travel
+//! governs, and σ₁ is never below the stress along the travel direction that the MEPDG takes at
+//! the mid-slab edge (where the two coincide). The relation's N is that of the scene's
+//! `[damage] model` ([`crate::damage::relations`]); no factor for load transfer is applied, since
+//! the joints are modelled. FAARFIELD's N counts coverages; with the wander modelled as lateral
+//! positions, a pass at one position is one coverage of the elements it stresses, so its
+//! pass-to-coverage ratio is not applied again.
+//!
+//! **Load levels** keep the group's tire prints (the scene's size) and scale their pressure:
+//! the load vector is linear in the level. **Climate bins** add their temperature difference as
+//! a linear temperature load to the scene's own loads. Other axles and gears of the scene do not
+//! act in a group's passes.
+//!
+//! **No silent partial sums**: a pass with a position that did not converge contributes
+//! nothing, is named in [`Damage::missing`], and the totals say they are incomplete.
+
+use std::time::Instant;
+
+use rayon::prelude::*;
+use serde::Serialize;
+
+use super::RunOutcome;
+use crate::analysis;
+use crate::combination::assemble_for;
+use crate::damage::plan::{Bin, DamagePlan};
+use crate::damage::relations::{DamageModel, Mepdg};
+use crate::error::{Error, Result};
+use crate::model::{Load, Model};
+use crate::monitor::{Cases, Monitor};
+use crate::scene::Problem;
+
+/// One case's pass: what it was and what it caused.
+#[derive(Debug, Clone, Serialize)]
+pub struct Pass {
+    /// The group's scene load.
+    pub group: String,
+    /// The group's total load at this level, N.
+    pub load: f64,
+    /// Distance of the outer tire's edge from the slab's edge, m.
+    pub offset: f64,
+    /// The climate bin's temperature difference, K (null: the scene's own loads only).
+    pub difference: Option<f64>,
+    /// Passes over the design life.
+    pub repetitions: f64,
+    /// The group's reference point (x, y) at each position of the pass, m.
+    pub positions: Vec<[f64; 2]>,
+    /// How its solves ended: converged, or the first outcome that was not.
+    pub outcome: RunOutcome,
+    /// Solves (positions) of the pass.
+    pub solves: usize,
+    /// The largest σ₁ at the bottom over the pass and the element where (x, y), Pa and m.
+    pub bottom: Peak,
+    /// The same at the top face.
+    pub top: Peak,
+    /// Σ n/N of this pass's cycles at the element that governs the whole map's bottom face.
+    pub bottom_share: f64,
+    /// The same at the top face.
+    pub top_share: f64,
+}
+
+/// A face's largest stress over a pass: value, where, allowed repetitions there.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct Peak {
+    /// σ₁, Pa.
+    pub stress: f64,
+    /// Element centre x, m.
+    pub x: f64,
+    /// Element centre y, m.
+    pub y: f64,
+    /// N at that stress (null: unlimited).
+    pub allowed: Option<f64>,
+}
+
+/// The damage map's largest value on one face and where.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct Governing {
+    /// Σ n/N.
+    pub damage: f64,
+    /// Element centre x, m.
+    pub x: f64,
+    /// Element centre y, m.
+    pub y: f64,
+    /// Element index ie + je nx.
+    pub element: usize,
+}
+
+/// The MEPDG's cracking from the governing damage of each face.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct Cracking {
+    /// Bottom-up cracking, % of slabs.
+    pub bottom: f64,
+    /// Top-down cracking, %.
+    pub top: f64,
+    /// Total, % (a slab cracks one way or the other, not both).
+    pub total: f64,
+    /// Total at the plan's reliability (null: none given).
+    pub at_reliability: Option<f64>,
+}
+
+/// The result of a damage run.
+#[derive(Debug, Clone, Serialize)]
+pub struct Damage {
+    /// The relation's name (`pca`, `mepdg`, `faa`).
+    pub model: &'static str,
+    /// Modulus of rupture, Pa.
+    pub rupture: f64,
+    /// Repetitions over the life per first-year repetition.
+    pub life_factor: f64,
+    /// Elements along x and y.
+    pub elements: [usize; 2],
+    /// Element centres x, m (element ie + je nx).
+    pub x: Vec<f64>,
+    /// Element centres y, m.
+    pub y: Vec<f64>,
+    /// Σ n/N at the bottom face of every element (bottom-up).
+    pub bottom: Vec<f64>,
+    /// Σ n/N at the top face (top-down).
+    pub top: Vec<f64>,
+    /// Governing bottom-up damage.
+    pub governing_bottom: Governing,
+    /// Governing top-down damage.
+    pub governing_top: Governing,
+    /// The MEPDG's cracking (null for the other relations).
+    pub cracking: Option<Cracking>,
+    /// Every case's pass.
+    pub passes: Vec<Pass>,
+    /// The passes that did not converge (their damage is not in the sums).
+    pub missing: Vec<String>,
+    /// Whether every pass converged: the totals are complete.
+    pub complete: bool,
+    /// Solves run.
+    pub solves: usize,
+    /// Seconds to assemble the shared operators.
+    pub assemble_s: f64,
+    /// Seconds of the whole run.
+    pub total_s: f64,
+    /// The scene's unit system (None: dimensionless); the values above are SI
+    /// ([`Self::reported`] gives them in this system).
+    pub units: Option<crate::units::UnitSystem>,
+    /// The plate's field of one converged position (its grid and joints, for the maps).
+    #[serde(skip)]
+    pub field: crate::post::FullField,
+}
+
+impl Damage {
+    /// The run as damage.json reports it: stresses, places, loads and temperature differences
+    /// in the scene's unit system (an SI scene's unchanged); damage is a pure number.
+    pub fn reported(&self) -> Damage {
+        use crate::units::Measure::{Force, Length, Pressure};
+        let sys = self.units;
+        let l = |v: f64| Length.from_si(sys, v);
+        let peak = |p: &Peak| Peak {
+            stress: Pressure.from_si(sys, p.stress),
+            x: l(p.x),
+            y: l(p.y),
+            allowed: p.allowed,
+        };
+        let kelvin = |k: f64| match sys {
+            Some(crate::units::UnitSystem::Us) => k * 9.0 / 5.0,
+            _ => k,
+        };
+        Damage {
+            rupture: Pressure.from_si(sys, self.rupture),
+            x: self.x.iter().map(|&v| l(v)).collect(),
+            y: self.y.iter().map(|&v| l(v)).collect(),
+            governing_bottom: Governing {
+                x: l(self.governing_bottom.x),
+                y: l(self.governing_bottom.y),
+                ..self.governing_bottom
+            },
+            governing_top: Governing {
+                x: l(self.governing_top.x),
+                y: l(self.governing_top.y),
+                ..self.governing_top
+            },
+            passes: self
+                .passes
+                .iter()
+                .map(|p| Pass {
+                    load: Force.from_si(sys, p.load),
+                    offset: l(p.offset),
+                    difference: p.difference.map(kelvin),
+                    positions: p.positions.iter().map(|&[x, y]| [l(x), l(y)]).collect(),
+                    bottom: peak(&p.bottom),
+                    top: peak(&p.top),
+                    ..p.clone()
+                })
+                .collect(),
+            ..self.clone()
+        }
+    }
+}
+
+/// Run the scene's damage plan; see the module's description.
+pub fn damage(problem: &Problem, monitor: &Monitor<'_>) -> Result<Damage> {
+    let t0 = Instant::now();
+    let plan = problem.damage.as_ref().ok_or_else(|| {
+        Error::invalid(
+            "traffic",
+            "missing: `liftoff damage` needs the scene's [traffic] and [damage] (and optionally [climate])",
+        )
+    })?;
+    if problem.model.physical.is_none() {
+        return Err(Error::invalid(
+            "plate",
+            "a damage run needs a physical scene ([plate] and [foundation]): stresses in Pa against the modulus of rupture",
+        ));
+    }
+    let bins = plan.bins();
+    let passes: Vec<Vec<Model>> = bins
+        .iter()
+        .map(|b| pass_models(&problem.model, plan, b))
+        .collect::<Result<_>>()?;
+    let all: Vec<Model> = passes.iter().flatten().cloned().collect();
+    let base = assemble_for(problem, &all, "positions")?;
+    let assemble_s = t0.elapsed().as_secs_f64();
+    let cases = Cases::new(monitor, bins.len());
+    let inner = cases.inner();
+    // Each pass: the largest σ₁ of each face over its positions, per element.
+    let solved: Vec<Result<PassStress>> = passes
+        .par_iter()
+        .zip(&bins)
+        .map(|(models, bin)| {
+            let mut stress = PassStress::default();
+            let mut start: Option<Vec<f64>> = None;
+            for model in models {
+                let ops = base.loaded(model);
+                let r =
+                    analysis::run_from(model, &ops, &problem.method, 0.0, start.as_deref(), &inner);
+                stress.solves += 1;
+                match r {
+                    Err(e @ Error::Cancelled(_)) => return Err(e),
+                    Err(e) => {
+                        stress.outcome = RunOutcome::Failed(e.kind());
+                        break;
+                    }
+                    Ok(r) if !r.summary.converged => {
+                        stress.outcome = RunOutcome::Solved(r.solution.status.kind());
+                        break;
+                    }
+                    Ok(r) => {
+                        let e = &r.report.elements;
+                        if stress.field.is_none() {
+                            stress.field = Some(r.report.field.clone());
+                        }
+                        stress.take(&e.bottom.s1, &e.top.s1, &e.x, &e.y);
+                        start = Some(r.solution.sigma.clone());
+                    }
+                }
+            }
+            cases.finish(&label(plan, bin))?;
+            Ok(stress)
+        })
+        .collect();
+    let mut stresses = Vec::with_capacity(bins.len());
+    for s in solved {
+        stresses.push(s?);
+    }
+    let Some(first) = stresses.iter().find(|s| !s.x.is_empty()) else {
+        return Err(Error::numerical(
+            "damage",
+            "no pass converged: nothing to sum (see the passes' outcomes)",
+        ));
+    };
+    let (xs, ys) = (first.x.clone(), first.y.clone());
+    let field = first.field.clone().unwrap_or_default();
+    let n = xs.len();
+    let allowed = |s: f64| -> f64 {
+        if s > 0.0 {
+            plan.model.allowed_repetitions(s, plan.rupture)
+        } else {
+            f64::INFINITY
+        }
+    };
+    let mut bottom = vec![0.0; n];
+    let mut top = vec![0.0; n];
+    let mut missing = Vec::new();
+    for (s, bin) in stresses.iter().zip(&bins) {
+        if s.outcome != RunOutcome::CONVERGED {
+            missing.push(label(plan, bin));
+            continue;
+        }
+        for i in 0..n {
+            bottom[i] += bin.repetitions / allowed(s.bottom[i]);
+            top[i] += bin.repetitions / allowed(s.top[i]);
+        }
+    }
+    let governing = |d: &[f64]| -> Governing {
+        let k = (0..n).max_by(|&a, &b| d[a].total_cmp(&d[b])).unwrap_or(0);
+        Governing {
+            damage: d.get(k).copied().unwrap_or(0.0),
+            x: xs.get(k).copied().unwrap_or(f64::NAN),
+            y: ys.get(k).copied().unwrap_or(f64::NAN),
+            element: k,
+        }
+    };
+    let (gb, gt) = (governing(&bottom), governing(&top));
+    let passes_out: Vec<Pass> = stresses
+        .iter()
+        .zip(&bins)
+        .zip(&passes)
+        .map(|((s, bin), models)| {
+            let group = &plan.groups[bin.group];
+            let peak = |v: &[f64]| -> Peak {
+                match (0..v.len()).max_by(|&a, &b| v[a].total_cmp(&v[b])) {
+                    Some(k) if s.outcome == RunOutcome::CONVERGED => Peak {
+                        stress: v[k],
+                        x: s.x[k],
+                        y: s.y[k],
+                        allowed: Some(allowed(v[k])).filter(|a| a.is_finite()),
+                    },
+                    _ => Peak {
+                        stress: f64::NAN,
+                        x: f64::NAN,
+                        y: f64::NAN,
+                        allowed: None,
+                    },
+                }
+            };
+            let share = |v: &[f64], k: usize| -> f64 {
+                if s.outcome == RunOutcome::CONVERGED {
+                    v.get(k).map_or(0.0, |&st| bin.repetitions / allowed(st))
+                } else {
+                    0.0
+                }
+            };
+            Pass {
+                group: group.load.clone(),
+                load: group.levels[bin.level].load,
+                offset: plan.lateral[bin.lateral].offset,
+                difference: Some(plan.climate[bin.climate].difference).filter(|d| d.is_finite()),
+                repetitions: bin.repetitions,
+                positions: models
+                    .iter()
+                    .map(|m| {
+                        let at = m.vehicles[group.vehicle].at;
+                        [at[0], at[1]]
+                    })
+                    .collect(),
+                outcome: s.outcome,
+                solves: s.solves,
+                bottom: peak(&s.bottom),
+                top: peak(&s.top),
+                bottom_share: share(&s.bottom, gb.element),
+                top_share: share(&s.top, gt.element),
+            }
+        })
+        .collect();
+    let cracking = match &plan.model {
+        DamageModel::Mepdg(m) => {
+            let (b, t) = (m.cracking(gb.damage), m.cracking(gt.damage));
+            let total = 100.0 * Mepdg::total_cracking(b, t);
+            Some(Cracking {
+                bottom: 100.0 * b,
+                top: 100.0 * t,
+                total,
+                at_reliability: plan
+                    .reliability
+                    .map(|r| m.cracking_at_reliability(total, r)),
+            })
+        }
+        DamageModel::Pca(_) | DamageModel::Faa(_) => None,
+    };
+    let nx = problem.model.elements[0];
+    Ok(Damage {
+        model: match plan.model {
+            DamageModel::Pca(_) => "pca",
+            DamageModel::Mepdg(_) => "mepdg",
+            DamageModel::Faa(_) => "faa",
+        },
+        rupture: plan.rupture,
+        life_factor: plan.life_factor(),
+        elements: [nx, n / nx.max(1)],
+        x: xs,
+        y: ys,
+        bottom,
+        top,
+        governing_bottom: gb,
+        governing_top: gt,
+        cracking,
+        complete: missing.is_empty(),
+        missing,
+        solves: stresses.iter().map(|s| s.solves).sum(),
+        passes: passes_out,
+        assemble_s,
+        total_s: t0.elapsed().as_secs_f64(),
+        units: problem.model.physical.map(|p| p.units),
+        field,
+    })
+}
+
+/// A pass's largest stresses per element.
+#[derive(Debug, Clone)]
+struct PassStress {
+    bottom: Vec<f64>,
+    top: Vec<f64>,
+    x: Vec<f64>,
+    y: Vec<f64>,
+    outcome: RunOutcome,
+    solves: usize,
+    field: Option<crate::post::FullField>,
+}
+
+impl Default for PassStress {
+    fn default() -> Self {
+        Self {
+            bottom: Vec::new(),
+            top: Vec::new(),
+            x: Vec::new(),
+            y: Vec::new(),
+            outcome: RunOutcome::CONVERGED,
+            solves: 0,
+            field: None,
+        }
+    }
+}
+
+impl PassStress {
+    /// Take one position's element stresses into the running maxima.
+    fn take(&mut self, bottom: &[f64], top: &[f64], x: &[f64], y: &[f64]) {
+        if self.bottom.is_empty() {
+            self.bottom = bottom.to_vec();
+            self.top = top.to_vec();
+            self.x = x.to_vec();
+            self.y = y.to_vec();
+            return;
+        }
+        for (m, &v) in self.bottom.iter_mut().zip(bottom) {
+            *m = m.max(v);
+        }
+        for (m, &v) in self.top.iter_mut().zip(top) {
+            *m = m.max(v);
+        }
+    }
+}
+
+/// A case in words, for the progress bar and the list of missing passes.
+fn label(plan: &DamagePlan, bin: &Bin) -> String {
+    let g = &plan.groups[bin.group];
+    let d = plan.climate[bin.climate].difference;
+    format!(
+        "{} at {:.1} kN, {:.3} m from the edge{}",
+        g.load,
+        g.levels[bin.level].load / 1e3,
+        plan.lateral[bin.lateral].offset,
+        if d.is_finite() {
+            format!(", ΔT {d:+.1} K")
+        } else {
+            String::new()
+        }
+    )
+}
+
+/// The models of one case's pass: the scene's model with its climate bin's temperature load
+/// added, the group's vehicle at the level's load (the other vehicles without load), placed at
+/// `plan.steps` positions along the lane from where its prints enter the slab to where they
+/// leave it, its outer tire's edge at the lateral position's distance from the edge.
+fn pass_models(base: &Model, plan: &DamagePlan, bin: &Bin) -> Result<Vec<Model>> {
+    let group = &plan.groups[bin.group];
+    let k = group.vehicle;
+    let mut model = base.clone();
+    let d = plan.climate[bin.climate].difference;
+    if d.is_finite() {
+        let per_k = plan.curvature_per_kelvin.unwrap_or(0.0);
+        model.loads.push(Load::Temperature {
+            curvature: per_k * d,
+        });
+    }
+    for (i, v) in model.vehicles.iter_mut().enumerate() {
+        if i == k {
+            let nominal: f64 = v.wheels.iter().map(|w| w.force).sum();
+            v.factor = group.levels[bin.level].load / nominal;
+        } else {
+            v.factor = 0.0;
+        }
+    }
+    for i in 0..model.vehicles.len() {
+        if i != k {
+            let at = model.vehicles[i].at;
+            model.place(i, at)?;
+        }
+    }
+    let v = &model.vehicles[k];
+    let [a, b] = v.frame.plate;
+    // The prints' extent about the reference point, travelling along x.
+    let tires = v.tires([0.0, 0.0, 0.0])?;
+    let ext = |f: fn(&crate::vehicle::Tire) -> f64, g: fn(f64, f64) -> f64, init: f64| {
+        tires.iter().map(f).fold(init, g)
+    };
+    let x_lo = ext(|t| t.centre[0] - t.size[0] / 2.0, f64::min, f64::INFINITY);
+    let x_hi = ext(
+        |t| t.centre[0] + t.size[0] / 2.0,
+        f64::max,
+        f64::NEG_INFINITY,
+    );
+    let y_lo = ext(|t| t.centre[1] - t.size[1] / 2.0, f64::min, f64::INFINITY);
+    let y_hi = ext(
+        |t| t.centre[1] + t.size[1] / 2.0,
+        f64::max,
+        f64::NEG_INFINITY,
+    );
+    // Inside the plate by a hair, as critical's grid keeps its prints.
+    let (gap_x, gap_y) = (1e-9 * a, 1e-9 * b);
+    let offset = plan.lateral[bin.lateral].offset;
+    let (y_min, y_max) = (-b / 2.0 - y_lo + gap_y, b / 2.0 - y_hi - gap_y);
+    if y_min > y_max || x_hi - x_lo >= a {
+        return Err(Error::invalid(
+            format!("traffic.group[{}].load", bin.group),
+            format!(
+                "the prints of `{}` do not fit on the {a} m × {b} m plate",
+                group.load
+            ),
+        ));
+    }
+    let y = if plan.lower_edge {
+        -b / 2.0 + offset - y_lo
+    } else {
+        b / 2.0 - offset - y_hi
+    }
+    .clamp(y_min, y_max);
+    let (x0, x1) = (-a / 2.0 - x_lo + gap_x, a / 2.0 - x_hi - gap_x);
+    let steps = plan.steps.unwrap_or((base.elements[0] + 1).clamp(3, 401));
+    (0..steps)
+        .map(|s| {
+            let x = x0 + (x1 - x0) * s as f64 / (steps - 1) as f64;
+            let mut m = model.clone();
+            m.place(k, [x, y, 0.0])?;
+            Ok(m)
+        })
+        .collect()
+}

@@ -1,0 +1,243 @@
+//! `liftoff damage` (issue 33): the Miner sum over the passes of a traffic and climate plan,
+//! checked against a sum this test makes by hand from the stresses that solves of the scene
+//! report at the same positions, and the places the literature puts the damage.
+
+use liftoff::study::{damage, Damage};
+use liftoff::{analyse, Monitor, Problem};
+
+/// A 4.5 m × 3.6 m slab, 0.25 m, on Winkler springs, with self-weight and an ESAL axle (80 kN,
+/// dual tires) named `single`; `{extra}` adds the damage sections.
+fn slab(extra: &str) -> String {
+    format!(
+        r#"title = "slab"
+[plate]
+length = 4.5
+width = 3.6
+thickness = 0.25
+youngs_modulus = 30e9
+poissons_ratio = 0.15
+thermal_expansion = 1.0e-5
+[foundation]
+model = "winkler"
+modulus = 8.0e7
+[[load]]
+kind = "uniform"
+pressure = 6.0e3
+[[load]]
+kind = "axle"
+name = "single"
+standard = "esal-single-dual"
+x = 0.0
+y = 0.0
+{extra}
+[mesh]
+elements = [30, 24]
+[solver]
+contact = "unbonded"
+"#
+    )
+}
+
+/// One group at the axle's own 80 kN, one lateral position, two climate bins, three positions a
+/// pass: two passes to sum by hand.
+const TWO_BINS: &str = r#"[traffic]
+design_life = 10
+growth = 0.0
+[traffic.wander]
+mean = 0.4
+deviation = 0.0
+positions = 1
+[[traffic.group]]
+load = "single"
+levels = [80e3]
+repetitions = [1.0e5]
+[climate]
+[[climate.bin]]
+difference = 8.0
+share = 0.6
+[[climate.bin]]
+difference = -6.0
+share = 0.4
+[damage]
+model = "mepdg"
+modulus_of_rupture = 4.5e6
+steps = 3
+"#;
+
+fn run(text: &str) -> Damage {
+    let p = Problem::from_toml(text).expect("scene");
+    damage(&p, &Monitor::NONE).expect("damage")
+}
+
+/// The MEPDG's allowed repetitions, written out from the Manual of Practice's relation as
+/// issue 33 pins it: log10 N = 2.0 (MR/σ)^1.22 + 0.4371.
+fn mepdg_n(stress: f64, mr: f64) -> f64 {
+    if stress <= 0.0 {
+        f64::INFINITY
+    } else {
+        10f64.powf(2.0 * (mr / stress).powf(1.22) + 0.4371)
+    }
+}
+
+/// Two bins summed by hand: for each bin, the scene solved with the axle standing at each of
+/// the pass's three positions and the bin's temperature difference as a load of its own (what
+/// `liftoff solve` of that scene reports), the largest σ₁ per element and face over the three,
+/// N from the relation above, n = 1e5 a year × 10 years × the bin's share. The run's map is
+/// that sum at every element of both faces; both sides sum the same solves' stresses in the
+/// same order, so they agree to round-off (1e-9 of the largest damage allows for the solver's
+/// tolerance between a warm-started and a cold solve, ~1e-10 of the stresses, raised to the
+/// relation's power, ~12 at these stress ratios).
+#[test]
+fn a_two_bin_spectrum_is_its_hand_sum() {
+    let d = run(&slab(TWO_BINS));
+    assert!(d.complete, "{:?}", d.missing);
+    assert_eq!(d.passes.len(), 2);
+    let n = d.x.len();
+    let mut bottom = vec![0.0; n];
+    let mut top = vec![0.0; n];
+    for (pass, (dt, share)) in d.passes.iter().zip([(8.0, 0.6), (-6.0, 0.4)]) {
+        assert_eq!(pass.positions.len(), 3);
+        assert_eq!(pass.difference, Some(dt));
+        let reps = 1.0e5 * 10.0 * share;
+        assert!((pass.repetitions - reps).abs() <= 1e-9 * reps);
+        let mut peak_b = vec![f64::NEG_INFINITY; n];
+        let mut peak_t = vec![f64::NEG_INFINITY; n];
+        for &[x, y] in &pass.positions {
+            let text = slab("").replace(
+                "x = 0.0\ny = 0.0\n",
+                &format!(
+                    "x = {x:e}\ny = {y:e}\n[[load]]\nkind = \"temperature\"\ndifference = {dt}\n"
+                ),
+            );
+            let a = analyse(&Problem::from_toml(&text).expect("scene")).expect("solve");
+            assert!(a.summary.converged);
+            let e = &a.report.elements;
+            for i in 0..n {
+                peak_b[i] = peak_b[i].max(e.bottom.s1[i]);
+                peak_t[i] = peak_t[i].max(e.top.s1[i]);
+            }
+        }
+        for i in 0..n {
+            bottom[i] += reps / mepdg_n(peak_b[i], 4.5e6);
+            top[i] += reps / mepdg_n(peak_t[i], 4.5e6);
+        }
+    }
+    let scale = bottom.iter().chain(&top).fold(0.0_f64, |m, v| m.max(*v));
+    assert!(scale > 0.0, "the hand sum has damage");
+    for i in 0..n {
+        assert!(
+            (d.bottom[i] - bottom[i]).abs() <= 1e-9 * scale,
+            "bottom, element {i}: {} vs {}",
+            d.bottom[i],
+            bottom[i]
+        );
+        assert!(
+            (d.top[i] - top[i]).abs() <= 1e-9 * scale,
+            "top, element {i}: {} vs {}",
+            d.top[i],
+            top[i]
+        );
+    }
+}
+
+/// Day curling with the axle along the free edge puts the bottom-up damage at the middle of
+/// that edge (the MEPDG's critical location for bottom-up cracking, NCHRP 1-37A Part 3 Ch. 4;
+/// Westergaard's edge case): the governing element lies on the edge row (its centre within one
+/// element of y = −b/2) and within an eighth of the slab's length of its middle.
+#[test]
+fn day_curling_and_edge_loading_govern_at_mid_slab_on_the_edge() {
+    // Edge loading: the outer tire's print touches the free edge.
+    let plan = TWO_BINS
+        .replace("mean = 0.4", "mean = 0.0")
+        .replace("steps = 3", "steps = 9")
+        .replace(
+            "difference = -6.0\nshare = 0.4",
+            "difference = 8.0\nshare = 0.4",
+        );
+    let d = run(&slab(&plan));
+    let g = d.governing_bottom;
+    let element = 3.6 / 24.0;
+    assert!(g.damage > 0.0);
+    assert!(g.y < -1.8 + element, "governing at y = {}", g.y);
+    assert!(g.x.abs() <= 4.5 / 8.0, "governing at x = {}", g.x);
+}
+
+/// Bad plans are refused naming the key: a group that names no axle, shares that do not add up,
+/// an unknown relation.
+#[test]
+fn bad_plans_name_the_key() {
+    let err = |text: &str| {
+        Problem::from_toml(&slab(text))
+            .expect_err("refused")
+            .to_string()
+    };
+    let e = err(&TWO_BINS.replace("load = \"single\"", "load = \"tandem\""));
+    assert!(
+        e.contains("traffic.group[0].load") && e.contains("single"),
+        "{e}"
+    );
+    let e = err(&TWO_BINS.replace("share = 0.4", "share = 0.5"));
+    assert!(e.contains("climate.bin") && e.contains("1.1"), "{e}");
+    let e = err(&TWO_BINS.replace("model = \"mepdg\"", "model = \"aashto93\""));
+    assert!(e.contains("damage.model"), "{e}");
+    let e = err(&TWO_BINS.replace("design_life = 10", "design_life = -1"));
+    assert!(e.contains("traffic.design_life"), "{e}");
+}
+
+/// The same run written in US units — every length in inches, the levels in lbf, the modulus
+/// of rupture and E in psi, the subgrade in pci, the differences in °F, converted here from the
+/// SI scene by the definitions (1 in = 0.0254 m, 1 lbf = 4.4482216152605 N) — gives the same
+/// damage at every element (1e-9 of the largest: the two runs solve the same problems), and
+/// damage.json reports its places in inches.
+#[test]
+fn a_us_plan_is_its_si_twin() {
+    const IN: f64 = 0.0254;
+    const LBF: f64 = 4.448_221_615_260_5;
+    let psi = LBF / (IN * IN);
+    let si = slab(TWO_BINS);
+    let us = si
+        .replace("title = \"slab\"", "title = \"slab\"\nunits = \"us\"")
+        .replace("length = 4.5", &format!("length = {}", 4.5 / IN))
+        .replace("width = 3.6", &format!("width = {}", 3.6 / IN))
+        .replace("thickness = 0.25", &format!("thickness = {}", 0.25 / IN))
+        .replace(
+            "youngs_modulus = 30e9",
+            &format!("youngs_modulus = {}", 30e9 / psi),
+        )
+        .replace(
+            "thermal_expansion = 1.0e-5",
+            &format!("thermal_expansion = {}", 1.0e-5 / 1.8),
+        )
+        .replace(
+            "modulus = 8.0e7",
+            &format!("modulus = {}", 8.0e7 / (psi / IN)),
+        )
+        .replace("pressure = 6.0e3", &format!("pressure = {}", 6.0e3 / psi))
+        .replace("mean = 0.4", &format!("mean = {}", 0.4 / IN))
+        .replace("levels = [80e3]", &format!("levels = [{}]", 80e3 / LBF))
+        .replace("difference = 8.0", &format!("difference = {}", 8.0 * 1.8))
+        .replace("difference = -6.0", &format!("difference = {}", -6.0 * 1.8))
+        .replace(
+            "modulus_of_rupture = 4.5e6",
+            &format!("modulus_of_rupture = {}", 4.5e6 / psi),
+        );
+    let (a, b) = (run(&us), run(&si));
+    let scale = b
+        .bottom
+        .iter()
+        .chain(&b.top)
+        .fold(0.0_f64, |m, v| m.max(*v));
+    assert!(scale > 0.0);
+    for (x, y) in a
+        .bottom
+        .iter()
+        .zip(&b.bottom)
+        .chain(a.top.iter().zip(&b.top))
+    {
+        assert!((x - y).abs() <= 1e-9 * scale, "{x} vs {y}");
+    }
+    let r = a.reported();
+    assert!((r.governing_bottom.x * IN - b.governing_bottom.x).abs() < 1e-9);
+    assert!((r.rupture - 4.5e6 / psi).abs() < 1e-9 * r.rupture);
+    assert_eq!(r.passes[0].difference, Some(8.0 * 1.8));
+}
