@@ -241,3 +241,53 @@ fn a_us_plan_is_its_si_twin() {
     assert!((r.rupture - 4.5e6 / psi).abs() < 1e-9 * r.rupture);
     assert_eq!(r.passes[0].difference, Some(8.0 * 1.8));
 }
+
+/// `design` on the slab with the PCA relation and a damage target: the design curve falls as
+/// the slab thickens (thicker slabs, lower stress ratios: a property of the relation and of
+/// plate bending, not of the search), the thickness found meets the target, the failing end of
+/// its bracket does not, and the bracket is no wider than the tolerance.
+#[test]
+fn the_design_brackets_the_least_thickness() {
+    use liftoff::study::{design, DesignOptions};
+    let plan = TWO_BINS
+        .replace("model = \"mepdg\"", "model = \"pca\"")
+        .replace("repetitions = [1.0e5]", "repetitions = [2.0e5]");
+    let text = slab(&plan).replace(
+        "pressure = 6.0e3\n",
+        "pressure = 6.0e3\ncase = \"self-weight\"\n",
+    );
+    let file = liftoff::scene::SceneFile::parse(&text).expect("scene");
+    let options = DesignOptions {
+        from: 0.16,
+        to: 0.32,
+        points: 5,
+        target: Some(1.0),
+        tolerance: 0.004,
+    };
+    let d = design(&file, &options, &Monitor::NONE).expect("design");
+    assert!(d.complete);
+    assert_eq!(d.measure, "damage");
+    let curve: Vec<f64> = d
+        .points
+        .iter()
+        .filter(|p| p.curve)
+        .map(|p| p.value)
+        .collect();
+    assert_eq!(curve.len(), 5);
+    assert!(d.monotone, "{curve:?}");
+    assert!(curve.windows(2).all(|w| w[1] <= w[0]), "{curve:?}");
+    let h = d
+        .thickness
+        .expect("a thickness in the range meets the target");
+    let [lo, hi] = d.bracket.expect("bracketed inside the range");
+    assert_eq!(h, hi);
+    assert!(hi - lo <= options.tolerance + 1e-12, "bracket {lo} … {hi}");
+    let at = |t: f64| {
+        d.points
+            .iter()
+            .find(|p| p.thickness == t)
+            .expect("a run there")
+    };
+    assert!(at(hi).value <= 1.0 && at(hi).passes);
+    assert!(at(lo).value > 1.0 && !at(lo).passes);
+}

@@ -714,6 +714,24 @@ fn e71_e72_damage_inputs_are_refused_naming_the_key() {
             assert!(err.contains(message), "E71: message: {err}");
         }
     }
+    // E18: `design --vary` out of order or not a thickness.
+    for (vary, message) in [
+        (
+            "thickness=0.3..0.2",
+            "--vary must be thickness=FROM..TO with 0 < FROM < TO, got 0.3..0.2",
+        ),
+        ("depth=0.2..0.3", "expected thickness=FROM..TO"),
+    ] {
+        let o = Command::new(env!("CARGO_BIN_EXE_liftoff"))
+            .args(["design", "example:pavement-damage", "--vary", vary, "--out"])
+            .arg(&out)
+            .output()
+            .expect("run liftoff");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "E18 design: exit code ({err})");
+        assert!(err.contains(message), "E18 design: message: {err}");
+        assert!(!out.exists(), "E18 design: nothing written");
+    }
     let bare = scene
         .split("[traffic]")
         .next()

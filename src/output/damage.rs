@@ -232,3 +232,159 @@ pub fn damage_table(title: &str, d: &Damage, files: Option<(usize, &Path)>) -> S
     }
     s
 }
+
+/// Write design.csv, design.json and the design curve (design.svg/png) of `liftoff design` into
+/// `dir`, staged; thicknesses in the scene's unit of length.
+pub fn write_design(dir: &Path, d: &crate::study::Design, title: &str) -> Result<Vec<PathBuf>> {
+    let mut st = Staged::new(dir)?;
+    let sys = d.units;
+    let l = |v: f64| Measure::Length.from_si(sys, v);
+    let unit = Measure::Length.unit(sys);
+    let mut csv = format!(
+        "thickness [{unit}],damage_bottom [-],damage_top [-],cracking [%],{} [{}],passes,complete,curve,solves,time [s]\n",
+        d.measure,
+        if d.measure == "cracking" { "%" } else { "-" }
+    );
+    for p in &d.points {
+        let _ = writeln!(
+            csv,
+            "{:.12e},{:e},{:e},{},{:e},{},{},{},{},{}",
+            l(p.thickness),
+            p.bottom,
+            p.top,
+            p.cracking.map_or(String::new(), |c| format!("{c:e}")),
+            p.value,
+            p.passes,
+            p.complete,
+            p.curve,
+            p.solves,
+            p.seconds
+        );
+    }
+    st.write_text("design.csv", &csv)?;
+    let mut reported = d.clone();
+    for p in &mut reported.points {
+        p.thickness = l(p.thickness);
+    }
+    reported.thickness = d.thickness.map(l);
+    reported.bracket = d.bracket.map(|[a, b]| [l(a), l(b)]);
+    let json = serde_json::to_string_pretty(&reported)
+        .map_err(|e| Error::numerical("design.json", format!("cannot serialise: {e}")))?;
+    st.write_text("design.json", &json)?;
+    // The line runs through every run, by thickness; the bisection's are marked apart.
+    let curve: Vec<(f64, f64)> = reported
+        .points
+        .iter()
+        .map(|p| (p.thickness, p.value))
+        .collect();
+    let steps: Vec<(f64, f64)> = reported
+        .points
+        .iter()
+        .filter(|p| !p.curve)
+        .map(|p| (p.thickness, p.value))
+        .collect();
+    let svg = st.path("design.svg");
+    let png = st.path("design.png");
+    let y_label = if d.measure == "cracking" {
+        "total cracking, % of slabs".to_string()
+    } else {
+        "largest Σ n/N (log scale)".to_string()
+    };
+    chart::write_design_curve(
+        &svg,
+        &png,
+        &chart::DesignCurve {
+            title: &format!("{title} — design curve ({})", d.model),
+            x_label: &format!("slab thickness ({unit})"),
+            y_label: &y_label,
+            curve: &curve,
+            steps: &steps,
+            target: d.target,
+            found: reported.thickness,
+            log: d.measure != "cracking",
+        },
+    )?;
+    st.commit()
+}
+
+/// What the command line prints for `liftoff design`.
+pub fn design_table(
+    title: &str,
+    d: &crate::study::Design,
+    files: Option<(usize, &Path)>,
+) -> String {
+    let sys = d.units;
+    let l = |v: f64| Measure::Length.from_si(sys, v);
+    let unit = Measure::Length.unit(sys);
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "liftoff design — {title}: {} ({}), target {} {}",
+        d.model,
+        d.measure,
+        d.target,
+        if d.measure == "cracking" {
+            "% of slabs"
+        } else {
+            "(Σ n/N)"
+        }
+    );
+    let _ = writeln!(
+        s,
+        "  thickness ({unit})   bottom Σn/N   top Σn/N   {:<10}  meets",
+        d.measure
+    );
+    for p in &d.points {
+        let _ = writeln!(
+            s,
+            "  {:>12.4}{}  {:>11.4e}  {:>9.3e}   {:>10.4}  {}{}",
+            l(p.thickness),
+            if p.curve { " " } else { "*" },
+            p.bottom,
+            p.top,
+            p.value,
+            if p.passes { "yes" } else { "no" },
+            if p.complete { "" } else { " (incomplete)" }
+        );
+    }
+    let _ = writeln!(s, "  (* a bisection step)");
+    match (d.thickness, d.bracket) {
+        (Some(h), Some([a, b])) => {
+            let _ = writeln!(
+                s,
+                "  least thickness: {:.4} {unit} (meets the target; {:.4} {unit} does not)",
+                l(h),
+                l(a)
+            );
+            let _ = b;
+        }
+        (Some(h), None) => {
+            let _ = writeln!(
+                s,
+                "  least thickness: {:.4} {unit} or less — the thinnest tried already meets the target",
+                l(h)
+            );
+        }
+        _ => {
+            let _ = writeln!(
+                s,
+                "  no thickness in the range meets the target: try thicker slabs"
+            );
+        }
+    }
+    if !d.monotone {
+        let _ = writeln!(
+            s,
+            "  note: the design curve does not fall everywhere as the slab thickens: the least thickness is the first that meets the target along the curve"
+        );
+    }
+    let _ = writeln!(s, "  time: {:.2} s", d.total_s);
+    if let Some((k, dir)) = files {
+        let _ = writeln!(
+            s,
+            "  files: {k} in {} (design.csv, design.json, design.svg/png)",
+            dir.display()
+        );
+    }
+    s
+}

@@ -18,6 +18,7 @@ use crate::solve::StatusKind;
 
 mod critical;
 mod damage;
+mod design;
 mod eps_sweep;
 mod options;
 mod stability;
@@ -28,6 +29,7 @@ pub use critical::{
     Footprint, JointLine, Position,
 };
 pub use damage::{damage, Cracking, Damage, Governing, Pass, Peak};
+pub use design::{design, Design, DesignOptions, DesignPoint};
 pub use eps_sweep::{eps_sweep, Sweep, SweepRow};
 pub use options::{ConstraintVariants, EpsSweepOptions, TradeoffOptions};
 pub use stability::{

@@ -40,6 +40,9 @@ pub(crate) enum Command {
     /// Fatigue damage over the scene's [traffic] and [climate]: every case a pass of its axle
     /// group along the lane, the Miner sum at both faces of every element.
     Damage(DamageArgs),
+    /// The least slab thickness that carries the scene's traffic: damage runs over a range of
+    /// thicknesses (the design curve), the target bracketed and bisected.
+    Design(DesignArgs),
     /// Regenerate the paper's Figs. 3–7 (SVG and PNG), paper.json and paper.md.
     Paper(PaperArgs),
     /// Write one self-contained HTML page (summary, tables, charts) from an output directory
@@ -63,6 +66,7 @@ impl Command {
             Command::Stability(_) => "stability",
             Command::Critical(_) => "critical",
             Command::Damage(_) => "damage",
+            Command::Design(_) => "design",
             Command::Paper(_) => "paper",
             Command::Report(_) => "report",
             Command::Example { .. } => "example",
@@ -306,6 +310,54 @@ pub(crate) struct DamageArgs {
     /// Print damage.json to stdout instead of the table.
     #[arg(long)]
     pub(crate) json: bool,
+}
+
+/// The flags of `design`.
+#[derive(clap::Args)]
+pub(crate) struct DesignArgs {
+    /// Scene file (TOML) with [traffic], [damage] and optionally [climate], or `example:NAME`.
+    pub(crate) scene: String,
+    /// The thickness range, thickness=FROM..TO, in the scene's unit of length (m; in for a US
+    /// scene).
+    #[arg(long, value_parser = parse_vary)]
+    pub(crate) vary: [f64; 2],
+    /// Thicknesses of the design curve, evenly over the range.
+    #[arg(long, default_value_t = 6)]
+    pub(crate) points: usize,
+    /// The target: total cracking in % for mepdg (default 15), the largest Σ n/N for pca and
+    /// faa (default 1).
+    #[arg(long)]
+    pub(crate) target: Option<f64>,
+    /// Bisect the bracket until it is this narrow, in the scene's unit of length (default
+    /// 5 mm; 0.25 in for a US scene).
+    #[arg(long)]
+    pub(crate) tolerance: Option<f64>,
+    /// Method for unbonded contact (overrides [solver] method).
+    #[arg(long, value_parser = choice::<MethodKind>())]
+    pub(crate) method: Option<MethodKind>,
+    #[command(flatten)]
+    pub(crate) overrides: Overrides,
+    /// Directory for design.csv, design.json and the design curve.
+    #[arg(long)]
+    pub(crate) out: Option<PathBuf>,
+    /// Print design.json to stdout instead of the table.
+    #[arg(long)]
+    pub(crate) json: bool,
+}
+
+fn parse_vary(s: &str) -> Result<[f64; 2], String> {
+    let range = s.strip_prefix("thickness=").ok_or_else(|| {
+        format!("expected thickness=FROM..TO (the plate's thickness is what a design varies), got `{s}`")
+    })?;
+    let (a, b) = range
+        .split_once("..")
+        .ok_or_else(|| format!("expected thickness=FROM..TO, got `{s}`"))?;
+    let num = |t: &str| {
+        t.trim()
+            .parse::<f64>()
+            .map_err(|_| format!("`{t}` is not a number in `{s}`"))
+    };
+    Ok([num(a)?, num(b)?])
 }
 
 #[derive(clap::Args)]

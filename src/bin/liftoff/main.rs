@@ -15,8 +15,8 @@ use liftoff::study::{self, EpsSweepOptions, TradeoffOptions};
 use liftoff::{Error, ErrorKind, Outcome, Problem, Source};
 
 use args::{
-    Cli, Command, CompareArgs, CriticalArgs, DamageArgs, EpsSweepArgs, PaperArgs, ReportArgs,
-    SolveArgs, StabilityArgs, TradeoffArgs,
+    Cli, Command, CompareArgs, CriticalArgs, DamageArgs, DesignArgs, EpsSweepArgs, PaperArgs,
+    ReportArgs, SolveArgs, StabilityArgs, TradeoffArgs,
 };
 use failure::{exit, Failure};
 use progress::with_progress;
@@ -34,6 +34,7 @@ fn main() -> ExitCode {
         Command::Stability(args) => stability(args),
         Command::Critical(args) => critical(args),
         Command::Damage(args) => damage(args),
+        Command::Design(args) => design(args),
         Command::Paper(args) => paper(args),
         Command::Report(args) => report(args),
         Command::Example { name } => example(name.as_deref()),
@@ -339,6 +340,62 @@ fn damage(args: DamageArgs) -> Result<(), Failure> {
                 "{} pass(es) did not converge: the damage sums are incomplete",
                 d.missing.len()
             ),
+        ));
+    }
+    Ok(())
+}
+
+fn design(args: DesignArgs) -> Result<(), Failure> {
+    let overrides = liftoff::scene::Overrides {
+        method: args.method,
+        ..args.overrides.library()
+    };
+    let source = Source::from_arg(&args.scene);
+    let mut file = source
+        .parse()
+        .map_err(|e| Failure::in_scene(&args.scene, e))?;
+    overrides.apply(&mut file);
+    // The range and the tolerance are in the scene's unit of length.
+    let length = |v: f64| liftoff::units::Quantity::Length.to_si(file.units, v);
+    let tolerance = match (args.tolerance, file.units) {
+        (Some(t), _) => length(t),
+        (None, liftoff::units::UnitSystem::Us) => length(0.25),
+        (None, liftoff::units::UnitSystem::Si) => 0.005,
+    };
+    let options = study::DesignOptions {
+        from: length(args.vary[0]),
+        to: length(args.vary[1]),
+        points: args.points,
+        target: args.target,
+        tolerance,
+    };
+    options.validate().map_err(Failure::option)?;
+    // The scene as given must be valid before the search varies it.
+    file.validate()
+        .map_err(|e| Failure::in_scene(&args.scene, e))?;
+    if let Some(dir) = &args.out {
+        output::prepare_dir(dir)?;
+    }
+    let d = with_progress(false, |m| study::design(&file, &options, m))
+        .map_err(|e| Failure::in_scene(&args.scene, e))?;
+    interrupt::check()?;
+    let title = file.title.clone().unwrap_or_else(|| args.scene.clone());
+    let written = match &args.out {
+        Some(dir) => output::damage::write_design(dir, &d, &title)?.len(),
+        None => 0,
+    };
+    if args.json {
+        let json = serde_json::to_string_pretty(&d)
+            .map_err(|e| Failure::new(exit::IO, format!("cannot serialise design.json: {e}")))?;
+        println!("{json}");
+    } else {
+        let files = args.out.as_deref().map(|dir| (written, dir));
+        print!("{}", output::damage::design_table(&title, &d, files));
+    }
+    if !d.complete {
+        return Err(Failure::new(
+            exit::SOLVER,
+            "some damage runs had passes that did not converge: the design curve is incomplete",
         ));
     }
     Ok(())

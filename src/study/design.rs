@@ -1,0 +1,236 @@
+//! The least thickness that carries the traffic (`liftoff design`): whole damage runs
+//! ([`super::damage`]) of the scene at thicknesses over a range — the design curve — and the
+//! least thickness that meets the target, bracketed between the curve's last failing and
+//! first passing thickness and bisected to a tolerance.
+//!
+//! **The target** is the relation's: for `mepdg` the total cracking (% of slabs) — at the
+//! scene's `[damage] reliability` when it gives one, else the mean —, 15 % unless given; for
+//! `pca` and `faa` the larger of the bottom-up and top-down damage, 1 unless given.
+//!
+//! **What follows the thickness.** The plate's thickness, and with it its rigidity, its
+//! stresses and the curvature of a temperature difference (α ΔT / H: the climate bins keep
+//! their differences, in K, at every thickness — a difference per thickness or a profile is
+//! not varied); a `uniform` load whose `case` or `name` is `self-weight` scales with the
+//! thickness (ρ g H); every other load is kept. Panels with a thickness of their own (a
+//! shoulder) keep it.
+
+use serde::Serialize;
+
+use crate::error::{Error, Result};
+use crate::monitor::{Cases, Monitor};
+use crate::scene::SceneFile;
+
+/// The range and the target of a design search.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DesignOptions {
+    /// Thinnest thickness tried, m.
+    pub from: f64,
+    /// Thickest, m.
+    pub to: f64,
+    /// Thicknesses of the design curve, evenly over the range (≥ 2).
+    pub points: usize,
+    /// The target (None: 15 % cracking for `mepdg`, damage 1 for `pca` and `faa`).
+    pub target: Option<f64>,
+    /// The bracket is bisected until it is this narrow, m.
+    pub tolerance: f64,
+}
+
+impl DesignOptions {
+    /// Check the options; errors name the option.
+    pub fn validate(&self) -> Result<()> {
+        if !(self.from.is_finite() && self.to.is_finite() && 0.0 < self.from && self.from < self.to)
+        {
+            return Err(Error::invalid(
+                "vary",
+                format!(
+                    "must be thickness=FROM..TO with 0 < FROM < TO, got {}..{}",
+                    self.from, self.to
+                ),
+            ));
+        }
+        if !(2..=41).contains(&self.points) {
+            return Err(Error::invalid(
+                "points",
+                format!("must be 2 … 41 thicknesses, got {}", self.points),
+            ));
+        }
+        if let Some(t) = self.target.filter(|t| !(t.is_finite() && *t > 0.0)) {
+            return Err(Error::invalid(
+                "target",
+                format!("must be positive, got {t}"),
+            ));
+        }
+        if !(self.tolerance.is_finite() && self.tolerance > 0.0) {
+            return Err(Error::invalid(
+                "tolerance",
+                format!("must be a positive thickness, got {}", self.tolerance),
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// One damage run of the search.
+#[derive(Debug, Clone, Serialize)]
+pub struct DesignPoint {
+    /// Thickness, m.
+    pub thickness: f64,
+    /// Governing bottom-up damage.
+    pub bottom: f64,
+    /// Governing top-down damage.
+    pub top: f64,
+    /// Total cracking, % (mepdg; at the reliability when given).
+    pub cracking: Option<f64>,
+    /// The value compared with the target.
+    pub value: f64,
+    /// Whether it meets the target.
+    pub passes: bool,
+    /// Whether every pass of the damage run converged.
+    pub complete: bool,
+    /// Solves of the run.
+    pub solves: usize,
+    /// Seconds of the run.
+    pub seconds: f64,
+    /// On the design curve (true) or a bisection step.
+    pub curve: bool,
+}
+
+/// The result of a design search.
+#[derive(Debug, Clone, Serialize)]
+pub struct Design {
+    /// The relation.
+    pub model: &'static str,
+    /// What is compared with the target: `cracking` (%) or `damage`.
+    pub measure: &'static str,
+    /// The target.
+    pub target: f64,
+    /// Every run, by thickness.
+    pub points: Vec<DesignPoint>,
+    /// The least thickness found to meet the target (null: none in the range does).
+    pub thickness: Option<f64>,
+    /// The failing and passing thicknesses that bracket it (null: at an end of the range).
+    pub bracket: Option<[f64; 2]>,
+    /// Whether the design curve falls as the slab thickens (if not, the bracket may not be the
+    /// least thickness: the table shows where it rises).
+    pub monotone: bool,
+    /// Whether every run was complete.
+    pub complete: bool,
+    /// The scene's unit system (None: dimensionless); thicknesses above are SI.
+    pub units: Option<crate::units::UnitSystem>,
+    /// Seconds of the whole search.
+    pub total_s: f64,
+}
+
+/// Bisection steps that narrow a bracket of `width` to `tolerance`.
+fn halvings(width: f64, tolerance: f64) -> usize {
+    if width <= tolerance {
+        0
+    } else {
+        (width / tolerance).log2().ceil() as usize
+    }
+}
+
+/// Run the search on `file` (validated at every thickness); see the module's description.
+pub fn design(file: &SceneFile, options: &DesignOptions, monitor: &Monitor<'_>) -> Result<Design> {
+    options.validate()?;
+    let t0 = std::time::Instant::now();
+    let base = file.plate.as_ref().map(|p| p.thickness).ok_or_else(|| {
+        Error::invalid(
+            "plate",
+            "a design varies the plate's thickness: give the scene as [plate] and [foundation]",
+        )
+    })?;
+    let step = (options.to - options.from) / (options.points - 1) as f64;
+    let cases = Cases::new(monitor, options.points + halvings(step, options.tolerance));
+    let inner = cases.inner();
+    let run =
+        |h: f64, curve: bool| -> Result<(DesignPoint, &'static str, Option<f64>, &'static str)> {
+            let mut f = file.clone();
+            if let Some(p) = f.plate.as_mut() {
+                p.thickness = h;
+            }
+            for l in &mut f.load {
+                let weight = |s: &Option<String>| s.as_deref() == Some("self-weight");
+                if matches!(l.kind, crate::scene::LoadKind::Uniform)
+                    && (weight(&l.case) || weight(&l.name))
+                {
+                    l.pressure = l.pressure.map(|p| p * h / base);
+                }
+            }
+            let problem = f.validate()?;
+            let t = std::time::Instant::now();
+            let d = super::damage(&problem, &inner)?;
+            let (measure, value) = match d.cracking {
+                Some(c) => ("cracking", c.at_reliability.unwrap_or(c.total)),
+                None => (
+                    "damage",
+                    d.governing_bottom.damage.max(d.governing_top.damage),
+                ),
+            };
+            let target = options
+                .target
+                .unwrap_or(if measure == "cracking" { 15.0 } else { 1.0 });
+            cases.finish(&format!("{:.4} m: {measure} {value:.4}", h))?;
+            Ok((
+                DesignPoint {
+                    thickness: h,
+                    bottom: d.governing_bottom.damage,
+                    top: d.governing_top.damage,
+                    cracking: d.cracking.map(|c| c.at_reliability.unwrap_or(c.total)),
+                    value,
+                    passes: value <= target,
+                    complete: d.complete,
+                    solves: d.solves,
+                    seconds: t.elapsed().as_secs_f64(),
+                    curve,
+                },
+                measure,
+                Some(target),
+                d.model,
+            ))
+        };
+    let mut points = Vec::new();
+    let mut meta = ("damage", 1.0, "");
+    for k in 0..options.points {
+        let h = options.from + step * k as f64;
+        let (p, measure, target, model) = run(h, true)?;
+        meta = (measure, target.unwrap_or(1.0), model);
+        points.push(p);
+    }
+    let monotone = points
+        .windows(2)
+        .all(|w| w[1].value <= w[0].value * (1.0 + 1e-9) + 1e-300);
+    let first = points.iter().position(|p| p.passes);
+    let (thickness, bracket) = match first {
+        None => (None, None),
+        Some(0) => (Some(points[0].thickness), None),
+        Some(i) => {
+            let (mut lo, mut hi) = (points[i - 1].thickness, points[i].thickness);
+            while hi - lo > options.tolerance {
+                let mid = 0.5 * (lo + hi);
+                let (p, ..) = run(mid, false)?;
+                if p.passes {
+                    hi = mid;
+                } else {
+                    lo = mid;
+                }
+                points.push(p);
+            }
+            (Some(hi), Some([lo, hi]))
+        }
+    };
+    points.sort_by(|a, b| a.thickness.total_cmp(&b.thickness));
+    let units = file.plate.as_ref().map(|_| file.units);
+    Ok(Design {
+        model: meta.2,
+        measure: meta.0,
+        target: meta.1,
+        complete: points.iter().all(|p| p.complete),
+        points,
+        thickness,
+        bracket,
+        monotone,
+        units,
+        total_s: t0.elapsed().as_secs_f64(),
+    })
+}
