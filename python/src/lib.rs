@@ -467,6 +467,45 @@ fn critical(
     json(&run(py, progress, |m| o.run(&problem(kind, text, options)?, m))?.reported())
 }
 
+/// `liftoff damage`: `(damage_json, maps)` — damage.json (`Damage::reported`: in the scene's
+/// unit system) without its per-element arrays, and those arrays as f64 bytes — `x`, `y`
+/// (element centres), `bottom`, `top` (Σ n/N), element ie + je nx — with their `shape`
+/// (ny, nx). A run with passes that did not converge is returned (`complete` false, `missing`
+/// naming them); the Python layer raises `NotConverged`.
+#[pyfunction]
+#[pyo3(signature = (kind, text, options, progress=None))]
+fn damage<'py>(
+    py: Python<'py>,
+    kind: &str,
+    text: &str,
+    options: &str,
+    progress: Option<&Bound<'py, PyAny>>,
+) -> PyResult<(String, Bound<'py, PyDict>)> {
+    let d = run(py, progress, |m| {
+        liftoff::study::damage(&problem(kind, text, options)?, m)
+    })?
+    .reported();
+    let mut doc = serde_json::to_value(&d).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+    if let Some(o) = doc.as_object_mut() {
+        for key in ["x", "y", "bottom", "top"] {
+            o.remove(key);
+        }
+    }
+    let maps = PyDict::new(py);
+    let bytes = |v: &[f64]| v.iter().flat_map(|x| x.to_le_bytes()).collect::<Vec<u8>>();
+    for (name, v) in [
+        ("x", &d.x),
+        ("y", &d.y),
+        ("bottom", &d.bottom),
+        ("top", &d.top),
+    ] {
+        maps.set_item(name, PyBytes::new(py, &bytes(v)))?;
+    }
+    let [nx, ny] = d.elements;
+    maps.set_item("shape", (ny, nx))?;
+    Ok((json(&doc)?, maps))
+}
+
 /// How many positions `critical` has for these options.
 #[pyfunction]
 fn critical_len(
@@ -566,6 +605,7 @@ fn _liftoff(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(stability_len, m)?)?;
     m.add_function(wrap_pyfunction!(critical, m)?)?;
     m.add_function(wrap_pyfunction!(critical_len, m)?)?;
+    m.add_function(wrap_pyfunction!(damage, m)?)?;
     m.add_function(wrap_pyfunction!(stability_rows, m)?)?;
     m.add_function(wrap_pyfunction!(_panic_for_tests, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;

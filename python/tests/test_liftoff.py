@@ -717,3 +717,169 @@ def test_jointed_arrays_equal_the_cli_joints_csv(tmp_path):
     plain = liftoff.solve("example:slab-on-grade")
     assert plain.joints == [] and plain.joint_nodes["w"].size == 0 and plain.dowels["force"].size == 0
     assert "joints" not in plain.summary
+
+
+# -- fatigue damage over traffic and climate ----------------------------------------------------
+
+#: tests/damage.rs's slab and its TWO_BINS plan: one group at 80 kN, one lateral position, two
+#: climate bins, three positions a pass — two passes, six solves, well under a second.
+DAMAGE_SLAB = """
+title = "slab"
+[plate]
+length = 4.5
+width = 3.6
+thickness = 0.25
+youngs_modulus = 30e9
+poissons_ratio = 0.15
+thermal_expansion = 1.0e-5
+[foundation]
+model = "winkler"
+modulus = 8.0e7
+[[load]]
+kind = "uniform"
+pressure = 6.0e3
+[[load]]
+kind = "axle"
+name = "single"
+standard = "esal-single-dual"
+x = 0.0
+y = 0.0
+[traffic]
+design_life = 10
+growth = 0.0
+[traffic.wander]
+mean = 0.4
+deviation = 0.0
+positions = 1
+[[traffic.group]]
+load = "single"
+levels = [80e3]
+repetitions = [1.0e5]
+[climate]
+[[climate.bin]]
+difference = 8.0
+share = 0.6
+[[climate.bin]]
+difference = -6.0
+share = 0.4
+[damage]
+model = "mepdg"
+modulus_of_rupture = 4.5e6
+steps = 3
+[mesh]
+elements = [30, 24]
+[solver]
+contact = "unbonded"
+"""
+
+
+def damage_slab_us() -> str:
+    """DAMAGE_SLAB in US units (as tests/damage.rs's twin): inches, lbf, psi, pci, °F."""
+    inch, lbf = 0.0254, 4.4482216152605
+    psi = lbf / inch**2
+    text = DAMAGE_SLAB.replace('title = "slab"', 'title = "slab"\nunits = "us"')
+    for old, new in [("length = 4.5", 4.5 / inch), ("width = 3.6", 3.6 / inch),
+                     ("thickness = 0.25", 0.25 / inch), ("youngs_modulus = 30e9", 30e9 / psi),
+                     ("thermal_expansion = 1.0e-5", 1.0e-5 / 1.8),
+                     ("modulus = 8.0e7", 8.0e7 / (psi / inch)), ("pressure = 6.0e3", 6.0e3 / psi),
+                     ("mean = 0.4", 0.4 / inch), ("difference = 8.0", 8.0 * 1.8),
+                     ("difference = -6.0", -6.0 * 1.8),
+                     ("modulus_of_rupture = 4.5e6", 4.5e6 / psi)]:
+        assert old in text, old
+        text = text.replace(old, f"{old.split(' = ')[0]} = {new!r}")
+    return text.replace("levels = [80e3]", f"levels = [{80e3 / lbf!r}]")
+
+
+@pytest.mark.parametrize("units", ["si", "us"])
+def test_damage_equals_the_cli_files(units, tmp_path):
+    """The maps are damage.csv (element ie + je·nx at row je, column ie), the passes are
+    passes.csv's rows, both in the scene's units; the governing damage is the map's largest
+    and its place."""
+    scene = tmp_path / "slab.toml"
+    scene.write_text(DAMAGE_SLAB if units == "si" else damage_slab_us())
+    d = liftoff.damage(scene)
+    r = cli("damage", str(scene), "--out", str(tmp_path / "out"))
+    assert r.returncode == 0, r.stderr
+    assert d.complete and d.missing == [] and d.units == units and d.model == "mepdg"
+    ny, nx = 24, 30
+    assert d.elements == [nx, ny]
+    for a in (d.x, d.y, d.bottom, d.top):
+        assert a.shape == (ny, nx)
+    assert np.all(np.diff(d.x, axis=1) > 0) and np.all(np.diff(d.y, axis=0) > 0)
+    ref = read_csv(tmp_path / "out" / "damage.csv")
+    # The CSV prints 13 significant digits ({:.12e}): equal to that round-off.
+    for key, arr in [("x", d.x), ("y", d.y), ("damage_bottom", d.bottom), ("damage_top", d.top)]:
+        scale = max(np.abs(ref[key]).max(), 1e-300)
+        assert np.allclose(arr.ravel(), ref[key], rtol=1e-9, atol=1e-9 * scale), key
+    rows = [{k.split(" [")[0]: v for k, v in row.items()}
+            for row in read_rows(tmp_path / "out" / "passes.csv")]
+    assert len(d.passes) == len(rows) == 2
+    for row, ref_row in zip(d.passes, rows):
+        csv_equal(row, ref_row)
+        assert row["outcome"] == "converged" and row["solves"] == 3 and len(row["positions"]) == 3
+    assert [p["difference"] for p in d.passes] == ([8.0, -6.0] if units == "si" else [14.4, -10.8])
+    doc = json.loads((tmp_path / "out" / "damage.json").read_text())
+    # damage.json without its arrays and passes (the arrays and rows above) is the summary,
+    # its timings aside (two runs).
+    timed = ("assemble_s", "total_s")
+    assert {k: v for k, v in d.summary.items() if k not in timed} == \
+        {k: v for k, v in doc.items() if k not in timed + ("x", "y", "bottom", "top", "passes")}
+    for key in ("model", "rupture", "life_factor", "elements", "governing_bottom",
+                "governing_top", "cracking", "complete", "missing", "solves", "units"):
+        assert getattr(d, key) == doc[key], key
+    for face, arr in (("bottom", d.bottom), ("top", d.top)):
+        g = getattr(d, f"governing_{face}")
+        je, ie = np.unravel_index(np.argmax(arr), arr.shape)
+        assert g["damage"] == arr.max() > 0
+        assert g["element"] == ie + je * nx
+        assert (g["x"], g["y"]) == (d.x[je, ie], d.y[je, ie])
+        # The governing element's damage is the passes' shares there.
+        assert math.isclose(sum(p[f"{face}_share"] for p in d.passes), g["damage"], rel_tol=1e-12)
+    assert d.cracking is not None and d.cracking["at_reliability"] is None
+    again = pickle.loads(pickle.dumps(d))
+    assert np.array_equal(again.bottom, d.bottom) and again.passes == d.passes
+
+
+def test_damage_reports_a_case_per_pass_and_refuses_bad_plans():
+    events = []
+    d = liftoff.damage(DAMAGE_SLAB, progress=lambda *e: events.append(e))
+    assert sorted((e[0], e[1], e[2]) for e in events) == [("case", 1, 2), ("case", 2, 2)], events
+    assert {e[3] for e in events} == {
+        "single at 80.0 kN, 0.400 m from the edge, ΔT +8.0 K",
+        "single at 80.0 kN, 0.400 m from the edge, ΔT -6.0 K"}
+    assert len(d.passes) == 2
+    with pytest.raises(liftoff.SceneError, match="single") as e:
+        liftoff.damage(DAMAGE_SLAB.replace('load = "single"', 'load = "tandem"'))
+    assert e.value.field == "traffic.group[0].load"
+    with pytest.raises(liftoff.SceneError) as e:
+        liftoff.damage(DAMAGE_SLAB.replace('model = "mepdg"', 'model = "aashto93"'))
+    assert e.value.field == "damage.model"
+    with pytest.raises(liftoff.SceneError, match=r"\[traffic\]") as e:
+        liftoff.damage("example:slab-on-grade")
+    assert e.value.field == "traffic"
+    with pytest.raises(liftoff.SceneError, match="unknown option"):
+        liftoff.damage(DAMAGE_SLAB, grid=3)
+
+
+def test_incomplete_damage_raises_not_converged_as_the_cli_fails(tmp_path):
+    """Four penalty steps settle the day-curling pass but not the night one: the CLI exits with
+    its solver error, Python raises NotConverged carrying the incomplete run (only the pass
+    that converged in its sums)."""
+    scene = tmp_path / "capped.toml"
+    scene.write_text(DAMAGE_SLAB.replace(
+        'contact = "unbonded"', 'contact = "unbonded"\nmethod = "penalty"\nmax_iterations = 4'))
+    r = cli("damage", str(scene), "--json")
+    assert r.returncode != 0 and "incomplete" in r.stderr, r.stderr
+    ref = json.loads(r.stdout)
+    assert not ref["complete"] and len(ref["missing"]) == 1, "the cap leaves one pass missing"
+    with pytest.raises(liftoff.NotConverged, match="1 pass\\(es\\) did not converge") as e:
+        liftoff.damage(scene)
+    d = e.value.solution
+    assert not d.complete and d.missing == ref["missing"]
+    missing = [p for p in d.passes if p["outcome"] != "converged"]
+    assert len(missing) == 1 and missing[0]["bottom"] is None and missing[0]["bottom_share"] == 0.0
+    full = liftoff.damage(DAMAGE_SLAB)
+    assert d.bottom.max() < full.bottom.max() or d.top.max() < full.top.max()
+    # No pass converging leaves nothing to sum: a numerical error, as on the command line.
+    with pytest.raises(liftoff.NumericalError, match="no pass converged"):
+        liftoff.damage(scene.read_text().replace("max_iterations = 4", "max_iterations = 1"))

@@ -19,7 +19,8 @@ import json
 from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Union
 
 from . import _liftoff as _core
-from . import _progress
+from . import _damage, _progress
+from ._damage import Damage
 from ._records import Records
 from ._scene import Scene, options_json, scene_pair
 from ._solution import Combinations, Solution, from_core
@@ -46,10 +47,12 @@ __all__ = [
     "tradeoff",
     "stability",
     "critical",
+    "damage",
     "grid",
     "sweep",
     "Solution",
     "Combinations",
+    "Damage",
     "Records",
     "Grid",
     "LiftoffError",
@@ -267,6 +270,39 @@ def critical(
         if best(key) is not None:
             meta[key] = best(key)
     return Records(rows, meta)
+
+
+def damage(
+    scene: Scene, method: Optional[str] = None, *, progress: Any = None, **options: Any
+) -> Damage:
+    """Fatigue damage over the scene's ``[traffic]``, ``[climate]`` and ``[damage]``
+    (``liftoff damage``): every case — an axle group or gear at a load level, at a lateral
+    position, in a climate bin — a pass of the group along the lane, each of its positions an
+    unbonded contact solve (``method`` "penalty" or "qp"; default: the scene's own) on operators
+    assembled once, and the Miner sum Σ n/N of the passes at both faces of every element.
+
+    Returns a :class:`Damage`: ``bottom`` and ``top`` (arrays of shape ``(ny, nx)``, element
+    ie + je·nx at row je, column ie), ``x``, ``y`` (element centres, same shape), ``passes``
+    (one record per case, passes.csv's columns), ``governing_bottom`` / ``governing_top``,
+    ``cracking`` (MEPDG), ``complete``, ``missing``, … — in the scene's units, as damage.json.
+    As the CLI (which exits with an error), a run where some pass did not converge is not an
+    answer: it raises :class:`NotConverged`, whose ``.solution`` is the incomplete Damage
+    (``complete`` False, ``missing`` naming the passes left out of its sums). When no pass
+    converges there is nothing to sum and :class:`NumericalError` is raised; a scene without
+    the sections, or with a bad plan, raises :class:`SceneError` naming the key. ``progress``:
+    as in :func:`solve`, one "case" event as each pass ends.
+    """
+    kind, text = scene_pair(scene)
+    result = _damage.from_core(
+        *_progress.run(_core.damage, progress, kind, text, options_json(method, options))
+    )
+    if not result.complete:
+        raise NotConverged(
+            f"{len(result.missing)} pass(es) did not converge: the damage sums are incomplete "
+            f"({'; '.join(result.missing)})",
+            solution=result,
+        )
+    return result
 
 
 def grid(base: Scene, axes: Mapping[str, Sequence[Any]]) -> Grid:
