@@ -291,3 +291,33 @@ fn the_design_brackets_the_least_thickness() {
     assert!(at(hi).value <= 1.0 && at(hi).passes);
     assert!(at(lo).value > 1.0 && !at(lo).passes);
 }
+
+/// The report of a damage run's files: the governing damage of each face as damage.json has
+/// it, both damage maps inline, and the page self-contained (no reference to anything outside).
+#[test]
+fn the_report_shows_the_damage_and_its_maps() {
+    let d = run(&slab(TWO_BINS));
+    let dir = tempfile::tempdir().expect("tempdir");
+    liftoff::output::damage::write_damage(dir.path(), &d, "slab").expect("files");
+    let page = liftoff::output::report::write_report(dir.path(), None).expect("report");
+    let html = std::fs::read_to_string(page).expect("page");
+    let json: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(dir.path().join("damage.json")).expect("json"),
+    )
+    .expect("json");
+    let g = json["governing_bottom"]["damage"].as_f64().expect("damage");
+    assert!(g > 0.0);
+    // The page's bottom-up row: `<td>bottom-up</td><td>1.234e-5</td>`, four significant digits.
+    let row = "<td>bottom-up</td><td>";
+    let at = html.find(row).expect("the bottom-up row") + row.len();
+    let cell = &html[at..at + html[at..].find('<').expect("cell end")];
+    let shown: f64 = cell
+        .parse()
+        .unwrap_or_else(|_| panic!("`{cell}` is a number"));
+    assert!(
+        (shown - g).abs() <= 5e-4 * g,
+        "page {shown} vs damage.json {g}"
+    );
+    assert_eq!(html.matches("<svg").count(), 2, "both damage maps inline");
+    assert!(!html.contains("http://") && !html.contains("https://") && !html.contains("src="));
+}

@@ -310,6 +310,9 @@ pub(crate) struct DamageArgs {
     /// Print damage.json to stdout instead of the table.
     #[arg(long)]
     pub(crate) json: bool,
+    /// Also write report.html (one self-contained page) into --out.
+    #[arg(long, requires = "out")]
+    pub(crate) report: bool,
 }
 
 /// The flags of `design`.
@@ -343,6 +346,9 @@ pub(crate) struct DesignArgs {
     /// Print design.json to stdout instead of the table.
     #[arg(long)]
     pub(crate) json: bool,
+    /// Also write report.html (one self-contained page) into --out.
+    #[arg(long, requires = "out")]
+    pub(crate) report: bool,
 }
 
 fn parse_vary(s: &str) -> Result<[f64; 2], String> {

@@ -325,6 +325,7 @@ fn damage(args: DamageArgs) -> Result<(), Failure> {
         Some(dir) => output::damage::write_damage(dir, &d, title)?.len(),
         None => 0,
     };
+    let written = written + with_report(args.report, args.out.as_deref(), written)?;
     if args.json {
         let json = serde_json::to_string_pretty(&d.reported())
             .map_err(|e| Failure::new(exit::IO, format!("cannot serialise damage.json: {e}")))?;
@@ -384,6 +385,7 @@ fn design(args: DesignArgs) -> Result<(), Failure> {
         Some(dir) => output::damage::write_design(dir, &d, &title)?.len(),
         None => 0,
     };
+    let written = written + with_report(args.report, args.out.as_deref(), written)?;
     if args.json {
         let json = serde_json::to_string_pretty(&d)
             .map_err(|e| Failure::new(exit::IO, format!("cannot serialise design.json: {e}")))?;

@@ -5,11 +5,13 @@
 //! the page opens from a file in any browser and prints with each figure on a page of its own.
 //!
 //! Each kind of output has its reader (`solve.rs`: `liftoff solve`, with or without
-//! combinations; `critical.rs`: `liftoff critical`), listed in [`READERS`]; a directory may hold
+//! combinations; `critical.rs`: `liftoff critical`; `damage.rs`: `liftoff damage` and
+//! `liftoff design`), listed in [`READERS`]; a directory may hold
 //! several kinds, and each gives its sections. A new command's files get a reader of their own
 //! and a line in that list. Every chart no reader shows still goes on the page ("Other charts").
 
 mod critical;
+mod damage;
 mod page;
 mod solve;
 
@@ -39,6 +41,10 @@ const READERS: &[Reader] = &[
     Reader {
         marks: critical::MARKS,
         read: critical::read,
+    },
+    Reader {
+        marks: damage::MARKS,
+        read: damage::read,
     },
 ];
 
