@@ -321,3 +321,56 @@ fn the_report_shows_the_damage_and_its_maps() {
     assert_eq!(html.matches("<svg").count(), 2, "both damage maps inline");
     assert!(!html.contains("http://") && !html.contains("https://") && !html.contains("src="));
 }
+
+/// The exact interpolation between levels: three levels of the axle at one lateral position, in
+/// two climate bins — no gradient (the slab touches the soil everywhere at every level: the
+/// middle level is interpolated at every position) and night curling (the corners lift, and
+/// the lifted region moves with the load: the sets differ and the positions are solved). The
+/// damage at every element equals the run that solves every level (1e-9 of the largest: the
+/// interpolation is exact, the rest is the solver's tolerance raised to the relation's power).
+#[test]
+fn levels_are_interpolated_exactly_where_the_contact_sets_agree() {
+    let plan = TWO_BINS
+        .replace("levels = [80e3]", "levels = [70e3, 80e3, 110e3]")
+        .replace("repetitions = [1.0e5]", "repetitions = [1.0e5, 1.0e5, 1.0e4]")
+        .replace("steps = 3", "steps = 15")
+        .replace(
+            "[[climate.bin]]\ndifference = 8.0\nshare = 0.6\n[[climate.bin]]\ndifference = -6.0\nshare = 0.4\n",
+            "[[climate.bin]]\ndifference = 0.0\nshare = 0.5\n[[climate.bin]]\ndifference = -6.0\nshare = 0.5\n",
+        );
+    let fast = run(&slab(&plan));
+    let direct = run(&slab(
+        &plan.replace("steps = 15", "steps = 15\ninterpolate = false"),
+    ));
+    assert_eq!(direct.interpolated, 0);
+    // Passes in the order group, level, lateral position, climate bin.
+    let flat = &fast.passes[2];
+    let night = &fast.passes[3];
+    assert_eq!((flat.load, flat.difference), (80e3, Some(0.0)));
+    assert_eq!((night.load, night.difference), (80e3, Some(-6.0)));
+    assert_eq!(
+        (flat.solves, flat.interpolated),
+        (0, 15),
+        "full contact: all interpolated"
+    );
+    assert_eq!(
+        (night.solves, night.interpolated),
+        (15, 0),
+        "lift-off moves: all solved"
+    );
+    assert_eq!(fast.interpolated, 15);
+    let scale = direct
+        .bottom
+        .iter()
+        .chain(&direct.top)
+        .fold(0.0_f64, |m, v| m.max(*v));
+    assert!(scale > 0.0);
+    for (a, b) in fast
+        .bottom
+        .iter()
+        .zip(&direct.bottom)
+        .chain(fast.top.iter().zip(&direct.top))
+    {
+        assert!((a - b).abs() <= 1e-9 * scale, "{a} vs {b}");
+    }
+}

@@ -112,6 +112,14 @@ pub struct DamageSpec {
     /// The relation's coefficients for a local calibration (absent: the pinned edition's).
     #[serde(default)]
     pub coefficients: serde_json::Map<String, serde_json::Value>,
+    /// Fill a level between two whose solutions have the same contact set by their linear
+    /// interpolation, which is then exact (true, the default), or solve every level.
+    #[serde(default = "yes")]
+    pub interpolate: bool,
+}
+
+fn yes() -> bool {
+    true
 }
 
 /// One group's load level: its total load (N) and repetitions in the first year.
@@ -193,6 +201,8 @@ pub struct DamagePlan {
     pub steps: Option<usize>,
     /// The MEPDG's reliability, if given.
     pub reliability: Option<f64>,
+    /// Interpolate between levels with the same contact set ([`DamageSpec::interpolate`]).
+    pub interpolate: bool,
     /// The free-curling curvature of one kelvin of difference in the model's units (κ D / P
     /// per K, [`crate::model::Load::Temperature`]): what a climate bin's difference becomes.
     /// None where the plate has no thermal expansion (then the bins must keep the scene's own
@@ -397,6 +407,7 @@ impl DamagePlan {
             rupture: damage.modulus_of_rupture,
             steps: damage.steps,
             reliability: damage.reliability,
+            interpolate: damage.interpolate,
             curvature_per_kelvin: None,
         }))
     }

@@ -52,6 +52,7 @@ fn csv_passes(d: &Damage) -> String {
         "repetitions".into(),
         "outcome".into(),
         "solves".into(),
+        "interpolated".into(),
         p.header("bottom", sys),
         l.header("bottom_x", sys),
         l.header("bottom_y", sys),
@@ -74,7 +75,7 @@ fn csv_passes(d: &Damage) -> String {
         });
         let _ = writeln!(
             s,
-            "{},{:e},{:e},{},{:e},{},{},{:e},{:e},{:e},{},{:e},{:e},{:e},{},{:e},{:e}",
+            "{},{:e},{:e},{},{:e},{},{},{},{:e},{:e},{:e},{},{:e},{:e},{:e},{},{:e},{:e}",
             q.group,
             c(f, q.load),
             c(l, q.offset),
@@ -82,6 +83,7 @@ fn csv_passes(d: &Damage) -> String {
             q.repetitions,
             q.outcome,
             q.solves,
+            q.interpolated,
             c(p, q.bottom.stress),
             c(l, q.bottom.x),
             c(l, q.bottom.y),
@@ -173,9 +175,10 @@ pub fn damage_table(title: &str, d: &Damage, files: Option<(usize, &Path)>) -> S
     let converged = d.passes.len() - d.missing.len();
     let _ = writeln!(
         s,
-        "liftoff damage — {title}: {} passes ({converged} converged), {} solves",
+        "liftoff damage — {title}: {} passes ({converged} converged), {} solves, {} positions interpolated exactly between levels",
         d.passes.len(),
-        d.solves
+        d.solves,
+        d.interpolated
     );
     let _ = writeln!(
         s,

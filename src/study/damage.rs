@@ -24,7 +24,13 @@
 //! pass-to-coverage ratio is not applied again.
 //!
 //! **Load levels** keep the group's tire prints (the scene's size) and scale their pressure:
-//! the load vector is linear in the level. **Climate bins** add their temperature difference as
+//! the load vector is linear in the level. **Exact interpolation between levels**: the levels
+//! of one group at one lateral position in one climate bin form a family; its lowest and
+//! highest level are solved, and at each position where their solutions have the same contact
+//! set (and the same ε̄) every level between them is their linear interpolation, exactly — the
+//! equations on that set are linear in the load, and the sign conditions (pressure ≥ 0 in
+//! contact, < 0 penalised / zero lifted) are convex, so they hold between the ends, and the
+//! problem has one solution. Where the sets differ, the position is solved. **Climate bins** add their temperature difference as
 //! a linear temperature load to the scene's own loads. Other axles and gears of the scene do not
 //! act in a group's passes.
 //!
@@ -63,8 +69,11 @@ pub struct Pass {
     pub positions: Vec<[f64; 2]>,
     /// How its solves ended: converged, or the first outcome that was not.
     pub outcome: RunOutcome,
-    /// Solves (positions) of the pass.
+    /// Positions solved.
     pub solves: usize,
+    /// Positions filled by the exact interpolation between the family's end levels (their
+    /// contact sets agreed there).
+    pub interpolated: usize,
     /// The largest σ₁ at the bottom over the pass and the element where (x, y), Pa and m.
     pub bottom: Peak,
     /// The same at the top face.
@@ -147,6 +156,8 @@ pub struct Damage {
     pub complete: bool,
     /// Solves run.
     pub solves: usize,
+    /// Positions filled by interpolation instead of a solve.
+    pub interpolated: usize,
     /// Seconds to assemble the shared operators.
     pub assemble_s: f64,
     /// Seconds of the whole run.
@@ -233,46 +244,112 @@ pub fn damage(problem: &Problem, monitor: &Monitor<'_>) -> Result<Damage> {
     let assemble_s = t0.elapsed().as_secs_f64();
     let cases = Cases::new(monitor, bins.len());
     let inner = cases.inner();
-    // Each pass: the largest σ₁ of each face over its positions, per element.
-    let solved: Vec<Result<PassStress>> = passes
+    // The families: the levels of one group at one lateral position in one climate bin, by
+    // load. Their load vectors differ only by the level's multiple of the group's.
+    let mut families: Vec<Vec<usize>> = Vec::new();
+    for (i, b) in bins.iter().enumerate() {
+        match families.iter_mut().find(|f| {
+            let o = &bins[f[0]];
+            (o.group, o.lateral, o.climate) == (b.group, b.lateral, b.climate)
+        }) {
+            Some(f) => f.push(i),
+            None => families.push(vec![i]),
+        }
+    }
+    let level = |i: usize| plan.groups[bins[i].group].levels[bins[i].level].load;
+    for f in &mut families {
+        f.sort_by(|&a, &b| level(a).total_cmp(&level(b)));
+    }
+    let solve = |model: &Model, start: Option<&[f64]>| -> Result<Position> {
+        let ops = base.loaded(model);
+        match analysis::run_from(model, &ops, &problem.method, 0.0, start, &inner) {
+            Err(e @ Error::Cancelled(_)) => Err(e),
+            Err(e) => Ok(Position::Failed(RunOutcome::Failed(e.kind()))),
+            Ok(r) if !r.summary.converged => Ok(Position::Failed(RunOutcome::Solved(
+                r.solution.status.kind(),
+            ))),
+            Ok(r) => Ok(Position::Solved(Box::new(r))),
+        }
+    };
+    // Each pass: the largest σ₁ of each face over its positions, per element; the middle
+    // levels of a family from its ends where their contact sets agree.
+    let solved: Vec<Result<Vec<(usize, PassStress)>>> = families
         .par_iter()
-        .zip(&bins)
-        .map(|(models, bin)| {
-            let mut stress = PassStress::default();
-            let mut start: Option<Vec<f64>> = None;
-            for model in models {
-                let ops = base.loaded(model);
-                let r =
-                    analysis::run_from(model, &ops, &problem.method, 0.0, start.as_deref(), &inner);
-                stress.solves += 1;
-                match r {
-                    Err(e @ Error::Cancelled(_)) => return Err(e),
-                    Err(e) => {
-                        stress.outcome = RunOutcome::Failed(e.kind());
-                        break;
-                    }
-                    Ok(r) if !r.summary.converged => {
-                        stress.outcome = RunOutcome::Solved(r.solution.status.kind());
-                        break;
-                    }
-                    Ok(r) => {
-                        let e = &r.report.elements;
-                        if stress.field.is_none() {
-                            stress.field = Some(r.report.field.clone());
+        .map(|family| {
+            let mut out = Vec::with_capacity(family.len());
+            let ends = plan.interpolate && family.len() >= 3;
+            // The ends' positions, kept when the middle is interpolated from them.
+            let mut kept: [Vec<Option<Kept>>; 2] = [Vec::new(), Vec::new()];
+            let order: Vec<usize> = if ends {
+                let n = family.len();
+                let mut o = vec![family[0], family[n - 1]];
+                o.extend(&family[1..n - 1]);
+                o
+            } else {
+                family.clone()
+            };
+            for (k, &i) in order.iter().enumerate() {
+                let mut stress = PassStress::default();
+                let mut start: Option<Vec<f64>> = None;
+                let t = if ends && k >= 2 {
+                    let (a, b) = (level(family[0]), level(family[family.len() - 1]));
+                    Some((level(i) - a) / (b - a))
+                } else {
+                    None
+                };
+                for (p, model) in passes[i].iter().enumerate() {
+                    if let Some(t) = t {
+                        if let (Some(Some(lo)), Some(Some(hi))) = (kept[0].get(p), kept[1].get(p)) {
+                            if lo.signature == hi.signature && lo.penalty == hi.penalty {
+                                let mix = |x: &[f64], y: &[f64]| -> Vec<f64> {
+                                    x.iter()
+                                        .zip(y)
+                                        .map(|(a, b)| (1.0 - t) * a + t * b)
+                                        .collect()
+                                };
+                                let (bottom, top) =
+                                    (mix(&lo.bottom, &hi.bottom), mix(&lo.top, &hi.top));
+                                stress.take(&bottom, &top, &lo.x, &lo.y);
+                                stress.interpolated += 1;
+                                continue;
+                            }
                         }
-                        stress.take(&e.bottom.s1, &e.top.s1, &e.x, &e.y);
-                        start = Some(r.solution.sigma.clone());
+                    }
+                    let position = solve(model, start.as_deref())?;
+                    stress.solves += 1;
+                    match position {
+                        Position::Failed(outcome) => {
+                            stress.outcome = outcome;
+                            break;
+                        }
+                        Position::Solved(r) => {
+                            let e = &r.report.elements;
+                            if stress.field.is_none() {
+                                stress.field = Some(r.report.field.clone());
+                            }
+                            stress.take(&e.bottom.s1, &e.top.s1, &e.x, &e.y);
+                            if ends && k < 2 {
+                                let keep = &mut kept[k];
+                                keep.resize(p, None);
+                                keep.push(Some(Kept::of(&r)));
+                            }
+                            start = Some(r.solution.sigma.clone());
+                        }
                     }
                 }
+                cases.finish(&label(plan, &bins[i]))?;
+                out.push((i, stress));
             }
-            cases.finish(&label(plan, bin))?;
-            Ok(stress)
+            Ok(out)
         })
         .collect();
-    let mut stresses = Vec::with_capacity(bins.len());
-    for s in solved {
-        stresses.push(s?);
+    let mut by_bin: Vec<Option<PassStress>> = vec![None; bins.len()];
+    for part in solved {
+        for (i, s) in part? {
+            by_bin[i] = Some(s);
+        }
     }
+    let stresses: Vec<PassStress> = by_bin.into_iter().map(Option::unwrap_or_default).collect();
     let Some(first) = stresses.iter().find(|s| !s.x.is_empty()) else {
         return Err(Error::numerical(
             "damage",
@@ -356,6 +433,7 @@ pub fn damage(problem: &Problem, monitor: &Monitor<'_>) -> Result<Damage> {
                     .collect(),
                 outcome: s.outcome,
                 solves: s.solves,
+                interpolated: s.interpolated,
                 bottom: peak(&s.bottom),
                 top: peak(&s.top),
                 bottom_share: share(&s.bottom, gb.element),
@@ -398,6 +476,7 @@ pub fn damage(problem: &Problem, monitor: &Monitor<'_>) -> Result<Damage> {
         complete: missing.is_empty(),
         missing,
         solves: stresses.iter().map(|s| s.solves).sum(),
+        interpolated: stresses.iter().map(|s| s.interpolated).sum(),
         passes: passes_out,
         assemble_s,
         total_s: t0.elapsed().as_secs_f64(),
@@ -415,7 +494,43 @@ struct PassStress {
     y: Vec<f64>,
     outcome: RunOutcome,
     solves: usize,
+    interpolated: usize,
     field: Option<crate::post::FullField>,
+}
+
+/// One position's solve: its answer, or how it ended without one.
+enum Position {
+    Solved(Box<analysis::MethodRun>),
+    Failed(RunOutcome),
+}
+
+/// What a family's end keeps of one position for its middle levels: the element stresses and
+/// the contact set (the sign of each constraint point's pressure) with the penalty's ε̄.
+#[derive(Debug, Clone)]
+struct Kept {
+    bottom: Vec<f64>,
+    top: Vec<f64>,
+    x: Vec<f64>,
+    y: Vec<f64>,
+    signature: Vec<bool>,
+    penalty: Option<u64>,
+}
+
+impl Kept {
+    fn of(r: &analysis::MethodRun) -> Self {
+        let e = &r.report.elements;
+        // In contact: a pressure above round-off of the largest (the QP's lifted points hold
+        // zero up to its tolerance, the penalty's a small tension).
+        let peak = r.solution.sigma.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+        Self {
+            bottom: e.bottom.s1.clone(),
+            top: e.top.s1.clone(),
+            x: e.x.clone(),
+            y: e.y.clone(),
+            signature: r.solution.sigma.iter().map(|&v| v > 1e-9 * peak).collect(),
+            penalty: r.solution.method.penalty_epsilon().map(f64::to_bits),
+        }
+    }
 }
 
 impl Default for PassStress {
@@ -427,6 +542,7 @@ impl Default for PassStress {
             y: Vec::new(),
             outcome: RunOutcome::CONVERGED,
             solves: 0,
+            interpolated: 0,
             field: None,
         }
     }
