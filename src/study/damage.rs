@@ -293,7 +293,8 @@ pub fn damage(problem: &Problem, monitor: &Monitor<'_>) -> Result<Damage> {
                 let mut start: Option<Vec<f64>> = None;
                 let t = if ends && k >= 2 {
                     let (a, b) = (level(family[0]), level(family[family.len() - 1]));
-                    Some((level(i) - a) / (b - a))
+                    // Equal ends: every level between is the same load.
+                    Some(if b > a { (level(i) - a) / (b - a) } else { 0.0 })
                 } else {
                     None
                 };
@@ -301,14 +302,10 @@ pub fn damage(problem: &Problem, monitor: &Monitor<'_>) -> Result<Damage> {
                     if let Some(t) = t {
                         if let (Some(Some(lo)), Some(Some(hi))) = (kept[0].get(p), kept[1].get(p)) {
                             if lo.signature == hi.signature && lo.penalty == hi.penalty {
-                                let mix = |x: &[f64], y: &[f64]| -> Vec<f64> {
-                                    x.iter()
-                                        .zip(y)
-                                        .map(|(a, b)| (1.0 - t) * a + t * b)
-                                        .collect()
-                                };
+                                // The stress components are linear in the load; σ₁ is
+                                // not: it is taken from the interpolated components.
                                 let (bottom, top) =
-                                    (mix(&lo.bottom, &hi.bottom), mix(&lo.top, &hi.top));
+                                    (lo.bottom.mix(&hi.bottom, t), lo.top.mix(&hi.top, t));
                                 stress.take(&bottom, &top, &lo.x, &lo.y);
                                 stress.interpolated += 1;
                                 continue;
@@ -498,6 +495,38 @@ struct PassStress {
     field: Option<crate::post::FullField>,
 }
 
+/// A face's stress components (σx, σy, τxy) per element, which are linear in the load.
+#[derive(Debug, Clone)]
+struct Components {
+    sx: Vec<f64>,
+    sy: Vec<f64>,
+    sxy: Vec<f64>,
+}
+
+impl Components {
+    fn of(f: &crate::post::stress::FaceStress) -> Self {
+        Self {
+            sx: f.sx.clone(),
+            sy: f.sy.clone(),
+            sxy: f.sxy.clone(),
+        }
+    }
+
+    /// σ₁ of (1 − t) self + t other, element by element.
+    fn mix(&self, other: &Components, t: f64) -> Vec<f64> {
+        let m = |a: f64, b: f64| (1.0 - t) * a + t * b;
+        let mut face = crate::post::stress::FaceStress::default();
+        for i in 0..self.sx.len() {
+            face.push(
+                m(self.sx[i], other.sx[i]),
+                m(self.sy[i], other.sy[i]),
+                m(self.sxy[i], other.sxy[i]),
+            );
+        }
+        face.s1
+    }
+}
+
 /// One position's solve: its answer, or how it ended without one.
 enum Position {
     Solved(Box<analysis::MethodRun>),
@@ -508,8 +537,8 @@ enum Position {
 /// the contact set (the sign of each constraint point's pressure) with the penalty's ε̄.
 #[derive(Debug, Clone)]
 struct Kept {
-    bottom: Vec<f64>,
-    top: Vec<f64>,
+    bottom: Components,
+    top: Components,
     x: Vec<f64>,
     y: Vec<f64>,
     signature: Vec<bool>,
@@ -523,8 +552,8 @@ impl Kept {
         // zero up to its tolerance, the penalty's a small tension).
         let peak = r.solution.sigma.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
         Self {
-            bottom: e.bottom.s1.clone(),
-            top: e.top.s1.clone(),
+            bottom: Components::of(&e.bottom),
+            top: Components::of(&e.top),
             x: e.x.clone(),
             y: e.y.clone(),
             signature: r.solution.sigma.iter().map(|&v| v > 1e-9 * peak).collect(),
