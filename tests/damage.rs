@@ -180,6 +180,8 @@ fn bad_plans_name_the_key() {
     assert!(e.contains("climate.bin") && e.contains("1.1"), "{e}");
     let e = err(&TWO_BINS.replace("model = \"mepdg\"", "model = \"aashto93\""));
     assert!(e.contains("damage.model"), "{e}");
+    let e = err(&TWO_BINS.replace("steps = 3", "steps = 3\n[damage.coefficients]\nc9 = 1.0"));
+    assert!(e.contains("damage.coefficients") && e.contains("c9"), "{e}");
     let e = err(&TWO_BINS.replace("design_life = 10", "design_life = -1"));
     assert!(e.contains("traffic.design_life"), "{e}");
 }

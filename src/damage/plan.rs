@@ -373,10 +373,15 @@ impl DamagePlan {
         coefficients.insert("model".into(), damage.model.clone().into());
         let model: crate::damage::relations::DamageModel =
             serde_json::from_value(serde_json::Value::Object(coefficients)).map_err(|e| {
+                let text = e.to_string();
                 Error::invalid(
-                    "damage.model",
+                    if text.contains("unknown field") {
+                        "damage.coefficients"
+                    } else {
+                        "damage.model"
+                    },
                     format!(
-                        "{e}: write model = \"pca\", \"mepdg\" or \"faa\", and in [damage.coefficients] only that relation's coefficients"
+                        "{text}: write model = \"pca\", \"mepdg\" or \"faa\", and in [damage.coefficients] only that relation's coefficients"
                     ),
                 )
             })?;
