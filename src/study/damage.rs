@@ -354,7 +354,11 @@ pub fn damage(problem: &Problem, monitor: &Monitor<'_>) -> Result<Damage> {
         ));
     };
     let (xs, ys) = (first.x.clone(), first.y.clone());
-    let field = first.field.clone().unwrap_or_default();
+    // The grid of a solved position (a pass all interpolated has none of its own).
+    let field = stresses
+        .iter()
+        .find_map(|s| s.field.clone())
+        .unwrap_or_default();
     let n = xs.len();
     let allowed = |s: f64| -> f64 {
         if s > 0.0 {
