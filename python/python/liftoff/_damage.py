@@ -18,7 +18,7 @@ def _pass_row(p: Dict[str, Any]) -> Dict[str, Any]:
     """A pass of damage.json as a row of passes.csv (the same names, the same units), with its
     positions added."""
     row = {k: p[k] for k in ("group", "load", "offset", "difference", "repetitions", "outcome",
-                             "solves")}
+                             "solves", "interpolated")}
     for face in ("bottom", "top"):
         peak = p[face]
         row[face] = peak["stress"]
@@ -43,7 +43,8 @@ class Damage:
     - ``passes``: :class:`Records`, one per case (a group at a level, at a lateral position, in
       a climate bin), with passes.csv's columns — ``group``, ``load``, ``offset``,
       ``difference`` (None without ``[climate]``), ``repetitions``, ``outcome``, ``solves``,
-      ``bottom``/``top`` (the pass's largest σ₁ of that face), ``bottom_x``, ``bottom_y``,
+      ``interpolated`` (positions filled exactly from the end levels), ``bottom``/``top``
+      (the pass's largest σ₁ of that face), ``bottom_x``, ``bottom_y``,
       ``bottom_allowed`` (N there; None: unlimited), the same for ``top``, ``bottom_share``,
       ``top_share`` (its Σ n/N at the governing element) — and ``positions`` (the group's
       reference point at each position of the pass). A pass that did not converge has None
@@ -53,7 +54,8 @@ class Damage:
       ``governing_bottom`` / ``governing_top`` (dicts: ``damage``, ``x``, ``y``,
       ``element`` = ie + je·nx), ``cracking`` (the MEPDG's, a dict of ``bottom``, ``top``,
       ``total``, ``at_reliability`` in %; None for the other relations), ``complete``,
-      ``missing`` (the passes that did not converge, by label), ``solves``, ``assemble_s``,
+      ``missing`` (the passes that did not converge, by label), ``solves``, ``interpolated``,
+      ``assemble_s``,
       ``total_s``, ``units``. ``summary`` is that whole dict.
     """
 
