@@ -378,3 +378,39 @@ fn levels_are_interpolated_exactly_where_the_contact_sets_agree() {
         assert!((a - b).abs() <= 1e-9 * scale, "{a} vs {b}");
     }
 }
+
+/// No silent partial sums: four penalty steps settle the day-curling pass but not the night one.
+/// The run says it is incomplete and names the night pass, which adds nothing (its shares are
+/// zero); the sums hold the day pass alone — at no element above the complete run's, and below
+/// it where the night pass weighs.
+#[test]
+fn a_pass_that_does_not_converge_is_named_and_left_out() {
+    let capped = run(&slab(TWO_BINS).replace(
+        "contact = \"unbonded\"",
+        "contact = \"unbonded\"\nmethod = \"penalty\"\nmax_iterations = 4",
+    ));
+    let full = run(&slab(TWO_BINS));
+    assert!(full.complete);
+    assert!(!capped.complete);
+    assert_eq!(capped.missing.len(), 1, "{:?}", capped.missing);
+    assert!(
+        capped.missing[0].contains("ΔT -6.0 K"),
+        "{:?}",
+        capped.missing
+    );
+    let night = &capped.passes[1];
+    assert_ne!(night.outcome, liftoff::study::RunOutcome::CONVERGED);
+    assert_eq!((night.bottom_share, night.top_share), (0.0, 0.0));
+    let scale = full.top.iter().fold(0.0_f64, |m, v| m.max(*v));
+    for (c, f) in capped.top.iter().zip(&full.top) {
+        assert!(*c <= f + 1e-9 * scale, "{c} above the complete run's {f}");
+    }
+    assert!(
+        capped
+            .top
+            .iter()
+            .zip(&full.top)
+            .any(|(c, f)| *c < f - 1e-6 * scale),
+        "the night pass's top-down damage is missing from the sums"
+    );
+}
