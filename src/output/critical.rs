@@ -10,7 +10,6 @@ use super::chart::{self, Influence, Units};
 use super::Staged;
 use crate::error::{Error, Result};
 use crate::layout::Axis;
-use crate::model::Physical;
 use crate::post::JointLine;
 use crate::study::{Critical, Position, RunOutcome};
 
@@ -78,15 +77,7 @@ fn csv(c: &Critical) -> String {
 
 /// The maps' and the table's units: the scene's system, lengths in metres of the search.
 fn units_of(c: &Critical) -> Units {
-    Units::new(
-        Some(Physical {
-            half_length: 1.0,
-            force: 1.0,
-            rigidity: 1.0,
-            units: c.units.unwrap_or_default(),
-        }),
-        1.0,
-    )
+    Units::of_si(c.units.unwrap_or_default())
 }
 
 /// Write critical.csv, critical.json and the influence maps into `dir`, staged.

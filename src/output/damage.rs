@@ -40,10 +40,7 @@ fn csv_damage(d: &Damage) -> String {
 fn csv_passes(d: &Damage) -> String {
     let sys = d.units;
     let (l, p, f) = (Measure::Length, Measure::Pressure, Measure::Force);
-    let t = match sys {
-        Some(crate::units::UnitSystem::Us) => "°F",
-        _ => "K",
-    };
+    let t = crate::units::Quantity::TemperatureDifference.unit(sys.unwrap_or_default());
     let mut s = [
         "group".to_string(),
         f.header("load", sys),
@@ -69,6 +66,7 @@ fn csv_passes(d: &Damage) -> String {
     let c = |m: Measure, v: f64| m.from_si(sys, v);
     let opt = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v:e}"));
     for q in &d.passes {
+        // As damage.json (`Damage::reported`): 9/5 exactly.
         let diff = q.difference.map(|k| match sys {
             Some(crate::units::UnitSystem::Us) => k * 9.0 / 5.0,
             _ => k,
@@ -101,15 +99,7 @@ fn csv_passes(d: &Damage) -> String {
 
 /// The maps' units: the scene's system, lengths in metres of the field.
 fn units_of(d: &Damage) -> Units {
-    Units::new(
-        Some(crate::model::Physical {
-            half_length: 1.0,
-            force: 1.0,
-            rigidity: 1.0,
-            units: d.units.unwrap_or_default(),
-        }),
-        1.0,
-    )
+    Units::of_si(d.units.unwrap_or_default())
 }
 
 /// Write damage.csv, passes.csv, damage.json and the two damage maps into `dir`, staged.

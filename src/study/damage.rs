@@ -183,6 +183,7 @@ impl Damage {
             y: l(p.y),
             allowed: p.allowed,
         };
+        // 9/5 exactly: Quantity's SI-per-°F factor (5/9) divides to 14.399999999999999 for 8 K.
         let kelvin = |k: f64| match sys {
             Some(crate::units::UnitSystem::Us) => k * 9.0 / 5.0,
             _ => k,

@@ -70,6 +70,20 @@ impl Units {
         Self { physical, mu }
     }
 
+    /// Units for values already in SI base units (Pa, m, N — a moving load's search, a damage
+    /// run), shown in `system`'s engineering units.
+    pub fn of_si(system: crate::units::UnitSystem) -> Self {
+        Self::new(
+            Some(Physical {
+                half_length: 1.0,
+                force: 1.0,
+                rigidity: 1.0,
+                units: system,
+            }),
+            1.0,
+        )
+    }
+
     /// The paper's dimensionless units (V, σ, lengths in L).
     pub fn dimensionless(mu: f64) -> Self {
         Self::new(None, mu)

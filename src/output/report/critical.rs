@@ -58,15 +58,7 @@ pub(crate) fn read(l: &mut Listing) -> Result<Option<Part>> {
         .and_then(Value::as_str)
         .and_then(<crate::units::UnitSystem as crate::choice::Choice>::from_name)
         .unwrap_or_default();
-    let units = Units::new(
-        Some(crate::model::Physical {
-            half_length: 1.0,
-            force: 1.0,
-            rigidity: 1.0,
-            units: system,
-        }),
-        1.0,
-    );
+    let units = Units::of_si(system);
     let shown = Shown {
         units,
         map: v.get("units").and_then(Value::as_object),
