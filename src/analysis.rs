@@ -65,9 +65,23 @@ pub fn run_from(
     start: Option<&[f64]>,
     monitor: &Monitor<'_>,
 ) -> Result<MethodRun> {
+    run_carried(model, ops, method, assemble_s, start, None, monitor)
+}
+
+/// [`run_from`], with the last factor of the solve before it on the same operators handed over
+/// by `carry` ([`solve::Carry`]: a load moved along a lane, position after position).
+pub fn run_carried(
+    model: &Model,
+    ops: &Operators,
+    method: &Method,
+    assemble_s: f64,
+    start: Option<&[f64]>,
+    carry: Option<&solve::Carry>,
+    monitor: &Monitor<'_>,
+) -> Result<MethodRun> {
     let t = Instant::now();
     let solution = match start {
-        Some(s) => solve::solve_with(ops, method, Some(s), monitor)?,
+        Some(s) => solve::solve_carried(ops, method, Some(s), carry, monitor)?,
         None => solve::solve_nested(model, ops, method, monitor)?,
     };
     let solve_s = t.elapsed().as_secs_f64();

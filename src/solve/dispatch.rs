@@ -3,6 +3,7 @@
 
 use super::checks::{check_equilibrium, check_feasible};
 use super::solution::Solution;
+use super::spring_factor::Carry;
 use super::{bonded, penalty, qp};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
@@ -50,6 +51,19 @@ pub fn solve_with(
     start: Option<&[f64]>,
     monitor: &Monitor<'_>,
 ) -> Result<Solution> {
+    solve_carried(ops, method, start, None, monitor)
+}
+
+/// [`solve_with`], where the penalty iteration takes the last factor of the solve before it on
+/// the same operators from `carry` and leaves its own there ([`Carry`]); the other methods
+/// ignore it.
+pub fn solve_carried(
+    ops: &Operators,
+    method: &Method,
+    start: Option<&[f64]>,
+    carry: Option<&Carry>,
+    monitor: &Monitor<'_>,
+) -> Result<Solution> {
     method.validate()?;
     let sol = match method {
         Method::Bonded => {
@@ -62,7 +76,7 @@ pub fn solve_with(
         }
         Method::Penalty(settings) => {
             check_feasible(ops)?;
-            penalty::solve_with(ops, settings, start, monitor)?
+            penalty::solve_carried(ops, settings, start, carry, monitor)?
         }
         Method::Qp(settings) => {
             check_feasible(ops)?;

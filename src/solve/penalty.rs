@@ -20,9 +20,9 @@ use std::time::Instant;
 
 use super::checks::discrete_gap;
 use super::linalg::finite;
-pub use super::penalty_step::WOODBURY_MAX_RANK;
 use super::penalty_step::{constraint_rows, penalty_weights, Backend};
 use super::solution::{Iteration, PenaltyStage, Solution, SolveInfo, Status, Timings};
+use super::spring_factor::Carry;
 use crate::error::{Error, Result};
 use crate::method::{Method, PenaltySettings};
 use crate::monitor::{Monitor, Progress, StepKind};
@@ -437,6 +437,20 @@ pub fn solve_with(
     start: Option<&[f64]>,
     monitor: &Monitor<'_>,
 ) -> Result<Solution> {
+    solve_carried(ops, settings, start, None, monitor)
+}
+
+/// [`solve_with`], handed the last factor of the solve before it on the same operators by
+/// `carry` and leaving its own there (Winkler with nodal constraints; see
+/// [`super::spring_factor`]): a pass of a load along a lane solves its next position as an
+/// update of its last one's factor. The answer does not depend on the carry.
+pub fn solve_carried(
+    ops: &Operators,
+    settings: &PenaltySettings,
+    start: Option<&[f64]>,
+    carry: Option<&Carry>,
+    monitor: &Monitor<'_>,
+) -> Result<Solution> {
     let t0 = Instant::now();
     let n_c = ops.constraints.g.rows();
     let given = start;
@@ -449,7 +463,7 @@ pub fn solve_with(
         _ => vec![false; n_c],
     };
     let lifted = start.iter().filter(|&&p| p).count();
-    let mut backend = Backend::new(ops, settings.cg, lifted)?;
+    let mut backend = Backend::new(ops, settings.cg, lifted, carry)?;
     if let Some(sigma) = given.filter(|s| s.len() == ops.n_sigma()) {
         backend.warm_start(sigma);
     }
@@ -493,6 +507,9 @@ pub fn solve_with(
             _ => break end,
         }
     };
+    if let Some(c) = carry {
+        backend.hand_over(c);
+    }
     let gap = discrete_gap(ops, &end.u, &end.sigma);
     let cg_iterations = cg_total(&history);
     Ok(Solution {

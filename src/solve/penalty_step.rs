@@ -20,6 +20,7 @@ use super::linalg::{diagonal_positions, lumped_coupling};
 use super::linalg::{faer_view, sparse_solve, SparseCholesky, SparseFactor};
 use super::low_rank::LowRankSchur;
 use super::rigid_split::{needs_split, RigidSplit};
+use super::spring_factor::{woodbury_limit, Carry, Factored};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
 use crate::model::ConstraintPoints;
@@ -45,8 +46,9 @@ pub(super) enum Backend {
         coupling: Vec<(usize, f64)>,
         t: Vec<f64>,
         chol: SparseCholesky,
-        /// The last numeric factor and the spring stiffness per pressure node it was made with.
-        factored: Option<(Arc<SparseFactor>, Vec<f64>)>,
+        /// The last numeric factor, the spring stiffness per pressure node it was made with and
+        /// its Woodbury columns.
+        factored: Option<Factored>,
         /// The split solve of a nearly rigid plate ([`RigidSplit`]), made when first needed.
         split: Option<Box<RigidSplit>>,
     },
@@ -64,8 +66,14 @@ pub(super) enum Backend {
 
 impl Backend {
     /// The backend of `ops`, for an iteration whose first penalised set has `lifted_at_start`
-    /// points.
-    pub(super) fn new(ops: &Operators, cg: CgSettings, lifted_at_start: usize) -> Result<Self> {
+    /// points; on the Winkler spring route it starts from the factor `carry` holds when that was
+    /// made for these operators (see [`Self::hand_over`]).
+    pub(super) fn new(
+        ops: &Operators,
+        cg: CgSettings,
+        lifted_at_start: usize,
+        carry: Option<&Carry>,
+    ) -> Result<Self> {
         match (ops.t.as_ref(), ops.constraints.kind) {
             (Compliance::Diagonal(t), ConstraintPoints::Nodal) => {
                 let k = (*ops.k).clone();
@@ -104,7 +112,19 @@ impl Backend {
                     )?))
                 })?;
                 let chol = analysis.0.clone();
-                let start = if lifted_at_start <= WOODBURY_MAX_RANK {
+                if let Some(carried) = carry.and_then(|c| c.take_for(&ops.k)) {
+                    return Ok(Backend::Springs {
+                        k,
+                        diag,
+                        base,
+                        coupling,
+                        t: t.clone(),
+                        chol,
+                        factored: Some(carried),
+                        split: None,
+                    });
+                }
+                let start = if lifted_at_start <= woodbury_limit(k.rows()) {
                     let (start, _) = ops.cache.get_or_try_init(|| -> Result<SpringsStart> {
                         let springs: Vec<f64> = bonded_springs.iter().map(|&(_, s)| s).collect();
                         let mut bonded = k.clone();
@@ -125,7 +145,8 @@ impl Backend {
                     coupling,
                     t: t.clone(),
                     chol,
-                    factored: start.map(|s| (s.factor.clone(), s.springs.clone())),
+                    factored: start
+                        .map(|s| Factored::new(ops.k.clone(), s.factor.clone(), s.springs.clone())),
                     split: None,
                 })
             }
@@ -181,6 +202,19 @@ impl Backend {
                 Box::new(SchurSystem::new(ops)?),
                 LowRankSchur::new(),
             )),
+        }
+    }
+
+    /// Keep the Winkler spring route's last factor in `carry` for the next solve on the same
+    /// operators (the other routes hand nothing over).
+    pub(super) fn hand_over(self, carry: &Carry) {
+        if let Backend::Springs {
+            factored,
+            split: None,
+            ..
+        } = self
+        {
+            carry.put(factored);
         }
     }
 
@@ -274,18 +308,15 @@ impl Backend {
                         None => return Err(Error::numerical("penalty", "no split solver")),
                     }
                 } else {
+                    let limit = woodbury_limit(k.rows());
                     match factored {
-                        Some((factor, old))
-                            if changed(old, &springs).len() <= WOODBURY_MAX_RANK =>
-                        {
-                            let idx = changed(old, &springs);
-                            woodbury_solve(
-                                factor,
-                                &rhs,
-                                &idx.iter()
-                                    .map(|&j| (coupling[j].0, springs[j] - old[j]))
-                                    .collect::<Vec<_>>(),
-                            )?
+                        Some(f) if f.changed(&springs).len() <= limit => {
+                            let updates: Vec<(usize, f64)> = f
+                                .changed(&springs)
+                                .into_iter()
+                                .map(|j| (coupling[j].0, springs[j] - f.springs[j]))
+                                .collect();
+                            f.woodbury_solve(&rhs, &updates)?
                         }
                         _ => {
                             k.data_mut().copy_from_slice(base);
@@ -295,7 +326,8 @@ impl Backend {
                             let llt = chol.factor(k, "penalised Winkler system")?;
                             let mut u = rhs;
                             sparse_solve(&llt, &mut u);
-                            *factored = Some((Arc::new(llt), springs.clone()));
+                            *factored =
+                                Some(Factored::new(ops.k.clone(), Arc::new(llt), springs.clone()));
                             u
                         }
                     }
@@ -370,58 +402,9 @@ pub(super) fn penalty_weights(ops: &Operators, penalised: &[bool], epsilon: f64)
         .collect()
 }
 
-/// Up to this many changed springs since the last factorisation, a step is solved with the old
-/// factor and a Woodbury correction (k + 1 solves with the factor and a dense k × k system)
-/// instead of a new numeric factorisation.
-pub const WOODBURY_MAX_RANK: usize = 64;
-
 /// The relative CG tolerance of the penalty steps between the loose ones and the confirming
 /// tight ones (iterative route).
 pub const MEDIUM_TOLERANCE: f64 = 1e-7;
-
-/// Indices whose spring stiffness changed.
-fn changed(old: &[f64], new: &[f64]) -> Vec<usize> {
-    old.iter()
-        .zip(new)
-        .enumerate()
-        .filter(|(_, (a, b))| a != b)
-        .map(|(j, _)| j)
-        .collect()
-}
-
-/// Solve (A + Σ_j δ_j e_{i_j} e_{i_j}ᵀ) u = f from a factor of A (Sherman–Morrison–Woodbury):
-/// u = y − Z (diag(1/δ) + Uᵀ Z)⁻¹ Uᵀ y with y = A⁻¹ f, Z = A⁻¹ U.
-fn woodbury_solve(factor: &SparseFactor, f: &[f64], updates: &[(usize, f64)]) -> Result<Vec<f64>> {
-    let n = f.len();
-    let k = updates.len();
-    let mut y = f.to_vec();
-    sparse_solve(factor, &mut y);
-    if k == 0 {
-        return Ok(y);
-    }
-    let mut z = Mat::<f64>::zeros(n, k);
-    for (c, &(i, _)) in updates.iter().enumerate() {
-        z[(i, c)] = 1.0;
-    }
-    factor.solve_in_place(z.as_mut());
-    let m = Mat::<f64>::from_fn(k, k, |a, b| {
-        z[(updates[a].0, b)] + if a == b { 1.0 / updates[a].1 } else { 0.0 }
-    });
-    let mut rhs = Mat::<f64>::from_fn(k, 1, |a, _| y[updates[a].0]);
-    let lu = m.partial_piv_lu();
-    lu.solve_in_place(rhs.as_mut());
-    for (i, yi) in y.iter_mut().enumerate() {
-        let corr: f64 = (0..k).map(|c| z[(i, c)] * rhs[(c, 0)]).sum();
-        *yi -= corr;
-    }
-    if y.iter().any(|v| !v.is_finite()) {
-        return Err(Error::numerical(
-            "penalty (low-rank update)",
-            "non-finite values",
-        ));
-    }
-    Ok(y)
-}
 
 /// Rows of G as (σ index, value) lists.
 pub(super) fn constraint_rows(ops: &Operators) -> Vec<Vec<(usize, f64)>> {

@@ -34,6 +34,7 @@ use crate::layout::{Axis, JointType};
 use crate::model::{Model, SymmetryMode};
 use crate::monitor::{Cases, Monitor};
 use crate::scene::Problem;
+use crate::solve::Carry;
 use crate::units::{Measure, UnitSystem};
 
 /// What to move and over what.
@@ -881,12 +882,19 @@ pub fn critical(
         .map(|run| {
             let mut out = Vec::with_capacity(run.len());
             let mut start: Option<Vec<f64>> = None;
+            // A warm run also hands each solve's last factor to the next ([`Carry`]).
+            let carry = Carry::new();
             for &(i, model) in run {
                 let t = Instant::now();
                 let [x, y, heading] = points[i];
                 let ops = base.loaded(model);
-                let warm = if options.warm { start.as_deref() } else { None };
-                let result = analysis::run_from(model, &ops, &problem.method, 0.0, warm, &inner);
+                let (warm, carried) = if options.warm {
+                    (start.as_deref(), Some(&carry))
+                } else {
+                    (None, None)
+                };
+                let result =
+                    analysis::run_carried(model, &ops, &problem.method, 0.0, warm, carried, &inner);
                 let position = match result {
                     Err(e @ Error::Cancelled(_)) => return Err(e),
                     Ok(r) => {
