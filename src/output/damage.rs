@@ -102,7 +102,8 @@ fn units_of(d: &Damage) -> Units {
     Units::of_si(d.units.unwrap_or_default())
 }
 
-/// Write damage.csv, passes.csv, damage.json and the two damage maps into `dir`, staged.
+/// Write damage.csv, passes.csv, damage.json, damage.vtu (the map as ParaView cell data) and the
+/// two damage map charts into `dir`, staged.
 pub fn write_damage(dir: &Path, d: &Damage, title: &str) -> Result<Vec<PathBuf>> {
     let mut st = Staged::new(dir)?;
     st.write_text("damage.csv", &csv_damage(d))?;
@@ -110,6 +111,13 @@ pub fn write_damage(dir: &Path, d: &Damage, title: &str) -> Result<Vec<PathBuf>>
     let json = serde_json::to_string_pretty(&d.reported())
         .map_err(|e| Error::numerical("damage.json", format!("cannot serialise: {e}")))?;
     st.write_text("damage.json", &json)?;
+    // The damage map as ParaView cell data on the plate's grid (in the scene's units, as
+    // plate.vtu): no point data, since no one solve's deflection belongs to a sum over passes.
+    super::vtk::write_cell_vtu(
+        &st.path("damage.vtu"),
+        &d.field.in_units(d.units),
+        &[("damage_bottom", &d.bottom), ("damage_top", &d.top)],
+    )?;
     let units = units_of(d);
     let length = units.length();
     let number = chart::Scale {
@@ -219,7 +227,7 @@ pub fn damage_table(title: &str, d: &Damage, files: Option<(usize, &Path)>) -> S
     if let Some((k, dir)) = files {
         let _ = writeln!(
             s,
-            "  files      : {k} in {} (damage.csv, passes.csv, damage.json, damage maps)",
+            "  files      : {k} in {} (damage.csv, passes.csv, damage.json, damage.vtu, damage maps)",
             dir.display()
         );
     }
@@ -255,12 +263,7 @@ pub fn write_design(dir: &Path, d: &crate::study::Design, title: &str) -> Result
         );
     }
     st.write_text("design.csv", &csv)?;
-    let mut reported = d.clone();
-    for p in &mut reported.points {
-        p.thickness = l(p.thickness);
-    }
-    reported.thickness = d.thickness.map(l);
-    reported.bracket = d.bracket.map(|[a, b]| [l(a), l(b)]);
+    let reported = d.reported();
     let json = serde_json::to_string_pretty(&reported)
         .map_err(|e| Error::numerical("design.json", format!("cannot serialise: {e}")))?;
     st.write_text("design.json", &json)?;

@@ -91,12 +91,69 @@ impl Scalar for u8 {
 /// corner table names a copy the arrays do not have.
 pub fn write_vtu(path: &Path, field: &FullField, elements: &ElementField) -> Result<()> {
     let sizes = check(path, field, elements)?;
+    let content = Content {
+        nodal: true,
+        cells: cell_arrays(elements),
+    };
+    write_file(path, field, &content, &sizes)
+}
+
+/// Write the plate's grid (points and cells as [`write_vtu`]) with cell data only: `cells`, one
+/// value per element (index ie + je nx), the first the active scalars, and the `panel` of each
+/// element on a plate with panels. For maps that are not one solve's fields (the damage summed
+/// over many solves): no point data, so no solve's deflection is shown with them.
+///
+/// # Errors
+/// As [`write_vtu`]: a grid whose corner table does not match, or a cell array without one
+/// entry per element.
+pub fn write_cell_vtu(
+    path: &Path,
+    field: &FullField,
+    cells: &[(&'static str, &[f64])],
+) -> Result<()> {
+    let (nx, ny) = (field.nx, field.ny);
+    let n_cells = nx.saturating_mul(ny);
+    if let Some((name, v)) = cells.iter().find(|(_, v)| v.len() != n_cells) {
+        return Err(io_error(
+            path,
+            std::io::ErrorKind::InvalidInput,
+            format!(
+                "element array `{name}` has {} entries, the grid has {n_cells} elements",
+                v.len()
+            ),
+        ));
+    }
+    // The grid's own checks: its nodal arrays and corner table (no element values of a solve).
+    let sizes = check(path, field, &ElementField::default())?;
+    let content = Content {
+        nodal: false,
+        cells: cells.to_vec(),
+    };
+    write_file(
+        path,
+        field,
+        &content,
+        &Sizes {
+            with_cells: !cells.is_empty(),
+            ..sizes
+        },
+    )
+}
+
+/// What a file holds beside the grid: the nodal fields of a solve or none, and the cell arrays
+/// (the first the active scalars).
+struct Content<'a> {
+    nodal: bool,
+    cells: Vec<(&'static str, &'a [f64])>,
+}
+
+fn write_file(path: &Path, field: &FullField, content: &Content<'_>, sizes: &Sizes) -> Result<()> {
     let io = |source| Error::Io {
         path: path.display().to_string(),
         source,
     };
     let mut out = BufWriter::new(File::create(path).map_err(io)?);
-    write_xml(&mut out, field, elements, &sizes).map_err(io)?;
+    write_xml(&mut out, field, content, sizes).map_err(io)?;
     out.flush().map_err(io)
 }
 
@@ -205,7 +262,7 @@ fn cell_arrays(elements: &ElementField) -> Vec<(&'static str, &[f64])> {
 fn write_xml<W: Write>(
     out: W,
     field: &FullField,
-    elements: &ElementField,
+    content: &Content<'_>,
     sizes: &Sizes,
 ) -> io::Result<()> {
     let mut xml = Writer::new_with_indent(out, b' ', 2);
@@ -226,7 +283,7 @@ fn write_xml<W: Write>(
                             ("NumberOfPoints", nodes.as_str()),
                             ("NumberOfCells", cells.as_str()),
                         ])
-                        .write_inner_content(|xml| piece(xml, field, elements, sizes))
+                        .write_inner_content(|xml| piece(xml, field, content, sizes))
                         .map(drop)
                 })
                 .map(drop)
@@ -238,37 +295,18 @@ fn write_xml<W: Write>(
 fn piece<W: Write>(
     xml: &mut Writer<W>,
     field: &FullField,
-    elements: &ElementField,
+    content: &Content<'_>,
     sizes: &Sizes,
 ) -> io::Result<()> {
-    let nodal: [(&str, &[f64]); 9] = [
-        ("w", &field.w),
-        ("psi_x", &field.psi_x),
-        ("psi_y", &field.psi_y),
-        ("pressure", &field.pressure),
-        ("gap", &field.gap),
-        ("V", &field.v),
-        ("sigma", &field.sigma),
-        ("s1_bottom", &field.s1_bottom),
-        ("s1_top", &field.s1_top),
-    ];
-    xml.create_element("PointData")
-        .with_attributes([("Scalars", "sigma"), ("Vectors", "displacement")])
-        .write_inner_content(|xml| {
-            for (name, values) in nodal {
-                data_array(xml, Some(name), 1, values.iter().copied())?;
-            }
-            let contact = field.contact.iter().map(|&c| i32::from(c));
-            data_array(xml, Some("contact"), 1, contact)?;
-            let displacement = field.w.iter().flat_map(|&w| [0.0, 0.0, -w]);
-            data_array(xml, Some("displacement"), 3, displacement)
-        })?;
-
+    if content.nodal {
+        point_data(xml, field)?;
+    }
     if sizes.with_cells {
+        let active = content.cells.first().map_or("panel", |(name, _)| *name);
         xml.create_element("CellData")
-            .with_attribute(("Scalars", "mx"))
+            .with_attribute(("Scalars", active))
             .write_inner_content(|xml| {
-                for (name, values) in cell_arrays(elements) {
+                for (name, values) in &content.cells {
                     data_array(xml, Some(name), 1, values.iter().copied())?;
                 }
                 if !field.panel.is_empty() {
@@ -303,6 +341,35 @@ fn piece<W: Write>(
         let types = std::iter::repeat_n(VTK_QUAD, sizes.cells);
         data_array(xml, Some("types"), 1, types)
     })?;
+    Ok(())
+}
+
+/// A solve's nodal fields, the pressure `sigma` the active scalars and the displacement the
+/// active vectors.
+fn point_data<W: Write>(xml: &mut Writer<W>, field: &FullField) -> io::Result<()> {
+    let nodal: [(&str, &[f64]); 9] = [
+        ("w", &field.w),
+        ("psi_x", &field.psi_x),
+        ("psi_y", &field.psi_y),
+        ("pressure", &field.pressure),
+        ("gap", &field.gap),
+        ("V", &field.v),
+        ("sigma", &field.sigma),
+        ("s1_bottom", &field.s1_bottom),
+        ("s1_top", &field.s1_top),
+    ];
+    xml.create_element("PointData")
+        .with_attributes([("Scalars", "sigma"), ("Vectors", "displacement")])
+        .write_inner_content(|xml| {
+            for (name, values) in nodal {
+                data_array(xml, Some(name), 1, values.iter().copied())?;
+            }
+            let contact = field.contact.iter().map(|&c| i32::from(c));
+            data_array(xml, Some("contact"), 1, contact)?;
+            let displacement = field.w.iter().flat_map(|&w| [0.0, 0.0, -w]);
+            data_array(xml, Some("displacement"), 3, displacement)
+        })?;
+
     Ok(())
 }
 

@@ -372,3 +372,48 @@ fn vtu_of_a_jointed_plate_has_every_copy() {
     }
     assert!(write_vtu(&dir.path().join("bad.vtu"), &g, &e).is_err());
 }
+
+/// A map summed over many solves (the damage): the jointed grid with cell data only — the given
+/// arrays (the first the active scalars) and the panels, no point data — and an array without
+/// one value per element refused before the file exists.
+#[test]
+fn cell_vtu_holds_the_grid_and_the_cell_arrays_only() {
+    let (f, _) = jointed();
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("damage.vtu");
+    let bottom: Vec<f64> = (0..8).map(|k| 0.125 * k as f64).collect();
+    let top: Vec<f64> = (0..8).map(|k| 1e-3 * (k * k) as f64).collect();
+    write_cell_vtu(
+        &path,
+        &f,
+        &[("damage_bottom", &bottom), ("damage_top", &top)],
+    )
+    .expect("write");
+    let vtu = read_vtu(&path);
+    assert_eq!(vtu.attr("Piece", "NumberOfPoints"), Some("18"));
+    assert_eq!(vtu.attr("Piece", "NumberOfCells"), Some("8"));
+    assert!(
+        vtu.arrays_in("PointData").is_empty(),
+        "no solve's nodal fields"
+    );
+    assert!(!vtu.elements.contains_key("PointData"));
+    assert_eq!(vtu.attr("CellData", "Scalars"), Some("damage_bottom"));
+    assert_eq!(f64s(vtu.array("CellData", "damage_bottom")), bottom);
+    assert_eq!(f64s(vtu.array("CellData", "damage_top")), top);
+    assert_eq!(
+        names(&vtu.arrays_in("CellData")),
+        ["damage_bottom", "damage_top", "panel"]
+    );
+    // The same connectivity as the solve's file: element (2, 0) names the joint's copies.
+    assert_eq!(
+        &i64s(vtu.array("Cells", "connectivity"))[8..12],
+        &[15, 3, 8, 16]
+    );
+    let bad = dir.path().join("bad.vtu");
+    let short = &top[..7];
+    assert!(matches!(
+        write_cell_vtu(&bad, &f, &[("damage_top", short)]),
+        Err(Error::Io { source, .. }) if source.kind() == std::io::ErrorKind::InvalidInput
+    ));
+    assert!(!bad.exists());
+}
