@@ -99,7 +99,7 @@ impl Error {
 }
 
 /// The kinds of [`Error`]: what a front end branches on (an exit code, an exception class).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum ErrorKind {
     /// Bad input: a scene, an option or a combination the library does not take.

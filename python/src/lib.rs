@@ -483,8 +483,16 @@ fn damage<'py>(
 ) -> PyResult<(String, Bound<'py, PyDict>)> {
     let d = run(py, progress, |m| {
         liftoff::study::damage(&problem(kind, text, options)?, m)
-    })?
-    .reported();
+    })?;
+    damage_out(py, &d)
+}
+
+/// A damage run as `damage` returns it: damage.json without its arrays, the arrays as bytes.
+fn damage_out<'py>(
+    py: Python<'py>,
+    d: &liftoff::study::Damage,
+) -> PyResult<(String, Bound<'py, PyDict>)> {
+    let d = d.reported();
     let mut doc = serde_json::to_value(&d).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
     if let Some(o) = doc.as_object_mut() {
         for key in ["x", "y", "bottom", "top"] {
@@ -504,6 +512,91 @@ fn damage<'py>(
     let [nx, ny] = d.elements;
     maps.set_item("shape", (ny, nx))?;
     Ok((json(&doc)?, maps))
+}
+
+/// How many families (the units a Dask task takes) the scene's damage run has.
+#[pyfunction]
+fn damage_families(py: Python<'_>, kind: &str, text: &str, options: &str) -> PyResult<usize> {
+    run(py, None, |_| {
+        liftoff::study::damage_families(&problem(kind, text, options)?)
+    })
+}
+
+/// The passes of `families` of the scene's damage run, as a part's bytes
+/// ([`liftoff::study::DamagePart::to_bytes`]): what one Dask task returns.
+#[pyfunction]
+#[pyo3(signature = (kind, text, options, families, progress=None))]
+fn damage_part<'py>(
+    py: Python<'py>,
+    kind: &str,
+    text: &str,
+    options: &str,
+    families: Vec<usize>,
+    progress: Option<&Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyBytes>> {
+    let part = run(py, progress, |m| {
+        liftoff::study::damage_part(&problem(kind, text, options)?, &families, m)
+    })?;
+    Ok(PyBytes::new(py, &part.to_bytes()))
+}
+
+/// The damage run summed from parts that cover every family once, as `damage` returns it.
+#[pyfunction]
+fn damage_merge<'py>(
+    py: Python<'py>,
+    kind: &str,
+    text: &str,
+    options: &str,
+    parts: Vec<Vec<u8>>,
+) -> PyResult<(String, Bound<'py, PyDict>)> {
+    let d = run(py, None, |_| {
+        let parts = parts
+            .iter()
+            .map(|b| liftoff::study::DamagePart::from_bytes(b))
+            .collect::<liftoff::Result<Vec<_>>>()?;
+        liftoff::study::damage_merge(&problem(kind, text, options)?, parts)
+    })?;
+    damage_out(py, &d)
+}
+
+/// `liftoff design`: design.json (`Design::reported`: thicknesses in the scene's unit of
+/// length). `design` is the JSON of {"vary": [from, to], "points": n, "target": t or null,
+/// "tolerance": h or null}, lengths in the scene's unit (the command line's flags).
+#[pyfunction]
+#[pyo3(signature = (kind, text, options, design, progress=None))]
+fn design(
+    py: Python<'_>,
+    kind: &str,
+    text: &str,
+    options: &str,
+    design: &str,
+    progress: Option<&Bound<'_, PyAny>>,
+) -> PyResult<String> {
+    #[derive(serde::Deserialize)]
+    #[serde(deny_unknown_fields)]
+    struct Spec {
+        vary: [f64; 2],
+        points: usize,
+        target: Option<f64>,
+        tolerance: Option<f64>,
+    }
+    let spec: Spec =
+        serde_json::from_str(design).map_err(|e| to_py(Error::invalid("design", e.to_string())))?;
+    let d = run(py, progress, |m| {
+        let mut file = source(kind, text).parse()?;
+        Overrides::from_json(options)?.apply(&mut file);
+        let o = liftoff::study::DesignOptions::in_units(
+            file.units,
+            spec.vary,
+            spec.points,
+            spec.target,
+            spec.tolerance,
+        );
+        o.validate()?;
+        file.validate()?;
+        liftoff::study::design(&file, &o, m)
+    })?;
+    json(&d.reported())
 }
 
 /// How many positions `critical` has for these options.
@@ -606,6 +699,10 @@ fn _liftoff(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(critical, m)?)?;
     m.add_function(wrap_pyfunction!(critical_len, m)?)?;
     m.add_function(wrap_pyfunction!(damage, m)?)?;
+    m.add_function(wrap_pyfunction!(damage_families, m)?)?;
+    m.add_function(wrap_pyfunction!(damage_part, m)?)?;
+    m.add_function(wrap_pyfunction!(damage_merge, m)?)?;
+    m.add_function(wrap_pyfunction!(design, m)?)?;
     m.add_function(wrap_pyfunction!(stability_rows, m)?)?;
     m.add_function(wrap_pyfunction!(_panic_for_tests, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;

@@ -862,24 +862,77 @@ def test_damage_reports_a_case_per_pass_and_refuses_bad_plans():
 
 
 def test_incomplete_damage_raises_not_converged_as_the_cli_fails(tmp_path):
-    """Four penalty steps settle the day-curling pass but not the night one: the CLI exits with
-    its solver error, Python raises NotConverged carrying the incomplete run (only the pass
-    that converged in its sums)."""
+    """A cap on the penalty steps that settles the day-curling pass but not the (colder) night
+    one — the first such cap, as tests/damage.rs finds it: the CLI exits with its solver error,
+    Python raises NotConverged carrying the incomplete run (only the pass that converged in its
+    sums)."""
+    night = DAMAGE_SLAB.replace("difference = -6.0", "difference = -14.0")
     scene = tmp_path / "capped.toml"
-    scene.write_text(DAMAGE_SLAB.replace(
-        'contact = "unbonded"', 'contact = "unbonded"\nmethod = "penalty"\nmax_iterations = 4'))
-    r = cli("damage", str(scene), "--json")
+    for cap in range(1, 9):
+        scene.write_text(night.replace(
+            'contact = "unbonded"',
+            f'contact = "unbonded"\nmethod = "penalty"\nmax_iterations = {cap}'))
+        r = cli("damage", str(scene), "--json")
+        if r.returncode != 0 and r.stdout and len(json.loads(r.stdout)["missing"]) == 1:
+            break
     assert r.returncode != 0 and "incomplete" in r.stderr, r.stderr
     ref = json.loads(r.stdout)
     assert not ref["complete"] and len(ref["missing"]) == 1, "the cap leaves one pass missing"
+    assert "-14.0 K" in ref["missing"][0]
     with pytest.raises(liftoff.NotConverged, match="1 pass\\(es\\) did not converge") as e:
         liftoff.damage(scene)
     d = e.value.solution
     assert not d.complete and d.missing == ref["missing"]
     missing = [p for p in d.passes if p["outcome"] != "converged"]
     assert len(missing) == 1 and missing[0]["bottom"] is None and missing[0]["bottom_share"] == 0.0
-    full = liftoff.damage(DAMAGE_SLAB)
+    full = liftoff.damage(night)
     assert d.bottom.max() < full.bottom.max() or d.top.max() < full.top.max()
     # No pass converging leaves nothing to sum: a numerical error, as on the command line.
     with pytest.raises(liftoff.NumericalError, match="no pass converged"):
-        liftoff.damage(scene.read_text().replace("max_iterations = 4", "max_iterations = 1"))
+        liftoff.damage(scene.read_text().replace(f"max_iterations = {cap}", "max_iterations = 1"))
+
+
+def test_damage_on_dask_equals_the_local_run(client):
+    """The families spread over a 2-worker LocalCluster (a task each, and tasks of two) give the
+    one-process run's maps and passes to the bit: each family is solved the same way wherever
+    it runs, and the sums are made once from all of them."""
+    scene = (DAMAGE_SLAB.replace("levels = [80e3]", "levels = [60e3, 80e3, 100e3]")
+             .replace("repetitions = [1.0e5]", "repetitions = [1.0e5, 5.0e4, 1.0e4]")
+             .replace("deviation = 0.0\npositions = 1", "deviation = 0.25\npositions = 2"))
+    local = liftoff.damage(scene)
+    assert liftoff._core.damage_families(*liftoff._scene.scene_pair(scene), "{}") == 4
+    for chunk in (1, 2):
+        spread = liftoff.damage(scene, client=client, chunk=chunk)
+        for name in ("bottom", "top", "x", "y"):
+            assert np.array_equal(getattr(spread, name), getattr(local, name)), name
+        assert spread.passes == local.passes
+        assert spread.governing_bottom == local.governing_bottom
+        assert spread.cracking == local.cracking and spread.complete
+
+
+def test_design_equals_the_cli_and_refuses_a_bad_range(tmp_path):
+    """liftoff.design is `liftoff design --json`: the same runs, thicknesses, bracket and the
+    least thickness found, in the scene's unit (metres here)."""
+    path = tmp_path / "slab.toml"
+    path.write_text(DAMAGE_SLAB)
+    r = cli("design", str(path), "--vary", "thickness=0.2..0.3", "--points", "3",
+            "--tolerance", "0.02", "--json")
+    assert r.returncode == 0, r.stderr
+    ref = json.loads(r.stdout)
+    d = liftoff.design(path, "thickness=0.2..0.3", points=3, tolerance=0.02)
+    assert [row["thickness"] for row in d] == [p["thickness"] for p in ref["points"]]
+    assert [row["value"] for row in d] == [p["value"] for p in ref["points"]]
+    assert ref["bracket"] is not None, "the range brackets the target: a search was made"
+    assert d.meta["thickness"] == ref["thickness"] and d.meta["bracket"] == ref["bracket"]
+    assert d.meta["measure"] == "cracking" and d.meta["model"] == "mepdg"
+    same = liftoff.design(path, (0.2, 0.3), points=3, tolerance=0.02)
+    assert [row["value"] for row in same] == [row["value"] for row in d]
+    with pytest.raises(liftoff.SceneError) as e:
+        liftoff.design(path, "depth=0.2..0.3")
+    assert e.value.field == "vary"
+    with pytest.raises(liftoff.SceneError) as e:
+        liftoff.design(path, (0.3, 0.2))
+    assert e.value.field == "vary"
+    with pytest.raises(liftoff.SceneError) as e:
+        liftoff.design(path, (0.2, 0.3), points=1)
+    assert e.value.field == "points"

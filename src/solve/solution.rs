@@ -83,7 +83,7 @@ impl Status {
 }
 
 /// The kinds of [`Status`], without their data.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum StatusKind {
     /// [`Status::Converged`].

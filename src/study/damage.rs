@@ -51,6 +51,7 @@ use crate::error::{Error, Result};
 use crate::model::{Load, Model};
 use crate::monitor::{Cases, Monitor};
 use crate::scene::Problem;
+use crate::solve::Carry;
 
 /// One case's pass: what it was and what it caused.
 #[derive(Debug, Clone, Serialize)]
@@ -223,47 +224,136 @@ impl Damage {
 /// Run the scene's damage plan; see the module's description.
 pub fn damage(problem: &Problem, monitor: &Monitor<'_>) -> Result<Damage> {
     let t0 = Instant::now();
-    let plan = problem.damage.as_ref().ok_or_else(|| {
-        Error::invalid(
-            "traffic",
-            "missing: `liftoff damage` needs the scene's [traffic] and [damage] (and optionally [climate])",
-        )
-    })?;
-    if problem.model.physical.is_none() {
+    let setup = Setup::of(problem)?;
+    let all: Vec<usize> = (0..setup.families.len()).collect();
+    let part = solve_part(problem, &setup, &all, monitor)?;
+    let mut d = sum(problem, &setup, vec![part])?;
+    d.total_s = t0.elapsed().as_secs_f64();
+    Ok(d)
+}
+
+/// How many families a damage run has: the units [`damage_part`] takes (the levels of one
+/// group at one lateral position in one climate bin, solved together for the exact
+/// interpolation between levels and the warm starts).
+pub fn damage_families(problem: &Problem) -> Result<usize> {
+    Ok(Setup::of(problem)?.families.len())
+}
+
+/// The passes of `families` (indices below [`damage_families`]) of the scene's damage run, for
+/// one worker of a cluster: [`damage_merge`] sums the parts of all families into the run's
+/// [`Damage`], the same as [`damage`]'s (each family is solved the same way wherever it runs).
+pub fn damage_part(
+    problem: &Problem,
+    families: &[usize],
+    monitor: &Monitor<'_>,
+) -> Result<DamagePart> {
+    let setup = Setup::of(problem)?;
+    if let Some(&bad) = families.iter().find(|&&f| f >= setup.families.len()) {
         return Err(Error::invalid(
-            "plate",
-            "a damage run needs a physical scene ([plate] and [foundation]): stresses in Pa against the modulus of rupture",
+            "families",
+            format!(
+                "{bad} is beyond the run's {} families",
+                setup.families.len()
+            ),
         ));
     }
-    let bins = plan.bins();
-    let passes: Vec<Vec<Model>> = bins
+    solve_part(problem, &setup, families, monitor)
+}
+
+/// The run's [`Damage`] from parts that together hold every family once ([`damage_part`]);
+/// its `total_s` is the parts' seconds added (the workers' time), `assemble_s` theirs too.
+pub fn damage_merge(problem: &Problem, parts: Vec<DamagePart>) -> Result<Damage> {
+    let setup = Setup::of(problem)?;
+    sum(problem, &setup, parts)
+}
+
+/// A damage run's plan checked, its cases, their passes' models and its families.
+struct Setup<'a> {
+    plan: &'a DamagePlan,
+    bins: Vec<Bin>,
+    passes: Vec<Vec<Model>>,
+    /// The levels of one group at one lateral position in one climate bin, by load.
+    families: Vec<Vec<usize>>,
+}
+
+impl<'a> Setup<'a> {
+    fn of(problem: &'a Problem) -> Result<Self> {
+        let plan = problem.damage.as_ref().ok_or_else(|| {
+            Error::invalid(
+                "traffic",
+                "missing: `liftoff damage` needs the scene's [traffic] and [damage] (and optionally [climate])",
+            )
+        })?;
+        if problem.model.physical.is_none() {
+            return Err(Error::invalid(
+                "plate",
+                "a damage run needs a physical scene ([plate] and [foundation]): stresses in Pa against the modulus of rupture",
+            ));
+        }
+        let bins = plan.bins();
+        let passes: Vec<Vec<Model>> = bins
+            .iter()
+            .map(|b| pass_models(&problem.model, plan, b))
+            .collect::<Result<_>>()?;
+        // The families: their load vectors differ only by the level's multiple of the group's.
+        let mut families: Vec<Vec<usize>> = Vec::new();
+        for (i, b) in bins.iter().enumerate() {
+            match families.iter_mut().find(|f| {
+                let o = &bins[f[0]];
+                (o.group, o.lateral, o.climate) == (b.group, b.lateral, b.climate)
+            }) {
+                Some(f) => f.push(i),
+                None => families.push(vec![i]),
+            }
+        }
+        let level = |i: usize| plan.groups[bins[i].group].levels[bins[i].level].load;
+        for f in &mut families {
+            f.sort_by(|&a, &b| level(a).total_cmp(&level(b)));
+        }
+        Ok(Self {
+            plan,
+            bins,
+            passes,
+            families,
+        })
+    }
+}
+
+/// Solve the passes of `which` families on operators assembled once for them.
+fn solve_part(
+    problem: &Problem,
+    setup: &Setup<'_>,
+    which: &[usize],
+    monitor: &Monitor<'_>,
+) -> Result<DamagePart> {
+    let t0 = Instant::now();
+    let Setup {
+        plan,
+        bins,
+        passes,
+        families,
+    } = setup;
+    let families: Vec<&Vec<usize>> = which.iter().map(|&f| &families[f]).collect();
+    let all: Vec<Model> = families
         .iter()
-        .map(|b| pass_models(&problem.model, plan, b))
-        .collect::<Result<_>>()?;
-    let all: Vec<Model> = passes.iter().flatten().cloned().collect();
+        .flat_map(|f| f.iter().flat_map(|&i| passes[i].iter().cloned()))
+        .collect();
     let base = assemble_for(problem, &all, "positions")?;
     let assemble_s = t0.elapsed().as_secs_f64();
-    let cases = Cases::new(monitor, bins.len());
+    let cases = Cases::new(monitor, families.iter().map(|f| f.len()).sum());
     let inner = cases.inner();
-    // The families: the levels of one group at one lateral position in one climate bin, by
-    // load. Their load vectors differ only by the level's multiple of the group's.
-    let mut families: Vec<Vec<usize>> = Vec::new();
-    for (i, b) in bins.iter().enumerate() {
-        match families.iter_mut().find(|f| {
-            let o = &bins[f[0]];
-            (o.group, o.lateral, o.climate) == (b.group, b.lateral, b.climate)
-        }) {
-            Some(f) => f.push(i),
-            None => families.push(vec![i]),
-        }
-    }
     let level = |i: usize| plan.groups[bins[i].group].levels[bins[i].level].load;
-    for f in &mut families {
-        f.sort_by(|&a, &b| level(a).total_cmp(&level(b)));
-    }
-    let solve = |model: &Model, start: Option<&[f64]>| -> Result<Position> {
+    let solve = |model: &Model, start: Option<&[f64]>, carry: &Carry| -> Result<Position> {
         let ops = base.loaded(model);
-        match analysis::run_from(model, &ops, &problem.method, 0.0, start, &inner) {
+        match analysis::run_carried(
+            model,
+            &ops,
+            &problem.method,
+            0.0,
+            start,
+            Some(carry),
+            &inner,
+        ) {
             Err(e @ Error::Cancelled(_)) => Err(e),
             Err(e) => Ok(Position::Failed(RunOutcome::Failed(e.kind()))),
             Ok(r) if !r.summary.converged => Ok(Position::Failed(RunOutcome::Solved(
@@ -278,6 +368,10 @@ pub fn damage(problem: &Problem, monitor: &Monitor<'_>) -> Result<Damage> {
         .par_iter()
         .map(|family| {
             let mut out = Vec::with_capacity(family.len());
+            // The family's solves run one after another: each hands its last factor to the
+            // next (`Carry`), and a pass's first position starts from the last pass's first.
+            let carry = Carry::new();
+            let mut opening: Option<Vec<f64>> = None;
             let ends = plan.interpolate && family.len() >= 3;
             // The ends' positions, kept when the middle is interpolated from them.
             let mut kept: [Vec<Option<Kept>>; 2] = [Vec::new(), Vec::new()];
@@ -287,11 +381,15 @@ pub fn damage(problem: &Problem, monitor: &Monitor<'_>) -> Result<Damage> {
                 o.extend(&family[1..n - 1]);
                 o
             } else {
-                family.clone()
+                family.to_vec()
             };
             for (k, &i) in order.iter().enumerate() {
                 let mut stress = PassStress::default();
-                let mut start: Option<Vec<f64>> = None;
+                let mut start: Option<Vec<f64>> = opening.clone();
+                // The answer of the position before the last one solved: the start of the
+                // next position is extrapolated from the last two (the lifted region moves
+                // with the load, and the first step then has fewer points to settle).
+                let mut before: Option<Vec<f64>> = None;
                 let t = if ends && k >= 2 {
                     let (a, b) = (level(family[0]), level(family[family.len() - 1]));
                     // Equal ends: every level between is the same load.
@@ -309,11 +407,12 @@ pub fn damage(problem: &Problem, monitor: &Monitor<'_>) -> Result<Damage> {
                                     (lo.bottom.mix(&hi.bottom, t), lo.top.mix(&hi.top, t));
                                 stress.take(&bottom, &top, &lo.x, &lo.y);
                                 stress.interpolated += 1;
+                                before = None;
                                 continue;
                             }
                         }
                     }
-                    let position = solve(model, start.as_deref())?;
+                    let position = solve(model, start.as_deref(), &carry)?;
                     stress.solves += 1;
                     match position {
                         Position::Failed(outcome) => {
@@ -331,7 +430,15 @@ pub fn damage(problem: &Problem, monitor: &Monitor<'_>) -> Result<Damage> {
                                 keep.resize(p, None);
                                 keep.push(Some(Kept::of(&r)));
                             }
-                            start = Some(r.solution.sigma.clone());
+                            let now = r.solution.sigma.clone();
+                            if p == 0 {
+                                opening = Some(now.clone());
+                            }
+                            start = Some(match &before {
+                                Some(b) => now.iter().zip(b).map(|(a, b)| 2.0 * a - b).collect(),
+                                None => now.clone(),
+                            });
+                            before = Some(now);
                         }
                     }
                 }
@@ -341,11 +448,58 @@ pub fn damage(problem: &Problem, monitor: &Monitor<'_>) -> Result<Damage> {
             Ok(out)
         })
         .collect();
-    let mut by_bin: Vec<Option<PassStress>> = vec![None; bins.len()];
-    for part in solved {
-        for (i, s) in part? {
-            by_bin[i] = Some(s);
+    let mut part = DamagePart {
+        bins: Vec::new(),
+        stresses: Vec::new(),
+        assemble_s,
+        seconds: 0.0,
+    };
+    for family in solved {
+        for (i, stress) in family? {
+            part.bins.push(i);
+            part.stresses.push(stress);
         }
+    }
+    part.seconds = t0.elapsed().as_secs_f64();
+    Ok(part)
+}
+
+/// The Miner sums of the parts' passes, every bin of the run in exactly one part.
+fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<Damage> {
+    let Setup {
+        plan, bins, passes, ..
+    } = setup;
+    let mut by_bin: Vec<Option<PassStress>> = vec![None; bins.len()];
+    let (mut assemble_s, mut seconds) = (0.0, 0.0);
+    for part in parts {
+        assemble_s += part.assemble_s;
+        seconds += part.seconds;
+        for (i, stress) in part.bins.into_iter().zip(part.stresses) {
+            match by_bin.get_mut(i) {
+                Some(slot @ None) => *slot = Some(stress),
+                Some(Some(_)) => {
+                    return Err(Error::invalid(
+                        "parts",
+                        format!("case {i} is in two parts: each family belongs to one part"),
+                    ))
+                }
+                None => {
+                    return Err(Error::invalid(
+                        "parts",
+                        format!("case {i} is beyond the run's {} cases", bins.len()),
+                    ))
+                }
+            }
+        }
+    }
+    if let Some(i) = by_bin.iter().position(Option::is_none) {
+        return Err(Error::invalid(
+            "parts",
+            format!(
+                "case {i} ({}) is in no part: the parts must cover every family",
+                label(plan, &bins[i])
+            ),
+        ));
     }
     let stresses: Vec<PassStress> = by_bin.into_iter().map(Option::unwrap_or_default).collect();
     let Some(first) = stresses.iter().find(|s| !s.x.is_empty()) else {
@@ -371,7 +525,7 @@ pub fn damage(problem: &Problem, monitor: &Monitor<'_>) -> Result<Damage> {
     let mut bottom = vec![0.0; n];
     let mut top = vec![0.0; n];
     let mut missing = Vec::new();
-    for (s, bin) in stresses.iter().zip(&bins) {
+    for (s, bin) in stresses.iter().zip(bins.iter()) {
         if s.outcome != RunOutcome::CONVERGED {
             missing.push(label(plan, bin));
             continue;
@@ -393,8 +547,8 @@ pub fn damage(problem: &Problem, monitor: &Monitor<'_>) -> Result<Damage> {
     let (gb, gt) = (governing(&bottom), governing(&top));
     let passes_out: Vec<Pass> = stresses
         .iter()
-        .zip(&bins)
-        .zip(&passes)
+        .zip(bins.iter())
+        .zip(passes.iter())
         .map(|((s, bin), models)| {
             let group = &plan.groups[bin.group];
             let peak = |v: &[f64]| -> Peak {
@@ -481,10 +635,125 @@ pub fn damage(problem: &Problem, monitor: &Monitor<'_>) -> Result<Damage> {
         interpolated: stresses.iter().map(|s| s.interpolated).sum(),
         passes: passes_out,
         assemble_s,
-        total_s: t0.elapsed().as_secs_f64(),
+        total_s: seconds,
         units: problem.model.physical.map(|p| p.units),
         field,
     })
+}
+
+/// A share of a damage run ([`damage_part`]): the passes of some of its families, as
+/// [`damage_merge`] sums them. [`Self::to_bytes`] and [`Self::from_bytes`] carry it between
+/// processes (a cluster's workers and the client).
+#[derive(Debug, Clone)]
+pub struct DamagePart {
+    /// The cases (indices of the plan's bins) of the passes below.
+    bins: Vec<usize>,
+    stresses: Vec<PassStress>,
+    /// Seconds to assemble the part's operators.
+    assemble_s: f64,
+    /// Seconds of the whole part.
+    seconds: f64,
+}
+
+/// What [`DamagePart`]'s bytes say of each pass beside its arrays.
+#[derive(Serialize, serde::Deserialize)]
+struct PartHeader {
+    bins: Vec<usize>,
+    outcomes: Vec<RunOutcome>,
+    solves: Vec<usize>,
+    interpolated: Vec<usize>,
+    /// Elements per array of each pass (0: the pass has none: it did not converge at its first
+    /// position).
+    elements: Vec<usize>,
+    assemble_s: f64,
+    seconds: f64,
+}
+
+impl DamagePart {
+    /// The part as bytes: the length of a JSON header (u64, little endian), the header (the
+    /// cases, their outcomes and counts), then each pass's σ₁ at the bottom and top faces and
+    /// the element centres x and y as little-endian f64 — exact, not rounded to text.
+    pub fn to_bytes(&self) -> Vec<u8> {
+        let header = PartHeader {
+            bins: self.bins.clone(),
+            outcomes: self.stresses.iter().map(|s| s.outcome).collect(),
+            solves: self.stresses.iter().map(|s| s.solves).collect(),
+            interpolated: self.stresses.iter().map(|s| s.interpolated).collect(),
+            elements: self.stresses.iter().map(|s| s.bottom.len()).collect(),
+            assemble_s: self.assemble_s,
+            seconds: self.seconds,
+        };
+        // A struct of numbers, vectors and unit-variant enums always serialises.
+        let json = serde_json::to_vec(&header).unwrap_or_default();
+        let mut out = Vec::with_capacity(8 + json.len());
+        out.extend_from_slice(&(json.len() as u64).to_le_bytes());
+        out.extend_from_slice(&json);
+        for s in &self.stresses {
+            for v in [&s.bottom, &s.top, &s.x, &s.y] {
+                for x in v {
+                    out.extend_from_slice(&x.to_le_bytes());
+                }
+            }
+        }
+        out
+    }
+
+    /// The part from [`Self::to_bytes`]'s bytes; anything else is refused (field `parts`).
+    pub fn from_bytes(bytes: &[u8]) -> Result<Self> {
+        let bad = |why: &str| Error::invalid("parts", format!("not a damage part's bytes: {why}"));
+        let len = bytes
+            .get(..8)
+            .and_then(|b| <[u8; 8]>::try_from(b).ok())
+            .map(u64::from_le_bytes)
+            .ok_or_else(|| bad("too short"))?;
+        let end = usize::try_from(len)
+            .ok()
+            .and_then(|l| l.checked_add(8))
+            .filter(|&e| e <= bytes.len())
+            .ok_or_else(|| bad("header beyond the end"))?;
+        let header: PartHeader =
+            serde_json::from_slice(&bytes[8..end]).map_err(|e| bad(&e.to_string()))?;
+        let n = header.bins.len();
+        if [
+            header.outcomes.len(),
+            header.solves.len(),
+            header.interpolated.len(),
+            header.elements.len(),
+        ] != [n; 4]
+        {
+            return Err(bad("the header's lists differ in length"));
+        }
+        let mut values = bytes[end..]
+            .chunks_exact(8)
+            .map(|c| f64::from_le_bytes(<[u8; 8]>::try_from(c).unwrap_or_default()));
+        if !(bytes.len() - end).is_multiple_of(8)
+            || (bytes.len() - end) / 8 != 4 * header.elements.iter().sum::<usize>()
+        {
+            return Err(bad("the arrays do not match the header"));
+        }
+        let mut take = |k: usize| -> Vec<f64> { values.by_ref().take(k).collect() };
+        let stresses = (0..n)
+            .map(|i| {
+                let k = header.elements[i];
+                PassStress {
+                    bottom: take(k),
+                    top: take(k),
+                    x: take(k),
+                    y: take(k),
+                    outcome: header.outcomes[i],
+                    solves: header.solves[i],
+                    interpolated: header.interpolated[i],
+                    field: None,
+                }
+            })
+            .collect();
+        Ok(Self {
+            bins: header.bins,
+            stresses,
+            assemble_s: header.assemble_s,
+            seconds: header.seconds,
+        })
+    }
 }
 
 /// A pass's largest stresses per element.

@@ -19,6 +19,7 @@ use serde::Serialize;
 use crate::error::{Error, Result};
 use crate::monitor::{Cases, Monitor};
 use crate::scene::SceneFile;
+use crate::units::{Measure, Quantity, UnitSystem};
 
 /// The range and the target of a design search.
 #[derive(Debug, Clone, PartialEq)]
@@ -36,6 +37,31 @@ pub struct DesignOptions {
 }
 
 impl DesignOptions {
+    /// The options as a user gives them (the command line, Python): the range `[from, to]` and
+    /// the `tolerance` in the scene's unit of length (`units`), the tolerance 5 mm by default
+    /// (0.25 in for a US scene).
+    pub fn in_units(
+        units: UnitSystem,
+        range: [f64; 2],
+        points: usize,
+        target: Option<f64>,
+        tolerance: Option<f64>,
+    ) -> Self {
+        let length = |v: f64| Quantity::Length.to_si(units, v);
+        let tolerance = match (tolerance, units) {
+            (Some(t), _) => length(t),
+            (None, UnitSystem::Us) => length(0.25),
+            (None, UnitSystem::Si) => 0.005,
+        };
+        Self {
+            from: length(range[0]),
+            to: length(range[1]),
+            points,
+            target,
+            tolerance,
+        }
+    }
+
     /// Check the options; errors name the option.
     pub fn validate(&self) -> Result<()> {
         if !(self.from.is_finite() && self.to.is_finite() && 0.0 < self.from && self.from < self.to)
@@ -119,6 +145,27 @@ pub struct Design {
     pub units: Option<crate::units::UnitSystem>,
     /// Seconds of the whole search.
     pub total_s: f64,
+}
+
+impl Design {
+    /// The search as design.json reports it: thicknesses in the scene's unit of length (an SI
+    /// scene's unchanged); damage and cracking are pure numbers.
+    pub fn reported(&self) -> Design {
+        let l = |v: f64| Measure::Length.from_si(self.units, v);
+        Design {
+            points: self
+                .points
+                .iter()
+                .map(|p| DesignPoint {
+                    thickness: l(p.thickness),
+                    ..p.clone()
+                })
+                .collect(),
+            thickness: self.thickness.map(l),
+            bracket: self.bracket.map(|[a, b]| [l(a), l(b)]),
+            ..self.clone()
+        }
+    }
 }
 
 /// Bisection steps that narrow a bracket of `width` to `tolerance`.

@@ -28,7 +28,10 @@ pub use critical::{
     critical, critical_points, critical_positions, Along, Critical, CriticalOptions, Edge,
     Footprint, JointLine, Position,
 };
-pub use damage::{damage, Cracking, Damage, Governing, Pass, Peak};
+pub use damage::{
+    damage, damage_families, damage_merge, damage_part, Cracking, Damage, DamagePart, Governing,
+    Pass, Peak,
+};
 pub use design::{design, Design, DesignOptions, DesignPoint};
 pub use eps_sweep::{eps_sweep, Sweep, SweepRow};
 pub use options::{ConstraintVariants, EpsSweepOptions, TradeoffOptions};
@@ -40,7 +43,7 @@ pub use tradeoff::{tradeoff, Tradeoff, TradeoffPoint};
 
 /// How one run of a study ended: the status of a solve that ran, or the kind of the error that
 /// stopped it (written as its name: "converged", "penalty-too-weak", "infeasible", …).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(untagged)]
 pub enum RunOutcome {
     /// The solve ran and ended so.

@@ -24,7 +24,7 @@ from ._damage import Damage
 from ._records import Records
 from ._scene import Scene, options_json, scene_pair
 from ._solution import Combinations, Solution, from_core
-from ._sweep import Grid, critical_chunk, make_grid, run_all, stability_chunk
+from ._sweep import Grid, critical_chunk, damage_chunk, make_grid, run_all, stability_chunk
 from ._sweep import sweep as _run_sweep
 from .errors import (
     Infeasible,
@@ -48,6 +48,7 @@ __all__ = [
     "stability",
     "critical",
     "damage",
+    "design",
     "grid",
     "sweep",
     "Solution",
@@ -273,7 +274,13 @@ def critical(
 
 
 def damage(
-    scene: Scene, method: Optional[str] = None, *, progress: Any = None, **options: Any
+    scene: Scene,
+    method: Optional[str] = None,
+    *,
+    progress: Any = None,
+    client: Any = None,
+    chunk: int = 1,
+    **options: Any,
 ) -> Damage:
     """Fatigue damage over the scene's ``[traffic]``, ``[climate]`` and ``[damage]``
     (``liftoff damage``): every case — an axle group or gear at a load level, at a lateral
@@ -291,15 +298,90 @@ def damage(
     converges there is nothing to sum and :class:`NumericalError` is raised; a scene without
     the sections, or with a bad plan, raises :class:`SceneError` naming the key. ``progress``:
     as in :func:`solve`, one "case" event as each pass ends.
+
+    With a Dask ``client`` the run's families — the levels of one group at one lateral
+    position in one climate bin, which are solved together (warm starts, the exact
+    interpolation between levels) — are spread over the cluster in tasks of ``chunk``
+    families; each task assembles its operators once and returns its passes' stresses, and
+    the sums are made here from all of them: the same numbers, to the bit, as a run in one
+    process (``total_s`` is then the workers' seconds added). ``progress`` is not called for a
+    distributed run.
     """
     kind, text = scene_pair(scene)
-    result = _damage.from_core(
-        *_progress.run(_core.damage, progress, kind, text, options_json(method, options))
-    )
+    opts = options_json(method, options)
+    if client is None:
+        raw = _progress.run(_core.damage, progress, kind, text, opts)
+    else:
+        n = _core.damage_families(kind, text, opts)
+        size = max(1, int(chunk))
+        tasks = [{"kind": kind, "text": text, "options": opts,
+                  "families": list(range(i, min(i + size, n)))}
+                 for i in range(0, n, size)]
+        parts = run_all(damage_chunk, tasks, client)
+        raw = _core.damage_merge(kind, text, opts, list(parts))
+    result = _damage.from_core(*raw)
     if not result.complete:
         raise NotConverged(
             f"{len(result.missing)} pass(es) did not converge: the damage sums are incomplete "
             f"({'; '.join(result.missing)})",
+            solution=result,
+        )
+    return result
+
+
+def design(
+    scene: Scene,
+    vary: Union[str, Sequence[float]],
+    *,
+    points: int = 5,
+    target: Optional[float] = None,
+    tolerance: Optional[float] = None,
+    method: Optional[str] = None,
+    progress: Any = None,
+    **options: Any,
+) -> Records:
+    """The least slab thickness that carries the scene's traffic (``liftoff design``): whole
+    damage runs (:func:`damage`) at ``points`` thicknesses evenly over ``vary`` — ``(FROM, TO)``
+    or ``"thickness=FROM..TO"``, in the scene's unit of length — give the design curve; the
+    first thickness that meets the target and the one before it bracket the answer, bisected to
+    ``tolerance`` (default 5 mm; 0.25 in for a US scene). The target (``target``) is the MEPDG's
+    total cracking in % (at the scene's ``[damage] reliability`` when given; default 15) or, for
+    ``pca`` and ``faa``, the larger of the bottom-up and top-down damage (default 1). The
+    self-weight (a ``uniform`` load whose case or name is ``self-weight``) follows the
+    thickness.
+
+    Returns :class:`Records`, one per damage run by thickness (design.csv's columns:
+    ``thickness``, ``bottom``, ``top``, ``cracking``, ``value``, ``passes``, ``complete``,
+    ``solves``, ``seconds``, ``curve`` — False for a bisection step); ``meta`` holds the rest of
+    design.json: ``thickness`` (the least thickness found; None if none in the range meets the
+    target), ``bracket``, ``target``, ``measure``, ``model``, ``monotone``, ``complete``,
+    ``units``. As the CLI, a search with a damage run that did not converge raises
+    :class:`NotConverged` (its ``.solution`` the incomplete records).
+    """
+    if isinstance(vary, str):
+        name, sep, span = vary.partition("=")
+        lo, dots, hi = span.partition("..")
+        if name.strip() != "thickness" or not sep or not dots:
+            raise SceneError(
+                f"`{vary}`: vary must be thickness=FROM..TO (or a pair), in the scene's unit of length",
+                "invalid", "vary")
+        try:
+            pair = [float(lo), float(hi)]
+        except ValueError:
+            raise SceneError(f"`{vary}`: FROM and TO must be numbers", "invalid", "vary") from None
+    else:
+        pair = [float(v) for v in vary]
+        if len(pair) != 2:
+            raise SceneError("vary must be two thicknesses (FROM, TO)", "invalid", "vary")
+    kind, text = scene_pair(scene)
+    spec = {"vary": pair, "points": int(points), "target": target, "tolerance": tolerance}
+    doc = json.loads(_progress.run(_core.design, progress, kind, text,
+                                   options_json(method, options), json.dumps(spec)))
+    rows = doc.pop("points")
+    result = Records(rows, doc)
+    if not doc.get("complete", True):
+        raise NotConverged(
+            "some damage runs had passes that did not converge: the design curve is incomplete",
             solution=result,
         )
     return result

@@ -228,6 +228,11 @@ def critical_chunk(args: Dict[str, Any]) -> str:
     return _core.critical(args["kind"], args["text"], args["options"], args["critical"])
 
 
+def damage_chunk(args: Dict[str, Any]) -> bytes:
+    """One Dask task of a damage run: the passes of some of its families, as a part's bytes."""
+    return _core.damage_part(args["kind"], args["text"], args["options"], args["families"])
+
+
 def stability_chunk(args: Dict[str, Any]) -> str:
     """One Dask task of the stability study: some runs of its plan, as JSON rows."""
     return _core.stability_rows(args["scenes"], args["options"], args["indices"])

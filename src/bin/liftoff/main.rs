@@ -357,19 +357,13 @@ fn design(args: DesignArgs) -> Result<(), Failure> {
         .map_err(|e| Failure::in_scene(&args.scene, e))?;
     overrides.apply(&mut file);
     // The range and the tolerance are in the scene's unit of length.
-    let length = |v: f64| liftoff::units::Quantity::Length.to_si(file.units, v);
-    let tolerance = match (args.tolerance, file.units) {
-        (Some(t), _) => length(t),
-        (None, liftoff::units::UnitSystem::Us) => length(0.25),
-        (None, liftoff::units::UnitSystem::Si) => 0.005,
-    };
-    let options = study::DesignOptions {
-        from: length(args.vary[0]),
-        to: length(args.vary[1]),
-        points: args.points,
-        target: args.target,
-        tolerance,
-    };
+    let options = study::DesignOptions::in_units(
+        file.units,
+        args.vary,
+        args.points,
+        args.target,
+        args.tolerance,
+    );
     options.validate().map_err(Failure::option)?;
     // The scene as given must be valid before the search varies it.
     file.validate()
@@ -387,7 +381,7 @@ fn design(args: DesignArgs) -> Result<(), Failure> {
     };
     let written = written + with_report(args.report, args.out.as_deref(), written)?;
     if args.json {
-        let json = serde_json::to_string_pretty(&d)
+        let json = serde_json::to_string_pretty(&d.reported())
             .map_err(|e| Failure::new(exit::IO, format!("cannot serialise design.json: {e}")))?;
         println!("{json}");
     } else {
