@@ -151,10 +151,23 @@ impl Carry {
         Self::default()
     }
 
+    /// Another carry holding what this one holds (the factor and its columns shared, not
+    /// copied): two sequences of solves that start from the same solve's factor.
+    pub fn share(&self) -> Carry {
+        let slot = self.0.lock().unwrap_or_else(|p| p.into_inner());
+        Carry(Mutex::new(slot.clone()))
+    }
+
     /// The carried factor, if it was made for the stiffness `k`.
     pub(super) fn take_for(&self, k: &Arc<sprs::CsMat<f64>>) -> Option<Factored> {
         let mut slot = self.0.lock().unwrap_or_else(|p| p.into_inner());
         slot.take().filter(|f| Arc::ptr_eq(&f.k, k))
+    }
+
+    /// Take what `other` holds (the factor a solve started from `other` ended with).
+    pub fn put_from(&self, other: Carry) {
+        let taken = other.0.into_inner().unwrap_or_else(|p| p.into_inner());
+        self.put(taken);
     }
 
     /// Keep `factored` for the next solve.
