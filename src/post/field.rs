@@ -198,6 +198,19 @@ impl FullField {
         }
     }
 
+    /// A nodal field at the physical point (x, y) on the plate, by the elements' bilinear shape
+    /// functions (a deflectometer's sensor is not on a node): None off the plate. On a joint
+    /// line the lower / left side's copies are read, as [`Self::interpolate`].
+    pub fn at(&self, field: &[f64], x: f64, y: f64) -> Option<f64> {
+        let n = self.nodes_x();
+        let (half_x, half_y) = (*self.x.get(self.nx)?, *self.y.get(self.ny * n)?);
+        let inside = |v: f64, h: f64| h > 0.0 && v.abs() <= h * (1.0 + 1e-12);
+        if !(inside(x, half_x) && inside(y, half_y)) || field.len() < n * (self.ny + 1) {
+            return None;
+        }
+        Some(self.interpolate(field, x / half_x, y / half_y))
+    }
+
     /// Bilinear interpolation of a nodal field at (s, t) ∈ [−1, 1]², from the grid nodes (on a
     /// joint line: the lower / left side's copies).
     pub fn interpolate(&self, field: &[f64], s: f64, t: f64) -> f64 {

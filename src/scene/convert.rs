@@ -43,7 +43,7 @@ pub fn quantity(
         ("panel", "at" | "thickness") => Some(Length),
         ("panel", "youngs_modulus") => Some(Pressure),
         ("load", "x" | "y" | "from" | "to" | "depths" | "depth" | "wheels") => Some(Length),
-        ("load", "axle_spacing" | "track" | "dual_spacing") => Some(Length),
+        ("load", "axle_spacing" | "track" | "dual_spacing" | "radius") => Some(Length),
         ("load", "force" | "axle_load" | "wheel_load") => Some(Force),
         ("load", "pressure" | "tire_pressure") => Some(Pressure),
         ("load", "force_per_length") => Some(ForcePerLength),

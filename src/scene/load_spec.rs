@@ -49,11 +49,14 @@ pub enum LoadKind {
     Axle,
     /// An aircraft gear: wheels at given positions, each with its load (SI scenes).
     Gear,
+    /// Uniform pressure on a disk of `radius` centred at (x, y): a falling-weight
+    /// deflectometer's load plate, a round footing.
+    Circle,
 }
 
 crate::choice::names!(LoadKind, Point => "point", Patch => "patch", Uniform => "uniform", Line => "line",
     Temperature => "temperature", TemperatureProfile => "temperature-profile",
-    Moisture => "moisture", BuiltInCurl => "built-in-curl", Axle => "axle", Gear => "gear");
+    Moisture => "moisture", BuiltInCurl => "built-in-curl", Axle => "axle", Gear => "gear", Circle => "circle");
 
 impl LoadKind {
     /// The keys a load of this kind takes besides `kind`, `case` and `name`.
@@ -61,6 +64,7 @@ impl LoadKind {
         match self {
             LoadKind::Point => &["x", "y", "force"],
             LoadKind::Patch => &["x", "y", "pressure"],
+            LoadKind::Circle => &["x", "y", "radius", "force", "pressure"],
             LoadKind::Uniform => &["pressure"],
             LoadKind::Line => &["from", "to", "force_per_length"],
             LoadKind::Temperature => &["difference", "curvature"],
@@ -189,6 +193,9 @@ pub struct LoadSpec {
     /// contact area, long along the travel) or "square".
     #[serde(default)]
     pub contact_shape: Option<String>,
+    /// Circle: the disk's radius, m (s in a dimensionless scene).
+    #[serde(default)]
+    pub radius: Option<f64>,
 }
 
 impl LoadSpec {
@@ -224,6 +231,7 @@ impl LoadSpec {
             wheel_load: None,
             heading: None,
             contact_shape: None,
+            radius: None,
         }
     }
 
@@ -260,7 +268,7 @@ impl LoadSpec {
     /// The keys present beside `kind`, by name: what a kind's validation checks against its
     /// own list, so that a key of another kind is refused by name.
     pub fn present(&self) -> Vec<&'static str> {
-        let keys: [(&'static str, bool); 28] = [
+        let keys: [(&'static str, bool); 29] = [
             ("x", self.x.is_some()),
             ("y", self.y.is_some()),
             ("force", self.force.is_some()),
@@ -289,6 +297,7 @@ impl LoadSpec {
             ("wheel_load", self.wheel_load.is_some()),
             ("heading", self.heading.is_some()),
             ("contact_shape", self.contact_shape.is_some()),
+            ("radius", self.radius.is_some()),
         ];
         keys.iter().filter(|k| k.1).map(|k| k.0).collect()
     }

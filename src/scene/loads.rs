@@ -201,6 +201,64 @@ pub(super) fn raw_loads(
                     pressure: magnitude("pressure", l.pressure)? * area_scale,
                 }
             }
+            LoadKind::Circle => {
+                let (cx, cy) = (
+                    value("x", l.x, scale_xy[0], hx)?,
+                    value("y", l.y, scale_xy[1], hy)?,
+                );
+                let radius = match l.radius {
+                    Some(r) if r.is_finite() && r > 0.0 => r,
+                    Some(r) => {
+                        return Err(Error::invalid(
+                            field("radius"),
+                            format!("must be a positive length, got {r}"),
+                        ))
+                    }
+                    None => {
+                        return Err(Error::invalid(
+                            field("radius"),
+                            "missing: the disk's radius",
+                        ))
+                    }
+                };
+                let area = std::f64::consts::PI * radius * radius;
+                let pressure = match (l.force, l.pressure) {
+                    (Some(_), Some(_)) => {
+                        return Err(Error::invalid(
+                            field("pressure"),
+                            "give the disk's force or its pressure, not both",
+                        ))
+                    }
+                    (Some(_), None) => magnitude("force", l.force)? / area,
+                    (None, _) => magnitude("pressure", l.pressure)?,
+                };
+                for band in circle_bands(radius) {
+                    let x = [cx + band.x[0] * scale_xy[0], cx + band.x[1] * scale_xy[0]];
+                    // A disk in both directions: the radius in the plate's unit of x (m, or L in a
+                    // dimensionless scene, whose y is t = y / (μL)).
+                    let y = [cy + band.y[0] * scale_xy[0], cy + band.y[1] * scale_xy[0]];
+                    if x[0] < -hx * (1.0 + tol)
+                        || x[1] > hx * (1.0 + tol)
+                        || y[0] < -hy * (1.0 + tol)
+                        || y[1] > hy * (1.0 + tol)
+                    {
+                        return Err(Error::invalid(
+                            field("radius"),
+                            format!("the disk of radius {radius} about its centre reaches beyond the plate's edge: move it inward or make it smaller"),
+                        ));
+                    }
+                    loads.push(RawLoad {
+                        load: Load::Patch {
+                            x: [x[0].max(-hx), x[1].min(hx)],
+                            y: [y[0].max(-hy), y[1].min(hy)],
+                            pressure: pressure * area_scale,
+                        },
+                        case: case.clone(),
+                        source: k,
+                    });
+                }
+                continue;
+            }
             LoadKind::Uniform => {
                 forbid("force", l.force.is_some(), "uniform")?;
                 forbid("x", l.x.is_some(), "uniform")?;
@@ -535,4 +593,44 @@ pub(super) fn zones(file: &SceneFile, groups: &Groups, scale_xy: [f64; 2]) -> Re
         });
     }
     Ok(out)
+}
+
+/// Bands across a disk: a disk's load becomes this many strips, each the height 2r/N of its band
+/// and as wide as the band's area over its height, centred on the disk's axis.
+pub const CIRCLE_BANDS: usize = 32;
+
+/// One band of a disk of radius `r` about the origin, as the rectangle that carries its load.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Band {
+    /// [x0, x1] about the disk's centre, in the disk's unit.
+    pub x: [f64; 2],
+    /// [y0, y1].
+    pub y: [f64; 2],
+}
+
+/// The disk of radius `r` as [`CIRCLE_BANDS`] rectangles of the disk's own pressure: the band
+/// between y0 and y1 carries exactly the disk's area in that band (A(y) = y√(r² − y²) +
+/// r² asin(y/r) from the centre), spread uniformly over its width. The total force, its centre
+/// and the load's distribution across y (band by band) are those of the disk exactly; only
+/// the distribution along x inside a band is the rectangle's, a difference of at most the
+/// band's chord — 1/16 of the radius near the centre — whose effect on the deflection a
+/// radius away is of the order of (r/N)² of the load's.
+pub fn circle_bands(r: f64) -> Vec<Band> {
+    let n = CIRCLE_BANDS;
+    let below = |y: f64| -> f64 {
+        let y = y.clamp(-r, r);
+        y * (r * r - y * y).max(0.0).sqrt() + r * r * (y / r).clamp(-1.0, 1.0).asin()
+    };
+    (0..n)
+        .map(|i| {
+            let y0 = -r + 2.0 * r * i as f64 / n as f64;
+            let y1 = -r + 2.0 * r * (i + 1) as f64 / n as f64;
+            let area = below(y1) - below(y0);
+            let half = area / (y1 - y0) / 2.0;
+            Band {
+                x: [-half, half],
+                y: [y0, y1],
+            }
+        })
+        .collect()
 }

@@ -1,0 +1,186 @@
+//! The circular load (`kind = "circle"`, a deflectometer's load plate) and the deflection at any
+//! point of the plate (`FullField::at`), against a reference that is not liftoff's elements:
+//! the infinite Mindlin plate on a dense liquid under a uniform disk, as a Hankel integral
+//! evaluated here (issue 34's forward model).
+//!
+//! w(r) = q a ∫₀^∞ J₁(ξa) J₀(ξr) (1 + Dξ²/S) / (Dξ⁴ + k (1 + Dξ²/S)) dξ,
+//!
+//! with S = κ G h the shear stiffness (κ = 5/6, liftoff's default) — the plate equation
+//! D∇⁴w = (1 − D∇²/S)(q − k w) in Hankel space; S → ∞ is Kirchhoff's plate, whose centre
+//! deflection under a point load P is Westergaard's P / (8 √(kD)).
+
+use liftoff::{Monitor, Outcome, Problem};
+
+/// J_n(x) = (1/π) ∫₀^π cos(nτ − x sin τ) dτ by the trapezoid rule: the integrand is smooth and
+/// periodic, so the rule converges geometrically once the points outnumber |x| (Trefethen &
+/// Weideman 2014); 40 + |x| points leave round-off.
+fn bessel(n: u32, x: f64) -> f64 {
+    let m = 40 + x.abs().ceil() as usize;
+    let h = std::f64::consts::PI / m as f64;
+    let f = |tau: f64| (f64::from(n) * tau - x * tau.sin()).cos();
+    let mut sum = 0.5 * (f(0.0) + f(std::f64::consts::PI));
+    for i in 1..m {
+        sum += f(i as f64 * h);
+    }
+    sum * h / std::f64::consts::PI
+}
+
+/// The slab and soil of the tests: 250 mm of concrete on k = 80 MN/m³ (ℓ = 0.841 m), a 40 kN
+/// drop on the standard 150 mm plate.
+const E: f64 = 30e9;
+const NU: f64 = 0.15;
+const H: f64 = 0.25;
+const K: f64 = 8.0e7;
+const RADIUS: f64 = 0.15;
+const FORCE: f64 = 40e3;
+
+/// The infinite plate's deflection at distance `r` from the disk's centre: Simpson's rule on
+/// [0, 60/ℓ] in steps of ℓ⁻¹/400 (the integrand falls like ξ⁻⁵ beyond; the tail is below 1e-8
+/// of the centre deflection), `shear` the plate's S (∞: Kirchhoff).
+fn infinite_plate(r: f64, shear: f64) -> f64 {
+    let d = E * H.powi(3) / (12.0 * (1.0 - NU * NU));
+    let ell = (d / K).powf(0.25);
+    let q = FORCE / (std::f64::consts::PI * RADIUS * RADIUS);
+    let f = |xi: f64| {
+        let s = 1.0 + d * xi * xi / shear;
+        bessel(1, xi * RADIUS) * bessel(0, xi * r) * s / (d * xi.powi(4) + K * s)
+    };
+    let steps = 24_000; // even
+    let top = 60.0 / ell;
+    let h = top / steps as f64;
+    let mut sum = f(0.0) + f(top);
+    for i in 1..steps {
+        sum += if i % 2 == 1 { 4.0 } else { 2.0 } * f(i as f64 * h);
+    }
+    q * RADIUS * sum * h / 3.0
+}
+
+/// The deflection at the FWD's usual sensor offsets (m), x along the slab from the plate's
+/// centre, on a square bonded slab of side `side` with n × n elements.
+fn basin(side: f64, n: usize, offsets: &[f64]) -> Vec<f64> {
+    let scene = format!(
+        r#"
+[plate]
+length = {side}
+width = {side}
+thickness = {H}
+youngs_modulus = {E}
+poissons_ratio = {NU}
+[foundation]
+model = "winkler"
+modulus = {K}
+[[load]]
+kind = "circle"
+x = 0.0
+y = 0.0
+radius = {RADIUS}
+force = {FORCE}
+[mesh]
+elements = [{n}, {n}]
+[solver]
+contact = "bonded"
+"#
+    );
+    let p = Problem::from_toml(&scene).expect("scene");
+    let Outcome::Single(a) = liftoff::run(&p, &Monitor::NONE).expect("solve") else {
+        panic!("one solve")
+    };
+    assert!(a.summary.converged);
+    // The disk's load is the force given, exactly (the bands carry the disk's area).
+    let load = a.summary.resultant.load;
+    assert!((load - FORCE).abs() <= 1e-9 * FORCE, "resultant {load}");
+    let f = &a.report.field;
+    offsets
+        .iter()
+        .map(|&x| f.at(&f.w, x, 0.0).expect("on the plate"))
+        .collect()
+}
+
+const SENSORS: [f64; 8] = [0.0, 0.203, 0.305, 0.457, 0.610, 0.914, 1.219, 1.524];
+
+/// A 17 m square slab (20 ℓ) under the disk: its basin at the eight sensors against the infinite
+/// Mindlin plate's, on meshes of 0.142 m and 0.071 m elements (the disk is 2 and 4 elements
+/// across its radius). The error at each sensor falls as the mesh halves, and on the finer mesh
+/// it is within 1 % of the centre deflection. The edges are 10 ℓ away: their effect on the
+/// basin is of order e^{−10/√2}, below 1e-3, and shows as the floor of about 6e-5 at the far
+/// sensors.
+#[test]
+fn a_disk_on_a_large_slab_gives_the_infinite_plates_basin() {
+    let g = E / (2.0 * (1.0 + NU));
+    let shear = 5.0 / 6.0 * g * H;
+    let reference: Vec<f64> = SENSORS.iter().map(|&r| infinite_plate(r, shear)).collect();
+    // Westergaard's point-load value bounds the Kirchhoff plate's centre deflection under the
+    // disk from above (spreading the load lowers the peak), and the shear of Mindlin's plate
+    // adds to it.
+    let d = E * H.powi(3) / (12.0 * (1.0 - NU * NU));
+    let point = FORCE / (8.0 * (K * d).sqrt());
+    let kirchhoff = infinite_plate(0.0, f64::INFINITY);
+    assert!(
+        kirchhoff < point && kirchhoff > 0.9 * point,
+        "{kirchhoff} vs {point}"
+    );
+    assert!(reference[0] > kirchhoff, "{} vs {kirchhoff}", reference[0]);
+    let coarse = basin(17.0, 120, &SENSORS);
+    let fine = basin(17.0, 240, &SENSORS);
+    let scale = reference[0];
+    for (k, &r) in SENSORS.iter().enumerate() {
+        let (ec, ef) = (
+            (coarse[k] - reference[k]).abs() / scale,
+            (fine[k] - reference[k]).abs() / scale,
+        );
+        eprintln!(
+            "r = {r:.3} m: reference {:.4e}, coarse {:.4e} ({ec:.2e}), fine {:.4e} ({ef:.2e})",
+            reference[k], coarse[k], fine[k]
+        );
+        // MITC4 converges in the deflection like h²: 0.5 % leaves a margin of 2.5 over the
+        // finer mesh's error at the centre (1.8e-3), where the disk's edge is least resolved.
+        assert!(
+            ef <= 0.005,
+            "sensor at {r} m: {ef:.3e} of the centre deflection"
+        );
+        if r <= 0.61 {
+            // Near the load, where the mesh's error dominates the edges' (below 1e-4), halving
+            // the elements divides it by about four: at least three.
+            assert!(
+                ec >= 3.0 * ef,
+                "sensor at {r} m: {ec:.2e} → {ef:.2e} is not second order"
+            );
+        } else {
+            assert!(
+                ef <= ec + 1e-4,
+                "sensor at {r} m: the finer mesh is not closer"
+            );
+        }
+    }
+}
+
+/// Bad disks are refused naming the key: a radius that is not positive, both a force and a
+/// pressure, a disk that reaches beyond the plate.
+#[test]
+fn bad_disks_are_refused_naming_the_key() {
+    let scene = |extra: &str| {
+        format!(
+            "[plate]\nlength = 4.0\nwidth = 4.0\nthickness = 0.25\nyoungs_modulus = 30e9\npoissons_ratio = 0.15\n[foundation]\nmodel = \"winkler\"\nmodulus = 8e7\n[[load]]\nkind = \"circle\"\n{extra}\n"
+        )
+    };
+    let field = |extra: &str| match Problem::from_toml(&scene(extra)) {
+        Err(liftoff::Error::Invalid { field, .. }) => field,
+        other => panic!("{extra}: {other:?}"),
+    };
+    assert_eq!(
+        field("x = 0.0\ny = 0.0\nradius = 0.0\nforce = 4e4"),
+        "load[0].radius"
+    );
+    assert_eq!(field("x = 0.0\ny = 0.0\nforce = 4e4"), "load[0].radius");
+    assert_eq!(
+        field("x = 0.0\ny = 0.0\nradius = 0.15\nforce = 4e4\npressure = 5e5"),
+        "load[0].pressure"
+    );
+    assert_eq!(
+        field("x = 1.9\ny = 0.0\nradius = 0.15\nforce = 4e4"),
+        "load[0].radius"
+    );
+    assert!(
+        Problem::from_toml(&scene("x = 1.8\ny = 0.0\nradius = 0.15\npressure = 5.66e5")).is_ok()
+    );
+}
