@@ -39,6 +39,7 @@
 #![allow(clippy::needless_range_loop)]
 
 pub mod analysis;
+pub mod backcalc;
 pub mod budget;
 pub mod check;
 pub mod choice;

@@ -1,0 +1,243 @@
+//! The AREA method (Ioannides 1989; Hall 1991; AASHTO Guide 1993, Part III): from a basin's
+//! shape, the radius of relative stiffness ℓ of an infinite slab on a dense liquid or an elastic
+//! solid, then from the centre deflection the subgrade's modulus and the slab's.
+//!
+//! AREA is the basin's area between the load and 914 mm (36 in), over the centre deflection,
+//! by the trapezoid rule on the sensors at 0, 305, 610 and 914 mm (12 in apart: AREA =
+//! 6 (1 + 2 d₁₂/d₀ + 2 d₂₄/d₀ + d₃₆/d₀) in, between 11.04 and 36 in). Where the literature maps
+//! AREA to ℓ by Hall's regressions of the closed forms, here the closed forms themselves are
+//! inverted: the model's AREA at ℓ, on the same sensors by the same rule, from the infinite
+//! Kirchhoff plate under the load's own disk ([`super::infinite`]); it grows with ℓ, and the
+//! measured AREA is bisected to it. Then, with α = a/ℓ:
+//!
+//! - dense liquid: k = P f(0, α) / (d₀ ℓ²), E = 12 (1 − ν²) k ℓ⁴ / h³;
+//! - elastic solid: C = P g(0, α) / (d₀ ℓ), E_s = 2 (1 − ν_s²) C, E = 12 (1 − ν²) C ℓ³ / h³.
+//!
+//! The method assumes an infinite slab bonded to its subgrade, the load far from any edge or
+//! joint, and the slab flat at test time; `tests/backcalc_area.rs` measures how far it is off at
+//! a free edge.
+
+use super::infinite::{dimensionless_deflection, Subgrade};
+use crate::error::{Error, Result};
+
+/// The AREA method's sensor offsets, m: 0, 12, 24 and 36 in.
+pub const AREA_OFFSETS: [f64; 4] = [0.0, 0.3048, 0.6096, 0.9144];
+
+/// How far a sensor may sit from its AREA offset, m: the SHRP offsets (0, 305, 610, 914 mm)
+/// are within 0.5 mm of 12-in multiples.
+const OFFSET_TOLERANCE: f64 = 0.01;
+
+/// One deflection basin.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Basin {
+    /// The drop's load, N.
+    pub load: f64,
+    /// The load plate's radius, m.
+    pub radius: f64,
+    /// Sensor offsets from the plate's centre, m.
+    pub offsets: Vec<f64>,
+    /// Deflections at the sensors, m, downward.
+    pub deflections: Vec<f64>,
+}
+
+/// What the AREA method finds.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AreaResult {
+    /// The basin's AREA, m (÷ 0.0254 for inches).
+    pub area: f64,
+    /// The radius of relative stiffness, m.
+    pub ell: f64,
+    /// k (N/m³) on the dense liquid, E_s (Pa) on the elastic solid.
+    pub subgrade_modulus: f64,
+    /// The slab's Young's modulus, Pa.
+    pub slab_modulus: f64,
+}
+
+/// The AREA of the deflections `d` at the sensors `at` (the four AREA sensors as placed), m.
+fn area_of(at: &[f64; 4], d: &[f64; 4]) -> f64 {
+    (0..3)
+        .map(|i| (at[i + 1] - at[i]) * (d[i] + d[i + 1]) / 2.0)
+        .sum::<f64>()
+        / d[0]
+}
+
+/// The model's dimensionless basin at the sensors `at` for ℓ.
+fn model_basin(subgrade: Subgrade, radius: f64, ell: f64, at: &[f64; 4]) -> [f64; 4] {
+    at.map(|r| dimensionless_deflection(subgrade, r / ell, radius / ell))
+}
+
+/// Run the AREA method on `basin` for a slab of `thickness` (m) and Poisson's ratio `poisson`;
+/// see the module's description. Errors name the field: a basin without the four AREA sensors,
+/// a load or deflection that is not positive, deflections that grow away from the load, an
+/// AREA outside what an infinite slab can give.
+pub fn area_method(
+    basin: &Basin,
+    thickness: f64,
+    poisson: f64,
+    subgrade: Subgrade,
+) -> Result<AreaResult> {
+    if !(basin.load.is_finite() && basin.load > 0.0) {
+        return Err(Error::invalid(
+            "basin.load",
+            format!("must be a positive force, got {}", basin.load),
+        ));
+    }
+    if !(basin.radius.is_finite() && basin.radius > 0.0) {
+        return Err(Error::invalid(
+            "basin.radius",
+            format!("must be a positive length, got {}", basin.radius),
+        ));
+    }
+    if !(thickness > 0.0 && (0.0..0.5).contains(&poisson)) {
+        return Err(Error::invalid(
+            "plate",
+            "the AREA method needs the slab's thickness (> 0) and Poisson's ratio (0 … 0.5)",
+        ));
+    }
+    if basin.offsets.len() != basin.deflections.len() {
+        return Err(Error::invalid(
+            "basin.deflections",
+            format!(
+                "{} deflections for {} sensor offsets",
+                basin.deflections.len(),
+                basin.offsets.len()
+            ),
+        ));
+    }
+    let mut d = [0.0; 4];
+    // Where the four sensors are: the model's AREA is taken there too, so that SHRP's offsets
+    // (305, 610, 914 mm) give the same ℓ as exact 12-in multiples would.
+    let mut at = [0.0; 4];
+    for (k, &want) in AREA_OFFSETS.iter().enumerate() {
+        let found = basin
+            .offsets
+            .iter()
+            .position(|&o| (o - want).abs() <= OFFSET_TOLERANCE)
+            .ok_or_else(|| {
+                Error::invalid(
+                    "basin.offsets",
+                    format!(
+                        "the AREA method needs sensors at 0, 305, 610 and 914 mm; none within 10 mm of {:.0} mm",
+                        want * 1e3
+                    ),
+                )
+            })?;
+        d[k] = basin.deflections[found];
+        at[k] = basin.offsets[found];
+    }
+    if !d.iter().all(|v| v.is_finite() && *v > 0.0) {
+        return Err(Error::invalid(
+            "basin.deflections",
+            format!("must be positive (downward) at the AREA sensors, got {d:?} m"),
+        ));
+    }
+    if let Some(k) = (0..3).find(|&k| d[k + 1] > d[k]) {
+        return Err(Error::invalid(
+            "basin.deflections",
+            format!(
+                "grow away from the load ({:.1} µm at {:.0} mm, {:.1} µm at {:.0} mm): a basin falls from the plate outward (check the sensor order and units)",
+                d[k] * 1e6,
+                AREA_OFFSETS[k] * 1e3,
+                d[k + 1] * 1e6,
+                AREA_OFFSETS[k + 1] * 1e3
+            ),
+        ));
+    }
+    let area = area_of(&at, &d);
+    let model_area = |ell: f64| area_of(&at, &model_basin(subgrade, basin.radius, ell, &at));
+    // ℓ from a tenth of the plate's radius (α = 10) to 100 m: AREA spans 11–36 in over it.
+    let (mut lo, mut hi) = (basin.radius / 10.0, 100.0);
+    let (a_lo, a_hi) = (model_area(lo), model_area(hi));
+    if !(a_lo..=a_hi).contains(&area) {
+        return Err(Error::invalid(
+            "basin.deflections",
+            format!(
+                "AREA {:.2} in lies outside what an infinite slab gives under a {:.0} mm plate ({:.2} … {:.2} in): the basin is not a slab's on this subgrade",
+                area / 0.0254,
+                basin.radius * 1e3,
+                a_lo / 0.0254,
+                a_hi / 0.0254
+            ),
+        ));
+    }
+    // Bisection on ln ℓ: 50 halvings of a factor 1e4 leave 1e-14 of ℓ.
+    for _ in 0..50 {
+        let mid = (lo * hi).sqrt();
+        if model_area(mid) < area {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let ell = (lo * hi).sqrt();
+    let centre = dimensionless_deflection(subgrade, 0.0, basin.radius / ell);
+    let bending = 12.0 * (1.0 - poisson * poisson) / thickness.powi(3);
+    let (subgrade_modulus, slab_modulus) = match subgrade {
+        Subgrade::DenseLiquid => {
+            let k = basin.load * centre / (d[0] * ell * ell);
+            (k, bending * k * ell.powi(4))
+        }
+        Subgrade::ElasticSolid { poisson: nu_s } => {
+            let c = basin.load * centre / (d[0] * ell);
+            (2.0 * (1.0 - nu_s * nu_s) * c, bending * c * ell.powi(3))
+        }
+    };
+    Ok(AreaResult {
+        area,
+        ell,
+        subgrade_modulus,
+        slab_modulus,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Basins from the closed forms themselves at a known slab come back: ℓ, k (or E_s) and E
+    /// to 1e-9 (the bisection ends at 1e-14; the closed forms are smooth in ℓ).
+    #[test]
+    fn closed_form_basins_come_back() {
+        let (h, nu, e) = (0.25, 0.15, 30e9);
+        let d = e * h * h * h / (12.0 * (1.0 - nu * nu));
+        for (subgrade, modulus) in [
+            (Subgrade::DenseLiquid, 8.0e7_f64),
+            (Subgrade::ElasticSolid { poisson: 0.4 }, 1.0e8),
+        ] {
+            let ell = match subgrade {
+                Subgrade::DenseLiquid => (d / modulus).powf(0.25),
+                Subgrade::ElasticSolid { poisson } => {
+                    (d * 2.0 * (1.0 - poisson * poisson) / modulus).powf(1.0 / 3.0)
+                }
+            };
+            let unit = match subgrade {
+                Subgrade::DenseLiquid => 40e3 / (modulus * ell * ell),
+                Subgrade::ElasticSolid { poisson } => {
+                    40e3 / (modulus / (2.0 * (1.0 - poisson * poisson)) * ell)
+                }
+            };
+            let basin = Basin {
+                load: 40e3,
+                radius: 0.15,
+                offsets: vec![0.0, 0.203, 0.305, 0.457, 0.610, 0.914, 1.219],
+                deflections: [0.0, 0.203, 0.305, 0.457, 0.610, 0.914, 1.219]
+                    .iter()
+                    .map(|&r| unit * dimensionless_deflection(subgrade, r / ell, 0.15 / ell))
+                    .collect(),
+            };
+            let r = area_method(&basin, h, nu, subgrade).expect("area");
+            let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * b;
+            assert!(close(r.ell, ell), "{subgrade:?}: ℓ {} vs {ell}", r.ell);
+            assert!(
+                close(r.subgrade_modulus, modulus),
+                "{subgrade:?}: {}",
+                r.subgrade_modulus
+            );
+            assert!(
+                close(r.slab_modulus, e),
+                "{subgrade:?}: E {}",
+                r.slab_modulus
+            );
+        }
+    }
+}
