@@ -599,6 +599,39 @@ fn design(
     json(&d.reported())
 }
 
+/// The AREA method on one basin (`liftoff::backcalc::area_method`): (AREA m, ℓ m, subgrade
+/// modulus — k N/m³ or E_s Pa —, slab modulus Pa). `soil_poisson` None: a dense liquid;
+/// a value: an elastic solid of that Poisson's ratio.
+#[pyfunction]
+#[pyo3(signature = (offsets, deflections, load, radius, thickness, poisson, soil_poisson=None))]
+#[allow(clippy::too_many_arguments)]
+fn area_method(
+    py: Python<'_>,
+    offsets: Vec<f64>,
+    deflections: Vec<f64>,
+    load: f64,
+    radius: f64,
+    thickness: f64,
+    poisson: f64,
+    soil_poisson: Option<f64>,
+) -> PyResult<(f64, f64, f64, f64)> {
+    use liftoff::backcalc::{Basin, Subgrade};
+    let subgrade = match soil_poisson {
+        None => Subgrade::DenseLiquid,
+        Some(poisson) => Subgrade::ElasticSolid { poisson },
+    };
+    let basin = Basin {
+        load,
+        radius,
+        offsets,
+        deflections,
+    };
+    let r = run(py, None, |_| {
+        liftoff::backcalc::area_method(&basin, thickness, poisson, subgrade)
+    })?;
+    Ok((r.area, r.ell, r.subgrade_modulus, r.slab_modulus))
+}
+
 /// How many positions `critical` has for these options.
 #[pyfunction]
 fn critical_len(
@@ -703,6 +736,7 @@ fn _liftoff(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(damage_part, m)?)?;
     m.add_function(wrap_pyfunction!(damage_merge, m)?)?;
     m.add_function(wrap_pyfunction!(design, m)?)?;
+    m.add_function(wrap_pyfunction!(area_method, m)?)?;
     m.add_function(wrap_pyfunction!(stability_rows, m)?)?;
     m.add_function(wrap_pyfunction!(_panic_for_tests, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;

@@ -936,3 +936,43 @@ def test_design_equals_the_cli_and_refuses_a_bad_range(tmp_path):
     with pytest.raises(liftoff.SceneError) as e:
         liftoff.design(path, (0.2, 0.3), points=1)
     assert e.value.field == "points"
+
+
+def test_area_method_recovers_a_kirchhoff_basin_and_names_bad_data():
+    """The AREA method on the infinite Kirchhoff plate's basin (k = 80 MN/m³, 250 mm, 30 GPa),
+    written here from Westergaard's point-load solution w(r) = −P/(2π k ℓ²) kei(r/ℓ) with kei by
+    its power series (Abramowitz & Stegun 9.9.12) — a point load, so the library's 150 mm disk is
+    given a radius of 1 mm (its spread changes the basin by order (a/ℓ)² ≈ 1e-6): ℓ, k and E
+    within 1e-4 (1e-5 seen: the Bessel approximations' 1e-7, amplified by the AREA's ratios);
+    bad basins raise SceneError naming the field."""
+    h, nu, e, k = 0.25, 0.15, 30e9, 8.0e7
+    d = e * h**3 / (12 * (1 - nu**2))
+    ell = (d / k) ** 0.25
+
+    def kei(x):
+        # kei(x) = −ln(x/2) bei(x) − (π/4) ber(x) + Σ (−1)^j ψ(2j + 2) (x²/4)^(2j+1) / ((2j+1)!)²
+        q = x * x / 4
+        ber = bei = series = 0.0
+        for j in range(30):
+            ber += (-1) ** j * q ** (2 * j) / math.factorial(2 * j) ** 2
+            bei += (-1) ** j * q ** (2 * j + 1) / math.factorial(2 * j + 1) ** 2
+            psi = -0.5772156649015329 + sum(1.0 / m for m in range(1, 2 * j + 2))
+            series += (-1) ** j * psi * q ** (2 * j + 1) / math.factorial(2 * j + 1) ** 2
+        return -math.log(x / 2) * bei - math.pi / 4 * ber + series
+
+    offsets = [0.0, 0.305, 0.610, 0.914]
+    w = [40e3 / (8 * k * ell**2)] + [-40e3 / (2 * math.pi * k * ell**2) * kei(r / ell)
+                                     for r in offsets[1:]]
+    r = liftoff.area_method(offsets, w, load=40e3, radius=0.001, thickness=h, poisson=nu)
+    assert abs(r["ell"] / ell - 1) < 1e-4, (r, ell)
+    assert abs(r["subgrade_modulus"] / k - 1) < 1e-4 and abs(r["slab_modulus"] / e - 1) < 1e-4, r
+    assert 11.04 < r["area_in"] < 36
+    with pytest.raises(liftoff.SceneError) as err:
+        liftoff.area_method([0.0, 0.305, 0.914], w[:3], load=40e3, thickness=h)
+    assert err.value.field == "basin.offsets"
+    with pytest.raises(liftoff.SceneError) as err:
+        liftoff.area_method(offsets, list(reversed(w)), load=40e3, thickness=h)
+    assert err.value.field == "basin.deflections"
+    with pytest.raises(liftoff.SceneError) as err:
+        liftoff.area_method(offsets, w, load=0.0, thickness=h)
+    assert err.value.field == "basin.load"

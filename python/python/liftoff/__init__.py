@@ -49,6 +49,7 @@ __all__ = [
     "critical",
     "damage",
     "design",
+    "area_method",
     "grid",
     "sweep",
     "Solution",
@@ -385,6 +386,36 @@ def design(
             solution=result,
         )
     return result
+
+
+def area_method(
+    offsets: Sequence[float],
+    deflections: Sequence[float],
+    *,
+    load: float,
+    radius: float = 0.15,
+    thickness: float,
+    poisson: float = 0.15,
+    subgrade: str = "dense-liquid",
+    soil_poisson: float = 0.4,
+) -> Dict[str, float]:
+    """The AREA method on one deflection basin (SI: m, N): the infinite slab's radius of
+    relative stiffness from the basin's shape, then the subgrade's and the slab's moduli
+    (docs/METHODS.md, "Backcalculation"). ``offsets`` must include the sensors at 0, 305, 610
+    and 914 mm; ``subgrade`` is ``"dense-liquid"`` (k) or ``"elastic-solid"`` (E_s, with
+    ``soil_poisson``). Returns ``area`` (m) and ``area_in`` (in), ``ell`` (m),
+    ``subgrade_modulus`` (k in N/m³, or E_s in Pa) and ``slab_modulus`` (Pa). A basin without
+    those sensors, deflections that grow away from the load or a load that is not positive
+    raise :class:`SceneError` naming the field."""
+    if subgrade not in ("dense-liquid", "elastic-solid"):
+        raise SceneError(f"`{subgrade}`: subgrade must be dense-liquid or elastic-solid",
+                         "invalid", "subgrade")
+    nu_s = soil_poisson if subgrade == "elastic-solid" else None
+    area, ell, modulus, slab = _core.area_method(
+        [float(o) for o in offsets], [float(d) for d in deflections], float(load),
+        float(radius), float(thickness), float(poisson), nu_s)
+    return {"area": area, "area_in": area / 0.0254, "ell": ell,
+            "subgrade_modulus": modulus, "slab_modulus": slab}
 
 
 def grid(base: Scene, axes: Mapping[str, Sequence[Any]]) -> Grid:
