@@ -37,9 +37,11 @@ pub fn woodbury_limit(n: usize) -> usize {
     ((n as f64).sqrt() / 4.0).clamp(16.0, 64.0) as usize
 }
 
-/// Most Woodbury columns kept for one factor (40 MB at 19 809 equations); past it only the
-/// current step's stay.
-const MAX_COLUMNS: usize = 256;
+/// Most Woodbury columns kept for one factor: about 32 MB of them (200 at 19 809 equations),
+/// never fewer than one step may need; past it only the current step's stay.
+fn max_columns(n: usize) -> usize {
+    (4_000_000 / n.max(1)).max(woodbury_limit(n))
+}
 
 /// A numeric factor of K + diag(springs on the pressure nodes' equations), with the Woodbury
 /// columns A⁻¹ e_eq computed for it so far.
@@ -86,7 +88,7 @@ impl Factored {
         if k == 0 {
             return Ok(y);
         }
-        if self.columns.len() > MAX_COLUMNS {
+        if self.columns.len() > max_columns(n) {
             // Keep memory bounded: the columns this step needs stay, the rest go.
             let wanted: std::collections::HashSet<usize> =
                 updates.iter().map(|&(i, _)| i).collect();
@@ -162,6 +164,12 @@ impl Carry {
     pub(super) fn take_for(&self, k: &Arc<sprs::CsMat<f64>>) -> Option<Factored> {
         let mut slot = self.0.lock().unwrap_or_else(|p| p.into_inner());
         slot.take().filter(|f| Arc::ptr_eq(&f.k, k))
+    }
+
+    /// Move what this carry holds into a new one, leaving this one empty.
+    pub fn take(&self) -> Carry {
+        let mut slot = self.0.lock().unwrap_or_else(|p| p.into_inner());
+        Carry(Mutex::new(slot.take()))
     }
 
     /// Take what `other` holds (the factor a solve started from `other` ended with).

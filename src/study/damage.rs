@@ -435,10 +435,18 @@ fn solve_part(
                     // here (its factor handed over), else from its own last positions.
                     // (Starting a middle level from the ends' interpolation instead was tried: its
                     // set is further from the factor handed over, and the run took 40 % longer.)
+                    // An anchor keeps its own carry for its next position; a middle level's is
+                    // wanted only by the level above it here, which takes it (memory: two
+                    // factors a family, not one a level).
                     let (start, carry) = match &below {
-                        Some((k, sigma)) if !anchor(j) => {
-                            (Some(sigma.clone()), carries[*k].share())
-                        }
+                        Some((k, sigma)) if !anchor(j) => (
+                            Some(sigma.clone()),
+                            if anchor(*k) {
+                                carries[*k].share()
+                            } else {
+                                carries[*k].take()
+                            },
+                        ),
                         _ => (own, carries[j].share()),
                     };
                     let position = solve(&passes[i][p], start.as_deref(), &carry)?;
