@@ -745,3 +745,92 @@ fn e71_e72_damage_inputs_are_refused_naming_the_key() {
         "E72: message: {err}"
     );
 }
+
+/// E73: a `circle` load beyond the plate's edge, without a radius, or with both a force and a
+/// pressure is refused on the command line naming the key, exit 2, nothing written. E74: the
+/// AREA method refuses a basin without its four sensors, one that grows away from the load and
+/// a load that is not positive, naming the field. E75: damage parts that leave a family out
+/// are refused naming `parts`.
+#[test]
+fn e73_e74_e75_circles_basins_and_damage_parts() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let out = dir.path().join("out");
+    let plate = "[plate]\nlength = 4.0\nwidth = 4.0\nthickness = 0.25\nyoungs_modulus = 30e9\npoissons_ratio = 0.15\n[foundation]\nmodel = \"winkler\"\nmodulus = 8e7\n[[load]]\nkind = \"circle\"\n";
+    for (disk, message) in [
+        (
+            "x = 1.9\ny = 0.0\nradius = 0.15\nforce = 4e4",
+            "scene field `load[0].radius`: the disk of radius 0.15 about its centre reaches beyond the plate's edge",
+        ),
+        ("x = 0.0\ny = 0.0\nforce = 4e4", "scene field `load[0].radius`: missing"),
+        (
+            "x = 0.0\ny = 0.0\nradius = 0.15\nforce = 4e4\npressure = 5e5",
+            "scene field `load[0].pressure`: give the disk's force or its pressure, not both",
+        ),
+    ] {
+        let path = dir.path().join("disk.toml");
+        std::fs::write(&path, format!("{plate}{disk}\n")).expect("write");
+        let o = Command::new(env!("CARGO_BIN_EXE_liftoff"))
+            .arg("solve")
+            .arg(&path)
+            .arg("--out")
+            .arg(&out)
+            .output()
+            .expect("run liftoff");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "E73: exit code ({err})");
+        assert!(err.contains(message), "E73: message: {err}");
+        assert!(!out.exists(), "E73: nothing written");
+    }
+
+    use liftoff::backcalc::{area_method, Basin, Subgrade};
+    let basin = |offsets: &[f64], deflections: &[f64], load: f64| Basin {
+        load,
+        radius: 0.15,
+        offsets: offsets.to_vec(),
+        deflections: deflections.to_vec(),
+    };
+    let sensors = [0.0, 0.305, 0.610, 0.914];
+    let falling = [91.9e-6, 82.1e-6, 67.2e-6, 52.3e-6];
+    let rising = [52.3e-6, 67.2e-6, 82.1e-6, 91.9e-6];
+    for (b, message) in [
+        (
+            basin(&sensors[..3], &falling[..3], 4e4),
+            "scene field `basin.offsets`: the AREA method needs sensors at 0, 305, 610 and 914 mm; none within 10 mm of 914 mm",
+        ),
+        (
+            basin(&sensors, &rising, 4e4),
+            "scene field `basin.deflections`: grow away from the load (52.3 µm at 0 mm, 67.2 µm at 305 mm)",
+        ),
+        (
+            basin(&sensors, &falling, 0.0),
+            "scene field `basin.load`: must be a positive force, got 0",
+        ),
+    ] {
+        let err = area_method(&b, 0.25, 0.15, Subgrade::DenseLiquid)
+            .expect_err("E74: refused")
+            .to_string();
+        assert!(err.contains(message), "E74: message: {err}");
+    }
+
+    let scene = liftoff::examples::SCENES
+        .iter()
+        .find(|(n, _, _)| *n == "pavement-damage")
+        .map(|(_, _, t)| *t)
+        .expect("bundled")
+        .replace("positions = 3", "positions = 1")
+        .replace("[60e3, 80e3, 100e3]", "[80e3]")
+        .replace("[3.0e5, 1.5e5, 2.0e4]", "[1.5e5]")
+        .replace("[mesh]\nelements = [90, 24]", "[mesh]\nelements = [30, 8]")
+        .replace("# steps:", "steps = 3\n# steps:");
+    let p = liftoff::Problem::from_toml(&scene).expect("scene");
+    assert_eq!(liftoff::study::damage_families(&p).expect("families"), 3);
+    let part = liftoff::study::damage_part(&p, &[0, 2], &liftoff::Monitor::NONE).expect("part");
+    let err = liftoff::study::damage_merge(&p, vec![part])
+        .expect_err("E75: refused")
+        .to_string();
+    assert!(
+        err.contains("scene field `parts`: case 1 (")
+            && err.contains("is in no part: the parts must cover every family"),
+        "E75: message: {err}"
+    );
+}
