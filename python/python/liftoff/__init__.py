@@ -334,7 +334,7 @@ def design(
     scene: Scene,
     vary: Union[str, Sequence[float]],
     *,
-    points: int = 5,
+    points: int = 6,
     target: Optional[float] = None,
     tolerance: Optional[float] = None,
     method: Optional[str] = None,
@@ -342,7 +342,7 @@ def design(
     **options: Any,
 ) -> Records:
     """The least slab thickness that carries the scene's traffic (``liftoff design``): whole
-    damage runs (:func:`damage`) at ``points`` thicknesses evenly over ``vary`` — ``(FROM, TO)``
+    damage runs (:func:`damage`) at ``points`` thicknesses (6, as the CLI) evenly over ``vary`` — ``(FROM, TO)``
     or ``"thickness=FROM..TO"``, in the scene's unit of length — give the design curve; the
     first thickness that meets the target and the one before it bracket the answer, bisected to
     ``tolerance`` (default 5 mm; 0.25 in for a US scene). The target (``target``) is the MEPDG's
