@@ -18,6 +18,7 @@ use crate::solve::StatusKind;
 
 mod critical;
 mod damage;
+mod damage_part;
 mod design;
 mod eps_sweep;
 mod options;
@@ -29,9 +30,9 @@ pub use critical::{
     Footprint, JointLine, Position,
 };
 pub use damage::{
-    damage, damage_families, damage_merge, damage_part, Cracking, Damage, DamagePart, Governing,
-    Pass, Peak,
+    damage, damage_families, damage_merge, damage_part, Cracking, Damage, Governing, Pass, Peak,
 };
+pub use damage_part::DamagePart;
 pub use design::{design, Design, DesignOptions, DesignPoint};
 pub use eps_sweep::{eps_sweep, Sweep, SweepRow};
 pub use options::{ConstraintVariants, EpsSweepOptions, TradeoffOptions};

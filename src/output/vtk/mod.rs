@@ -111,18 +111,7 @@ pub fn write_cell_vtu(
     field: &FullField,
     cells: &[(&'static str, &[f64])],
 ) -> Result<()> {
-    let (nx, ny) = (field.nx, field.ny);
-    let n_cells = nx.saturating_mul(ny);
-    if let Some((name, v)) = cells.iter().find(|(_, v)| v.len() != n_cells) {
-        return Err(io_error(
-            path,
-            std::io::ErrorKind::InvalidInput,
-            format!(
-                "element array `{name}` has {} entries, the grid has {n_cells} elements",
-                v.len()
-            ),
-        ));
-    }
+    check_cells(path, cells, field.nx.saturating_mul(field.ny))?;
     // The grid's own checks: its nodal arrays and corner table (no element values of a solve).
     let sizes = check(path, field, &ElementField::default())?;
     let content = Content {
@@ -226,25 +215,28 @@ fn check(path: &Path, field: &FullField, elements: &ElementField) -> Result<Size
 
     let with_cells = cell_arrays(elements).iter().any(|(_, v)| !v.is_empty());
     if with_cells {
-        if let Some((name, v)) = cell_arrays(elements)
-            .iter()
-            .find(|(_, v)| v.len() != n_cells)
-        {
-            return Err(io_error(
-                path,
-                std::io::ErrorKind::InvalidInput,
-                format!(
-                    "element array `{name}` has {} entries, the grid has {n_cells} elements",
-                    v.len()
-                ),
-            ));
-        }
+        check_cells(path, &cell_arrays(elements), n_cells)?;
     }
     Ok(Sizes {
         nodes: n_nodes,
         cells: n_cells,
         with_cells,
     })
+}
+
+/// Every cell array has one value per element.
+fn check_cells(path: &Path, cells: &[(&str, &[f64])], n_cells: usize) -> Result<()> {
+    match cells.iter().find(|(_, v)| v.len() != n_cells) {
+        Some((name, v)) => Err(io_error(
+            path,
+            std::io::ErrorKind::InvalidInput,
+            format!(
+                "element array `{name}` has {} entries, the grid has {n_cells} elements",
+                v.len()
+            ),
+        )),
+        None => Ok(()),
+    }
 }
 
 /// The cell data arrays, the active scalars (`mx`) first: the columns of elements.csv but the
