@@ -9,21 +9,9 @@
 //! D∇⁴w = (1 − D∇²/S)(q − k w) in Hankel space; S → ∞ is Kirchhoff's plate, whose centre
 //! deflection under a point load P is Westergaard's P / (8 √(kD)).
 
-use liftoff::{Monitor, Outcome, Problem};
+mod common;
 
-/// J_n(x) = (1/π) ∫₀^π cos(nτ − x sin τ) dτ by the trapezoid rule: the integrand is smooth and
-/// periodic, so the rule converges geometrically once the points outnumber |x| (Trefethen &
-/// Weideman 2014); 40 + |x| points leave round-off.
-fn bessel(n: u32, x: f64) -> f64 {
-    let m = 40 + x.abs().ceil() as usize;
-    let h = std::f64::consts::PI / m as f64;
-    let f = |tau: f64| (f64::from(n) * tau - x * tau.sin()).cos();
-    let mut sum = 0.5 * (f(0.0) + f(std::f64::consts::PI));
-    for i in 1..m {
-        sum += f(i as f64 * h);
-    }
-    sum * h / std::f64::consts::PI
-}
+use liftoff::{Monitor, Outcome, Problem};
 
 /// The slab and soil of the tests: 250 mm of concrete on k = 80 MN/m³ (ℓ = 0.841 m), a 40 kN
 /// drop on the standard 150 mm plate.
@@ -34,25 +22,11 @@ const K: f64 = 8.0e7;
 const RADIUS: f64 = 0.15;
 const FORCE: f64 = 40e3;
 
-/// The infinite plate's deflection at distance `r` from the disk's centre: Simpson's rule on
-/// [0, 60/ℓ] in steps of ℓ⁻¹/400 (the integrand falls like ξ⁻⁵ beyond; the tail is below 1e-8
-/// of the centre deflection), `shear` the plate's S (∞: Kirchhoff).
+/// The infinite plate's deflection at distance `r` from the disk's centre, `shear` the plate's
+/// S: ∞ for Kirchhoff's plate, else Mindlin's with κ = 5/6 ([`common::infinite::disk_on_springs`]).
 fn infinite_plate(r: f64, shear: f64) -> f64 {
-    let d = E * H.powi(3) / (12.0 * (1.0 - NU * NU));
-    let ell = (d / K).powf(0.25);
-    let q = FORCE / (std::f64::consts::PI * RADIUS * RADIUS);
-    let f = |xi: f64| {
-        let s = 1.0 + d * xi * xi / shear;
-        bessel(1, xi * RADIUS) * bessel(0, xi * r) * s / (d * xi.powi(4) + K * s)
-    };
-    let steps = 24_000; // even
-    let top = 60.0 / ell;
-    let h = top / steps as f64;
-    let mut sum = f(0.0) + f(top);
-    for i in 1..steps {
-        sum += if i % 2 == 1 { 4.0 } else { 2.0 } * f(i as f64 * h);
-    }
-    q * RADIUS * sum * h / 3.0
+    let plate = common::infinite::Plate { e: E, nu: NU, h: H };
+    common::infinite::disk_on_springs(&plate, K, RADIUS, FORCE, r, shear.is_infinite())
 }
 
 /// The deflection at the FWD's usual sensor offsets (m), x along the slab from the plate's
