@@ -43,6 +43,11 @@ pub const SCENES: &[(&str, &str, &str)] = &[
         include_str!("../examples/pavement-damage.toml"),
     ),
     (
+        "fwd-panel",
+        "the template of a deflectometer survey: one 4.6 m × 3.7 m × 250 mm pavement panel on springs; `liftoff backcalc examples/fwd-basins.csv --scene example:fwd-panel`",
+        include_str!("../examples/fwd-panel.toml"),
+    ),
+    (
         "warehouse-bay",
         "warehouse floor: 3 × 3 sawn panels of 6 m on a clay layer, drying-shrinkage curl, a 60 kN rack post at a joint crossing",
         include_str!("../examples/warehouse-bay.toml"),

@@ -309,6 +309,10 @@ fn serde_names_match_choice_names() {
         liftoff::method::SolvedBy,
         liftoff::solve::StatusKind,
         liftoff::study::StabilityParam,
+        liftoff::backcalc::BackcalcMethod,
+        liftoff::backcalc::Location,
+        liftoff::backcalc::Termination,
+        liftoff::backcalc::Unknown,
     );
     read!(liftoff::study::ConstraintVariants, liftoff::scene::LoadKind,);
     // Progress events are shown, never stored: "penalty step", "active-set face solve".

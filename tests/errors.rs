@@ -834,3 +834,93 @@ fn e73_e74_e75_circles_basins_and_damage_parts() {
         "E75: message: {err}"
     );
 }
+
+/// E76: a basin file with a bad drop or a bad column is refused naming the station and the
+/// column, exit 2, nothing written. E77: a sensor off the template's plate and `--method area`
+/// on an edge drop are refused naming the drop. E78: a fit held to fewer evaluations than it
+/// needs is reported as not converged, exit 4, its best point in the files.
+#[test]
+fn e76_e77_e78_basin_files_templates_and_fits() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let out = dir.path().join("out");
+    let run = |file: &str, extra: &[&str]| {
+        let path = dir.path().join("basins.csv");
+        std::fs::write(&path, file).expect("write");
+        Command::new(env!("CARGO_BIN_EXE_liftoff"))
+            .arg("backcalc")
+            .arg(&path)
+            .args(["--scene", "example:fwd-panel"])
+            .arg("--out")
+            .arg(&out)
+            .args(extra)
+            .output()
+            .expect("run liftoff")
+    };
+    let head = "station,load_kN,d0mm_um,d305mm_um,d610mm_um,d914mm_um\n";
+    for (file, message) in [
+        (
+            format!("{head}0+100,40,100,90,95,60\n"),
+            "scene field `station 0+100, drop 1: sensor at 610 mm`: deflects 95.0 µm, more than the 90.0 µm nearer the plate",
+        ),
+        (
+            format!("{head}0+100,40,100,,80,60\n"),
+            "scene field `station 0+100, drop 1: sensor at 305 mm`: is missing",
+        ),
+        (
+            format!("{head}0+100,0,100,90,80,60\n"),
+            "scene field `station 0+100, drop 1: load`: must be a positive force",
+        ),
+        (
+            "station,load_kN,d0mm_mm,d305mm_mm\n0+100,40,100,90\n".to_string(),
+            "scene field `station 0+100, drop 1: units`: the plate deflects 2500.000 µm per kN",
+        ),
+        (
+            "station,load_kN,d0mm_um,d305mm_furlongs\n0+100,40,100,90\n".to_string(),
+            "column `d305mm_furlongs``: is not a basin column",
+        ),
+    ] {
+        let o = run(&file, &[]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "E76: exit code ({err})");
+        assert!(err.contains(message), "E76: message: {err}");
+        assert!(!out.exists(), "E76: nothing written");
+    }
+    let good = "station,location,load_kN,d0mm_um,d305mm_um,d610mm_um,d914mm_um,d2400mm_um\n";
+    let o = run(&format!("{good}2+000,edge,40,270,250,220,185,60\n"), &[]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "E77: exit code ({err})");
+    assert!(
+        err.contains("scene field `station 2+000, drop 1: sensor at 2400 mm`: falls at (2.400, -1.700) m, off the template's 4.6 × 3.7 m plate"),
+        "E77: message: {err}"
+    );
+    let o = run(
+        &format!("{head}2+000,40,270,250,220,185\n")
+            .replace("station,", "station,location,")
+            .replace("2+000,", "2+000,edge,"),
+        &["--method", "area"],
+    );
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "E77: exit code ({err})");
+    assert!(
+        err.contains("scene field `station 2+000, drop 1`: the AREA method reads interior drops"),
+        "E77: message: {err}"
+    );
+    assert!(!out.exists(), "E77: nothing written");
+    let o = run(
+        &format!("{head}1+000,40,106,94,81,64\n"),
+        &["--max-evaluations", "1"],
+    );
+    let err = String::from_utf8_lossy(&o.stderr);
+    let table = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(4), "E78: exit code ({err})");
+    assert!(
+        err.contains("1 fit(s) did not converge (station 1+000, drop 1): their rows show the best point reached, not a result"),
+        "E78: message: {err}"
+    );
+    assert!(
+        table.contains("NOT CONVERGED (too-many-evaluations)"),
+        "E78: table: {table}"
+    );
+    let csv = std::fs::read_to_string(out.join("backcalc.csv")).expect("E78: files written");
+    assert!(csv.contains(",false,too-many-evaluations"), "E78: {csv}");
+}

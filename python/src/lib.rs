@@ -599,6 +599,85 @@ fn design(
     json(&d.reported())
 }
 
+/// `liftoff backcalc`: backcalc.json (the survey, SI) of the drops in `basins` (the basin file's
+/// CSV text; `source` names it in errors) on the template scene. `spec` is the JSON of
+/// {"method", "fit", "contact", "elements", "seating", "static_k_factor", "max_evaluations"},
+/// the command line's flags, each optional.
+#[pyfunction]
+#[pyo3(signature = (kind, text, options, basins, source_name, spec, progress=None))]
+#[allow(clippy::too_many_arguments)]
+fn backcalc(
+    py: Python<'_>,
+    kind: &str,
+    text: &str,
+    options: &str,
+    basins: &str,
+    source_name: &str,
+    spec: &str,
+    progress: Option<&Bound<'_, PyAny>>,
+) -> PyResult<String> {
+    use liftoff::backcalc::{BackcalcMethod, FitOptions, SurveyOptions, Unknown};
+    use liftoff::choice::Choice;
+    use liftoff::method::Contact;
+    #[derive(serde::Deserialize)]
+    #[serde(deny_unknown_fields)]
+    struct Spec {
+        method: Option<String>,
+        fit: Option<Vec<String>>,
+        contact: Option<String>,
+        elements: Option<[usize; 2]>,
+        seating: Option<usize>,
+        static_k_factor: Option<f64>,
+        max_evaluations: Option<usize>,
+    }
+    fn word<T: Choice>(field: &str, w: &str) -> liftoff::Result<T> {
+        T::from_name(w).ok_or_else(|| {
+            Error::invalid(
+                field,
+                format!("`{w}` is not one of {}", T::names().join(", ")),
+            )
+        })
+    }
+    let s = run(py, progress, |m| {
+        let spec: Spec =
+            serde_json::from_str(spec).map_err(|e| Error::invalid("backcalc", e.to_string()))?;
+        let defaults = SurveyOptions::default();
+        let options_fit = FitOptions {
+            unknowns: match &spec.fit {
+                Some(v) => v
+                    .iter()
+                    .map(|w| word::<Unknown>("fit", w))
+                    .collect::<liftoff::Result<_>>()?,
+                None => defaults.fit.unknowns.clone(),
+            },
+            contact: spec
+                .contact
+                .as_deref()
+                .map(|w| word::<Contact>("contact", w))
+                .transpose()?,
+            elements: spec.elements,
+            max_evaluations: spec.max_evaluations.unwrap_or(defaults.fit.max_evaluations),
+        };
+        let survey_options = SurveyOptions {
+            method: spec
+                .method
+                .as_deref()
+                .map(|w| word::<BackcalcMethod>("method", w))
+                .transpose()?
+                .unwrap_or(defaults.method),
+            fit: options_fit,
+            seating: spec.seating.unwrap_or(0),
+            static_k_factor: spec.static_k_factor.unwrap_or(defaults.static_k_factor),
+        };
+        let drops = liftoff::backcalc::read_basins(basins, source_name)?;
+        let mut file = source(kind, text).parse()?;
+        Overrides::from_json(options)?.apply(&mut file);
+        file.validate()?;
+        liftoff::backcalc::survey(&file, &drops, &survey_options, m)
+    })?;
+    json(&s)
+}
+
 /// The AREA method on one basin (`liftoff::backcalc::area_method`): (AREA m, ℓ m, subgrade
 /// modulus — k N/m³ or E_s Pa —, slab modulus Pa). `soil_poisson` None: a dense liquid;
 /// a value: an elastic solid of that Poisson's ratio.
@@ -737,6 +816,7 @@ fn _liftoff(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(damage_merge, m)?)?;
     m.add_function(wrap_pyfunction!(design, m)?)?;
     m.add_function(wrap_pyfunction!(area_method, m)?)?;
+    m.add_function(wrap_pyfunction!(backcalc, m)?)?;
     m.add_function(wrap_pyfunction!(stability_rows, m)?)?;
     m.add_function(wrap_pyfunction!(_panic_for_tests, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;

@@ -41,7 +41,7 @@ pub struct Basin {
 }
 
 /// What the AREA method finds.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct AreaResult {
     /// The basin's AREA, m (÷ 0.0254 for inches).
     pub area: f64,

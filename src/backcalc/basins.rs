@@ -398,12 +398,6 @@ pub fn read_basins(text: &str, source: &str) -> Result<Vec<Drop>> {
     Ok(drops)
 }
 
-/// The drops without the first `seating` of each station (the seating drops that bed the plate
-/// in, which a survey records but does not analyse).
-pub fn discard_seating(drops: Vec<Drop>, seating: usize) -> Vec<Drop> {
-    drops.into_iter().filter(|d| d.drop > seating).collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -421,7 +415,6 @@ mod tests {
         assert!((d[1].basin.load - 5e4).abs() < 1e-9);
         assert!((d[0].basin.deflections[3] - 60e-6).abs() < 1e-15);
         assert!((d[0].basin.offsets[1] - 0.305).abs() < 1e-15);
-        assert_eq!(discard_seating(d, 1).len(), 1);
     }
 
     #[test]

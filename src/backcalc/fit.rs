@@ -33,7 +33,7 @@
 //! the modulus, symmetric in its logarithm, where the model is nearly linear. With as many
 //! sensors as unknowns there is no interval.
 
-use super::area::{area_method, AREA_OFFSETS};
+use super::area::{area_method, AreaResult, AREA_OFFSETS};
 use super::basins::{Drop, Location};
 use super::infinite::Subgrade;
 use crate::entry::{run, Outcome};
@@ -481,9 +481,10 @@ fn prepare<'m>(
     })
 }
 
-/// The AREA method's start for an interior drop with the AREA sensors on springs or a solid:
-/// the subgrade's and the slab's moduli, in the order of `targets`.
-fn area_start(template: &SceneFile, drop: &Drop, targets: &[Target]) -> Option<Vec<f64>> {
+/// The AREA method's reading of `drop` on the template's slab and soil, where it applies: an
+/// interior drop with the four AREA sensors, on springs (dense liquid) or a half-space (elastic
+/// solid).
+pub fn area_reading(template: &SceneFile, drop: &Drop) -> Option<AreaResult> {
     if drop.location != Location::Interior {
         return None;
     }
@@ -500,7 +501,12 @@ fn area_start(template: &SceneFile, drop: &Drop, targets: &[Target]) -> Option<V
     if !AREA_OFFSETS.iter().all(|&o| has(o)) {
         return None;
     }
-    let r = area_method(&drop.basin, plate.thickness, plate.poissons_ratio, subgrade).ok()?;
+    area_method(&drop.basin, plate.thickness, plate.poissons_ratio, subgrade).ok()
+}
+
+/// The AREA reading as the fit's start, in the order of `targets`.
+fn area_start(template: &SceneFile, drop: &Drop, targets: &[Target]) -> Option<Vec<f64>> {
+    let r = area_reading(template, drop)?;
     Some(
         targets
             .iter()
@@ -536,6 +542,12 @@ pub fn fit_drop(
     monitor: &Monitor<'_>,
 ) -> Result<Fit> {
     drop.check()?;
+    if options.max_evaluations == 0 {
+        return Err(Error::invalid(
+            "max_evaluations",
+            "a fit needs at least one evaluation of the model",
+        ));
+    }
     let quiet = monitor.quiet();
     let mut forward = prepare(template, drop, options, &quiet)?;
     let mut started = "template";

@@ -2,18 +2,21 @@
 //! existing slab. `infinite.rs` holds the infinite plate under a disk on a dense liquid or an
 //! elastic solid (the closed forms, as Hankel integrals); `area.rs` the AREA method that
 //! inverts them; `basins.rs` the drops as a CSV file reads them; `fit.rs` the least-squares
-//! fit of a drop on liftoff's own finite model (a template scene), with confidence intervals.
-//! `infinite`, `area` and `basins` import only `error` and `units`; `fit` imports them and the
-//! entry point (`entry::run`) it solves through.
+//! fit of a drop on liftoff's own finite model (a template scene), with confidence intervals;
+//! `survey.rs` every drop of a file, in parallel. `infinite`, `area` and `basins` import only
+//! `error` and `units`; `fit` imports them and the entry point (`entry::run`) it solves
+//! through; `survey` imports `fit`.
 
 pub mod area;
 pub mod basins;
 pub mod fit;
 pub mod infinite;
+pub mod survey;
 
 pub use area::{area_method, AreaResult, Basin, AREA_OFFSETS};
-pub use basins::{discard_seating, read_basins, Drop, Location};
+pub use basins::{read_basins, Drop, Location};
 pub use fit::{
     fit_drop, model_basin, student_t975, Estimate, Fit, FitOptions, Termination, Unknown,
 };
 pub use infinite::{dimensionless_deflection, Subgrade};
+pub use survey::{survey, BackcalcMethod, DropResult, Survey, SurveyOptions};

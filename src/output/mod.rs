@@ -4,6 +4,7 @@
 //! renames them into place only when all were written, so a failed run never leaves a
 //! half-written file or a half-updated directory behind.
 
+pub mod backcalc;
 pub mod chart;
 pub mod combinations;
 pub mod critical;

@@ -41,6 +41,7 @@ __version__ = _core.__version__
 __all__ = [
     "examples",
     "example_text",
+    "backcalc",
     "solve",
     "compare",
     "eps_sweep",
@@ -416,6 +417,105 @@ def area_method(
         float(radius), float(thickness), float(poisson), nu_s)
     return {"area": area, "area_in": area / 0.0254, "ell": ell,
             "subgrade_modulus": modulus, "slab_modulus": slab}
+
+
+def backcalc(
+    basins: Any,
+    scene: Scene,
+    *,
+    method: str = "fit",
+    fit: Sequence[str] = ("subgrade", "slab"),
+    contact: Optional[str] = None,
+    elements: Optional[Sequence[int]] = None,
+    seating: int = 0,
+    static_k_factor: float = 0.5,
+    max_evaluations: int = 60,
+    progress: Any = None,
+) -> Records:
+    """Backcalculate the soil and the slab from deflectometer basins (``liftoff backcalc``).
+
+    ``basins``: a basin file's path, or its CSV text (one row a drop, the units in the column
+    names: README, "Backcalculation"). ``scene``: the template — the slab's size, thickness, ν
+    and joints, and the soil whose modulus is fitted. ``method``: ``"fit"`` (least squares on
+    liftoff's model, with the AREA reading beside it) or ``"area"``; ``fit``: the unknowns,
+    ``"subgrade"`` (the soil's ``modulus`` k, or its ``youngs_modulus``) and ``"slab"`` (E);
+    ``contact``: ``"bonded"`` or ``"unbonded"`` (default: the template's); ``elements``:
+    (NX, NY) (default: the template's counts refined to elements under 0.95 of the plate's
+    radius); ``seating``: drops discarded at the start of each station; ``static_k_factor``:
+    static over dynamic k (AASHTO 1993: 0.5).
+
+    Returns :class:`Records`, one per drop (SI: N/m³, Pa, m): ``station``, ``drop``,
+    ``location``, ``load``, ``subgrade`` with ``subgrade_low`` and ``subgrade_high`` (the 95 %
+    interval), ``slab`` with its interval, ``ell`` with its interval, ``static_k``, the AREA
+    reading (``area_subgrade``, ``area_slab``, ``area_ell``), ``rms``, ``largest``,
+    ``largest_at``, ``solves``, ``converged``, ``termination``, and the basins as NumPy arrays
+    ``offsets``, ``measured`` and ``fitted``. ``meta`` holds the rest of backcalc.json. A fit
+    that did not converge raises :class:`NotConverged`, its ``.solution`` the records (the
+    best points reached).
+    """
+    import os
+
+    import numpy as np
+
+    if isinstance(basins, (str, os.PathLike)) and "\n" not in str(basins):
+        name = os.fspath(basins)
+        try:
+            with open(name, encoding="utf-8") as f:
+                text = f.read()
+        except OSError as e:
+            raise LiftoffIOError(f"cannot read basin file {name}: {e.strerror or e}", "io") from None
+    else:
+        name, text = "basins", str(basins)
+    kind, scene_text = scene_pair(scene)
+    spec = {
+        "method": method,
+        "fit": list(fit),
+        "contact": contact,
+        "elements": None if elements is None else [int(n) for n in elements],
+        "seating": int(seating),
+        "static_k_factor": float(static_k_factor),
+        "max_evaluations": int(max_evaluations),
+    }
+    doc = json.loads(_progress.run(_core.backcalc, progress, kind, scene_text,
+                                   options_json(None, {}), text, name, json.dumps(spec)))
+    rows = []
+    for d in doc.pop("drops"):
+        row: Dict[str, Any] = {k: d[k] for k in ("station", "drop", "location", "load", "static_k")}
+        f, a = d.get("fit"), d.get("area")
+        for what in ("subgrade", "slab"):
+            value = low = high = None
+            if f is not None:
+                e = next((e for e in f["estimates"] if e["unknown"] == what), None)
+                if e is not None:
+                    value = e["value"]
+                    low, high = e["interval"] if e["interval"] else (None, None)
+            elif a is not None:
+                value = a["subgrade_modulus" if what == "subgrade" else "slab_modulus"]
+            row[what], row[f"{what}_low"], row[f"{what}_high"] = value, low, high
+        ell = f.get("ell") if f else None
+        row["ell"] = ell[0] if ell else (a["ell"] if a and f is None else None)
+        row["ell_low"], row["ell_high"] = (ell[1] if ell and ell[1] else (None, None))
+        row["area_subgrade"] = a["subgrade_modulus"] if a else None
+        row["area_slab"] = a["slab_modulus"] if a else None
+        row["area_ell"] = a["ell"] if a else None
+        if f is not None:
+            row.update(rms=f["rms"], largest=f["largest"][0], largest_at=f["largest"][1],
+                       solves=f["solves"], converged=f["converged"],
+                       termination=f["termination"], offsets=np.array(f["offsets"]),
+                       measured=np.array(f["measured"]), fitted=np.array(f["fitted"]))
+        else:
+            row.update(rms=None, largest=None, largest_at=None, solves=0,
+                       converged=a is not None, termination="area", offsets=None,
+                       measured=None, fitted=None)
+        rows.append(row)
+    result = Records(rows, doc)
+    if not doc.get("complete", True):
+        raise NotConverged(
+            f"{len(doc['not_converged'])} fit(s) did not converge ({'; '.join(doc['not_converged'])}):"
+            " their rows show the best point reached, not a result",
+            solution=result,
+        )
+    return result
 
 
 def grid(base: Scene, axes: Mapping[str, Sequence[Any]]) -> Grid:

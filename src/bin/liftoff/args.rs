@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::{Parser, Subcommand};
+use liftoff::backcalc::{BackcalcMethod, Unknown};
 use liftoff::choice::Choice;
 use liftoff::method::{Contact, MethodKind, QpForm, QpSolver, Route, Start};
 use liftoff::model::{ConstraintPoints, SymmetryMode};
@@ -43,6 +44,9 @@ pub(crate) enum Command {
     /// The least slab thickness that carries the scene's traffic: damage runs over a range of
     /// thicknesses (the design curve), the target bracketed and bisected.
     Design(DesignArgs),
+    /// Backcalculate the soil and the slab from deflectometer basins (a CSV file) on a template
+    /// scene: the least-squares fit on liftoff's model with 95 % intervals, or the AREA method.
+    Backcalc(BackcalcArgs),
     /// Regenerate the paper's Figs. 3–7 (SVG and PNG), paper.json and paper.md.
     Paper(PaperArgs),
     /// Write one self-contained HTML page (summary, tables, charts) from an output directory
@@ -67,6 +71,7 @@ impl Command {
             Command::Critical(_) => "critical",
             Command::Damage(_) => "damage",
             Command::Design(_) => "design",
+            Command::Backcalc(_) => "backcalc",
             Command::Paper(_) => "paper",
             Command::Report(_) => "report",
             Command::Example { .. } => "example",
@@ -349,6 +354,48 @@ pub(crate) struct DesignArgs {
     /// Also write report.html (one self-contained page) into --out.
     #[arg(long, requires = "out")]
     pub(crate) report: bool,
+}
+
+/// The flags of `backcalc`.
+#[derive(clap::Args)]
+pub(crate) struct BackcalcArgs {
+    /// Basin file (CSV, one row a drop, the units in the column names: README, "Backcalculation").
+    pub(crate) basins: PathBuf,
+    /// The template scene (TOML, or `example:NAME`): the slab's size, thickness, ν and joints,
+    /// and the soil model whose modulus is fitted; its moduli are where a fit starts when the
+    /// AREA method cannot start it.
+    #[arg(long)]
+    pub(crate) scene: String,
+    /// fit (least squares on liftoff's model, the AREA reading beside it) or area (the AREA
+    /// method alone: interior drops on winkler or half-space templates).
+    #[arg(long, default_value = "fit", value_parser = choice::<BackcalcMethod>())]
+    pub(crate) method: BackcalcMethod,
+    /// The unknowns of the fit, comma-separated: subgrade (the soil's modulus), slab (its E).
+    #[arg(long, value_delimiter = ',', default_value = "subgrade,slab", value_parser = choice::<Unknown>())]
+    pub(crate) fit: Vec<Unknown>,
+    /// Contact law of the model (overrides the template's [solver] contact).
+    #[arg(long, value_parser = choice::<Contact>())]
+    pub(crate) contact: Option<Contact>,
+    /// Elements over the whole plate, NX,NY (default: the template's counts, multiplied until
+    /// the elements are no wider than 0.95 of the load plate's radius).
+    #[arg(long, value_parser = parse_grid)]
+    pub(crate) elements: Option<[usize; 2]>,
+    /// Seating drops to discard at the start of each station.
+    #[arg(long, default_value_t = 0)]
+    pub(crate) seating: usize,
+    /// At most this many evaluations of the model a fit (its Jacobians not counted); a fit
+    /// that needs more is reported as not converged.
+    #[arg(long, default_value_t = liftoff::backcalc::FitOptions::default().max_evaluations)]
+    pub(crate) max_evaluations: usize,
+    /// Static k over the dynamic k a basin gives (AASHTO 1993: 0.5).
+    #[arg(long, default_value_t = 0.5)]
+    pub(crate) static_k_factor: f64,
+    /// Directory for backcalc.csv, basins.csv, backcalc.json and the charts.
+    #[arg(long)]
+    pub(crate) out: Option<PathBuf>,
+    /// Print backcalc.json to stdout instead of the table.
+    #[arg(long)]
+    pub(crate) json: bool,
 }
 
 fn parse_vary(s: &str) -> Result<[f64; 2], String> {

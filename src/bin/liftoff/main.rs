@@ -15,8 +15,8 @@ use liftoff::study::{self, EpsSweepOptions, TradeoffOptions};
 use liftoff::{Error, ErrorKind, Outcome, Problem, Source};
 
 use args::{
-    Cli, Command, CompareArgs, CriticalArgs, DamageArgs, DesignArgs, EpsSweepArgs, PaperArgs,
-    ReportArgs, SolveArgs, StabilityArgs, TradeoffArgs,
+    BackcalcArgs, Cli, Command, CompareArgs, CriticalArgs, DamageArgs, DesignArgs, EpsSweepArgs,
+    PaperArgs, ReportArgs, SolveArgs, StabilityArgs, TradeoffArgs,
 };
 use failure::{exit, Failure};
 use progress::with_progress;
@@ -35,6 +35,7 @@ fn main() -> ExitCode {
         Command::Critical(args) => critical(args),
         Command::Damage(args) => damage(args),
         Command::Design(args) => design(args),
+        Command::Backcalc(args) => backcalc(args),
         Command::Paper(args) => paper(args),
         Command::Report(args) => report(args),
         Command::Example { name } => example(name.as_deref()),
@@ -392,6 +393,69 @@ fn design(args: DesignArgs) -> Result<(), Failure> {
         return Err(Failure::new(
             exit::SOLVER,
             "some damage runs had passes that did not converge: the design curve is incomplete",
+        ));
+    }
+    Ok(())
+}
+
+fn backcalc(args: BackcalcArgs) -> Result<(), Failure> {
+    let path = args.basins.display().to_string();
+    let text = std::fs::read_to_string(&args.basins).map_err(|source| {
+        Failure::from(Error::Io {
+            path: path.clone(),
+            source,
+        })
+    })?;
+    let drops = liftoff::backcalc::read_basins(&text, &path).map_err(Failure::from)?;
+    let file = Source::from_arg(&args.scene)
+        .parse()
+        .map_err(|e| Failure::in_scene(&args.scene, e))?;
+    // The template as given must be valid before the fits change its moduli and loads.
+    file.validate()
+        .map_err(|e| Failure::in_scene(&args.scene, e))?;
+    let options = liftoff::backcalc::SurveyOptions {
+        method: args.method,
+        fit: liftoff::backcalc::FitOptions {
+            unknowns: args.fit.clone(),
+            contact: args.contact,
+            elements: args.elements,
+            max_evaluations: args.max_evaluations,
+        },
+        seating: args.seating,
+        static_k_factor: args.static_k_factor,
+    };
+    if let Some(dir) = &args.out {
+        output::prepare_dir(dir)?;
+    }
+    let s = with_progress(false, |m| {
+        liftoff::backcalc::survey(&file, &drops, &options, m)
+    })
+    .map_err(|e| Failure::in_scene(&args.scene, e))?;
+    interrupt::check()?;
+    let title = file.title.clone().unwrap_or_else(|| path.clone());
+    let written = match &args.out {
+        Some(dir) => output::backcalc::write_backcalc(dir, &s, &title, file.units)?.len(),
+        None => 0,
+    };
+    if args.json {
+        let json = serde_json::to_string_pretty(&s)
+            .map_err(|e| Failure::new(exit::IO, format!("cannot serialise backcalc.json: {e}")))?;
+        println!("{json}");
+    } else {
+        let files = args.out.as_deref().map(|dir| (written, dir));
+        print!(
+            "{}",
+            output::backcalc::backcalc_table(&title, &s, file.units, files)
+        );
+    }
+    if !s.complete {
+        return Err(Failure::new(
+            exit::SOLVER,
+            format!(
+                "{} fit(s) did not converge ({}): their rows show the best point reached, not a result",
+                s.not_converged.len(),
+                s.not_converged.join("; ")
+            ),
         ));
     }
     Ok(())

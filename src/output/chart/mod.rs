@@ -12,6 +12,8 @@
 //! * `loglog.rs`: [`write_loglog_svg`], series with notes (ε̄ sweep, speed against accuracy);
 //! * `semilog.rs`: [`write_semilogx`], series against a logarithmic x and a linear y (a joint's
 //!   LTE against its stiffness);
+//! * `basins.rs`: [`write_basins`], measured against fitted deflection basins, and
+//!   [`write_moduli`], backcalculated moduli along a survey (`liftoff backcalc`);
 //! * `category.rs`: [`write_category_map_svg`], run outcomes over a parameter grid (stability);
 //! * `style.rs`: the one colour and line table; `axis.rs`: ranges and tick labels; this file:
 //!   the font, titles, file writing and text boxes they share.
@@ -21,6 +23,7 @@
 //! `"sans-serif"`, so the charts render identically on machines without system fonts.
 
 mod axis;
+mod basins;
 mod category;
 mod comparison;
 mod contact;
@@ -44,6 +47,7 @@ use plotters::style::FontStyle;
 
 use crate::error::{Error, Result};
 
+pub use basins::{write_basins, write_moduli, BasinChart, BasinCurve, ModuliChart, ModulusSeries};
 pub use category::write_category_map_svg;
 pub(crate) use comparison::{write_profile_comparison, Curve};
 pub use contact::{write_contact_map, write_field_map, MapValues};

@@ -1,0 +1,85 @@
+//! How `examples/fwd-basins.csv` was made: the bundled survey's basins are synthetic, computed
+//! by liftoff's own model of `example:fwd-panel` at known moduli, with 1 µm of Gaussian noise
+//! on every sensor — so that what `liftoff backcalc` finds can be held against the truth. Three
+//! stations of two drops each (a seating drop, then the test drop), interior, edge and corner;
+//! the subgrade softer at station 3+000.
+//!
+//! `cargo run --release --example fwd_basins > examples/fwd-basins.csv`
+
+use liftoff::backcalc::{model_basin, Basin, Drop, FitOptions, Location};
+use liftoff::scene::SceneFile;
+use liftoff::Monitor;
+
+const SENSORS_MM: [f64; 9] = [
+    0.0, 203.0, 305.0, 457.0, 610.0, 914.0, 1219.0, 1524.0, 1829.0,
+];
+
+fn main() -> Result<(), liftoff::Error> {
+    let template = SceneFile::example("fwd-panel")?;
+    // xorshift and Box–Muller, seeded: the file is the same on every run.
+    let mut state: u64 = 0x9e37_79b9_7f4a_7c15;
+    let mut normal = move || {
+        let mut u = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            ((state >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+        };
+        let (a, b) = (u(), u());
+        (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos()
+    };
+    println!(
+        "# Synthetic basins: liftoff's model of example:fwd-panel (bonded, 48 × 48 elements) at"
+    );
+    println!(
+        "# E = 32 GPa and k = 70 MN/m³ (station 3+000: k = 45 MN/m³), 1 µm of Gaussian noise;"
+    );
+    println!("# made by `cargo run --release --example fwd_basins`. Drop 1 of each station seats the plate.");
+    let header: Vec<String> = SENSORS_MM.iter().map(|o| format!("d{o:.0}mm_um")).collect();
+    println!(
+        "station,drop,location,load_kN,radius_mm,{}",
+        header.join(",")
+    );
+    for (station, location, k) in [
+        ("1+000", Location::Interior, 7.0e7),
+        ("2+000", Location::Edge, 7.0e7),
+        ("3+000", Location::Corner, 4.5e7),
+    ] {
+        let mut t = template.clone();
+        if let Some(p) = t.plate.as_mut() {
+            p.youngs_modulus = 32e9;
+        }
+        if let Some(f) = t.foundation.as_mut() {
+            f.soil.insert(
+                "modulus".into(),
+                liftoff::foundation::soil::KeyValue::Number(k),
+            );
+        }
+        for (drop, load) in [(1, 27.0e3), (2, 40.0e3)] {
+            let d = Drop {
+                station: station.into(),
+                drop,
+                location,
+                basin: Basin {
+                    load,
+                    radius: 0.15,
+                    offsets: SENSORS_MM.iter().map(|o| o / 1e3).collect(),
+                    deflections: Vec::new(),
+                },
+                at: None,
+                direction: 0.0,
+            };
+            let w = model_basin(&t, &d, &FitOptions::default(), &Monitor::NONE)?;
+            let cells: Vec<String> = w
+                .iter()
+                .map(|w| format!("{:.1}", 1e6 * w + normal()))
+                .collect();
+            println!(
+                "{station},{drop},{location},{:.1},150,{}",
+                load / 1e3,
+                cells.join(",")
+            );
+        }
+    }
+    Ok(())
+}
