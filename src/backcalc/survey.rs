@@ -154,18 +154,21 @@ pub fn survey(
     let results: Vec<DropResult> = kept
         .par_iter()
         .map(|d| -> Result<DropResult> {
-            let area = area_reading(template, d);
-            let fit = match options.method {
+            let (area, fit) = match options.method {
                 BackcalcMethod::Area => {
+                    let area = area_reading(template, d);
                     if area.is_none() {
                         return Err(Error::invalid(
                             d.label(),
                             "the AREA method reads interior drops with sensors at 0, 305, 610 and 914 mm on a winkler or half-space template: use --method fit for this drop",
                         ));
                     }
-                    None
+                    (area, None)
                 }
-                BackcalcMethod::Fit => Some(fit_drop(template, d, &options.fit, &inner)?),
+                BackcalcMethod::Fit => {
+                    let f = fit_drop(template, d, &options.fit, &inner)?;
+                    (f.area, Some(f))
+                }
             };
             let dynamic_k = match &fit {
                 Some(f) => f.estimate(Unknown::Subgrade).map(|e| e.value),

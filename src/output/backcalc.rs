@@ -321,8 +321,8 @@ pub fn backcalc_table(
             r.location.name(),
             show(value(r, Unknown::Subgrade), sgu),
             show(value(r, Unknown::Slab), u.modulus),
-            f.and_then(|f| f.ell)
-                .map_or("-".into(), |e| format!("{:.3}", u.length.of(e.0))),
+            f.map_or(r.area.map(|a| a.ell), |f| f.ell.map(|e| e.0))
+                .map_or("-".into(), |e| format!("{:.3}", u.length.of(e))),
             f.map_or("-".into(), |f| format!("{:.2}", u.deflection.of(f.rms))),
             r.area
                 .map_or("-".into(), |a| short(sgu.of(a.subgrade_modulus))),
