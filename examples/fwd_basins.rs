@@ -1,14 +1,24 @@
-//! How `examples/fwd-basins.csv` was made: the bundled survey's basins are synthetic, computed
-//! by liftoff's own model of `example:fwd-panel` at known moduli, with 1 µm of Gaussian noise
-//! on every sensor — so that what `liftoff backcalc` finds can be held against the truth. Three
-//! stations of two drops each (a seating drop, then the test drop), interior, edge and corner;
-//! the subgrade softer at station 3+000.
+//! How `examples/fwd-basins.csv` and `examples/fwd-void.csv` were made: the bundled surveys'
+//! basins are synthetic, computed by liftoff's own model of `example:fwd-panel` at known
+//! moduli, with 1 µm of Gaussian noise on every sensor — so that what `liftoff backcalc` finds
+//! can be held against the truth.
+//!
+//! - fwd-basins.csv: three stations of two drops each (a seating drop, then the test drop),
+//!   interior, edge and corner; the subgrade softer at station 3+000.
+//! - fwd-void.csv (argument `void`): two corners, each with drops of 27 (seating), 40, 53 and
+//!   71 kN, in unbonded contact on the panel's self-weight: a sound one, and one over a 0.5 mm
+//!   void 0.6 m × 0.6 m under the corner.
 //!
 //! `cargo run --release --example fwd_basins > examples/fwd-basins.csv`
+//! `cargo run --release --example fwd_basins -- void > examples/fwd-void.csv`
 
 use liftoff::backcalc::{model_basin, Basin, Drop, FitOptions, Location};
 use liftoff::scene::SceneFile;
 use liftoff::Monitor;
+
+/// A station: its name, where its drops are, k (N/m³), a void's depth under the corner (m),
+/// the drops' loads (N).
+type Station = (&'static str, Location, f64, Option<f64>, Vec<f64>);
 
 const SENSORS_MM: [f64; 9] = [
     0.0, 203.0, 305.0, 457.0, 610.0, 914.0, 1219.0, 1524.0, 1829.0,
@@ -28,23 +38,52 @@ fn main() -> Result<(), liftoff::Error> {
         let (a, b) = (u(), u());
         (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos()
     };
-    println!(
-        "# Synthetic basins: liftoff's model of example:fwd-panel (bonded, 48 × 48 elements) at"
-    );
-    println!(
-        "# E = 32 GPa and k = 70 MN/m³ (station 3+000: k = 45 MN/m³), 1 µm of Gaussian noise;"
-    );
-    println!("# made by `cargo run --release --example fwd_basins`. Drop 1 of each station seats the plate.");
+    let void = std::env::args().nth(1).as_deref() == Some("void");
+    let stations: Vec<Station> = if void {
+        println!(
+            "# Synthetic basins: liftoff's model of example:fwd-panel in unbonded contact on its"
+        );
+        println!(
+            "# self-weight, E = 32 GPa, k = 45 MN/m³, 1 µm of Gaussian noise; corner 5+000 over a"
+        );
+        println!(
+            "# 0.5 mm void, 0.6 m × 0.6 m; `cargo run --release --example fwd_basins -- void`."
+        );
+        println!("# Drop 1 of each station seats the plate.");
+        vec![
+            (
+                "4+000",
+                Location::Corner,
+                4.5e7,
+                None,
+                vec![27e3, 40e3, 53e3, 71e3],
+            ),
+            (
+                "5+000",
+                Location::Corner,
+                4.5e7,
+                Some(5e-4),
+                vec![27e3, 40e3, 53e3, 71e3],
+            ),
+        ]
+    } else {
+        println!("# Synthetic basins: liftoff's model of example:fwd-panel (bonded, 48 × 48 elements) at");
+        println!(
+            "# E = 32 GPa and k = 70 MN/m³ (station 3+000: k = 45 MN/m³), 1 µm of Gaussian noise;"
+        );
+        println!("# made by `cargo run --release --example fwd_basins`. Drop 1 of each station seats the plate.");
+        vec![
+            ("1+000", Location::Interior, 7.0e7, None, vec![27e3, 40e3]),
+            ("2+000", Location::Edge, 7.0e7, None, vec![27e3, 40e3]),
+            ("3+000", Location::Corner, 4.5e7, None, vec![27e3, 40e3]),
+        ]
+    };
     let header: Vec<String> = SENSORS_MM.iter().map(|o| format!("d{o:.0}mm_um")).collect();
     println!(
         "station,drop,location,load_kN,radius_mm,{}",
         header.join(",")
     );
-    for (station, location, k) in [
-        ("1+000", Location::Interior, 7.0e7),
-        ("2+000", Location::Edge, 7.0e7),
-        ("3+000", Location::Corner, 4.5e7),
-    ] {
+    for (station, location, k, depth, loads) in stations {
         let mut t = template.clone();
         if let Some(p) = t.plate.as_mut() {
             p.youngs_modulus = 32e9;
@@ -55,10 +94,20 @@ fn main() -> Result<(), liftoff::Error> {
                 liftoff::foundation::soil::KeyValue::Number(k),
             );
         }
-        for (drop, load) in [(1, 27.0e3), (2, 40.0e3)] {
+        if void {
+            t.solver.contact = liftoff::method::Contact::Unbonded;
+        }
+        if let Some(d) = depth {
+            t.void.push(liftoff::scene::VoidSpec {
+                x: [-2.3, -1.7],
+                y: [-1.85, -1.25],
+                depth: d,
+            });
+        }
+        for (i, load) in loads.into_iter().enumerate() {
             let d = Drop {
                 station: station.into(),
-                drop,
+                drop: i + 1,
                 location,
                 basin: Basin {
                     load,
@@ -75,7 +124,8 @@ fn main() -> Result<(), liftoff::Error> {
                 .map(|w| format!("{:.1}", 1e6 * w + normal()))
                 .collect();
             println!(
-                "{station},{drop},{location},{:.1},150,{}",
+                "{station},{},{location},{:.1},150,{}",
+                i + 1,
                 load / 1e3,
                 cells.join(",")
             );

@@ -735,3 +735,39 @@ fn backcalc_recovers_the_bundled_surveys_moduli_and_writes_its_files() {
     assert_eq!(area.status.code(), Some(2), "{}", stderr(&area));
     assert!(stderr(&area).contains("station 2+000, drop 1`: the AREA method reads interior drops"));
 }
+
+/// The intercept method on the bundled void survey (`examples/fwd-void.csv`: liftoff's model in
+/// unbonded contact, two corners with drops of 40, 53 and 71 kN after a seating drop, one over
+/// a 0.5 mm void): intercepts.csv flags the voided corner above 2 mils and passes the sound
+/// one, whose line passes within a few µm of the origin (1 µm of noise on each drop).
+#[test]
+fn backcalc_flags_the_voided_corner_by_its_intercept() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let out = dir.path().join("void");
+    let basins = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/fwd-void.csv");
+    let o = liftoff(&[
+        "backcalc",
+        basins.to_str().expect("utf-8"),
+        "--scene",
+        "example:fwd-panel",
+        "--contact",
+        "unbonded",
+        "--seating",
+        "1",
+        "--out",
+        out.to_str().expect("utf-8"),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stdout(&o).contains("5+000 (corner, 3 loads): zero-load intercept"),
+        "{}",
+        stdout(&o)
+    );
+    let (h, rows) = read_csv(&out.join("intercepts.csv"));
+    assert_eq!(rows.len(), 2);
+    let (sound, voided) = (&rows[0], &rows[1]);
+    assert_eq!(field(&h, sound, "void"), "false");
+    assert!(number(&h, sound, "intercept [µm]").abs() < 10.0);
+    assert_eq!(field(&h, voided, "void"), "true");
+    assert!(number(&h, voided, "intercept [µm]") > 50.8);
+}

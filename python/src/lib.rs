@@ -601,7 +601,8 @@ fn design(
 
 /// `liftoff backcalc`: backcalc.json (the survey, SI) of the drops in `basins` (the basin file's
 /// CSV text; `source` names it in errors) on the template scene. `spec` is the JSON of
-/// {"method", "fit", "contact", "elements", "seating", "static_k_factor", "max_evaluations"},
+/// {"method", "fit", "contact", "elements", "seating", "static_k_factor", "max_evaluations",
+/// "void_threshold" (m)},
 /// the command line's flags, each optional.
 #[pyfunction]
 #[pyo3(signature = (kind, text, options, basins, source_name, spec, progress=None))]
@@ -629,6 +630,7 @@ fn backcalc(
         seating: Option<usize>,
         static_k_factor: Option<f64>,
         max_evaluations: Option<usize>,
+        void_threshold: Option<f64>,
     }
     fn word<T: Choice>(field: &str, w: &str) -> liftoff::Result<T> {
         T::from_name(w).ok_or_else(|| {
@@ -668,6 +670,7 @@ fn backcalc(
             fit: options_fit,
             seating: spec.seating.unwrap_or(0),
             static_k_factor: spec.static_k_factor.unwrap_or(defaults.static_k_factor),
+            void_threshold: spec.void_threshold.unwrap_or(defaults.void_threshold),
         };
         let drops = liftoff::backcalc::read_basins(basins, source_name)?;
         let mut file = source(kind, text).parse()?;

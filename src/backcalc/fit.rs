@@ -58,9 +58,12 @@ pub enum Unknown {
     Subgrade,
     /// The slab's Young's modulus (Pa), panels of their own modulus keeping their ratio to it.
     Slab,
+    /// The depth (m) of the template's `[[void]]` nearest the drop: its extent is the
+    /// template's, its depth the start. A void's depth acts only in unbonded contact.
+    Void,
 }
 
-crate::choice::names!(Unknown, Subgrade => "subgrade", Slab => "slab");
+crate::choice::names!(Unknown, Subgrade => "subgrade", Slab => "slab", Void => "void");
 
 /// How a fit ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
@@ -190,6 +193,8 @@ struct Target {
     key: String,
     /// The soil's key, for the subgrade.
     soil_key: &'static str,
+    /// The void's index, for a void.
+    void: usize,
 }
 
 /// The drop's model: the template prepared, the sensors placed.
@@ -227,6 +232,11 @@ impl Forward<'_> {
                         for panel in &mut f.panel {
                             panel.youngs_modulus = panel.youngs_modulus.map(|e| e * v / old);
                         }
+                    }
+                }
+                Unknown::Void => {
+                    if let Some(void) = f.void.get_mut(t.void) {
+                        void.depth = v;
                     }
                 }
             }
@@ -426,6 +436,7 @@ fn prepare<'m>(
                     unknown: u,
                     key: format!("foundation.{key}"),
                     soil_key: key,
+                    void: 0,
                 });
                 start.push(soil.number(key).unwrap_or(f64::NAN));
             }
@@ -434,8 +445,42 @@ fn prepare<'m>(
                     unknown: u,
                     key: "plate.youngs_modulus".into(),
                     soil_key: "",
+                    void: 0,
                 });
                 start.push(plate.youngs_modulus);
+            }
+            Unknown::Void => {
+                // The void nearest the plate's centre: distance from the point to the
+                // rectangle.
+                let distance = |v: &crate::scene::VoidSpec| {
+                    let dx = (v.x[0] - at[0]).max(at[0] - v.x[1]).max(0.0);
+                    let dy = (v.y[0] - at[1]).max(at[1] - v.y[1]).max(0.0);
+                    dx.hypot(dy)
+                };
+                let (k, v) = template
+                    .void
+                    .iter()
+                    .enumerate()
+                    .min_by(|a, b| distance(a.1).total_cmp(&distance(b.1)))
+                    .ok_or_else(|| {
+                        Error::invalid(
+                            "void",
+                            "fitting a void needs a [[void]] in the template under the drop: its x and y give the void's extent, its depth where the fit starts",
+                        )
+                    })?;
+                if v.depth.is_nan() || v.depth <= 0.0 {
+                    return Err(Error::invalid(
+                        format!("void[{k}].depth"),
+                        "a fitted void starts from a positive depth (say 0.5 mm)",
+                    ));
+                }
+                targets.push(Target {
+                    unknown: u,
+                    key: format!("void[{k}].depth"),
+                    soil_key: "",
+                    void: k,
+                });
+                start.push(v.depth);
             }
         }
     }
@@ -546,9 +591,11 @@ pub fn fit_drop(
         let s: Vec<f64> = forward
             .targets
             .iter()
-            .map(|t| match t.unknown {
+            .zip(&forward.start)
+            .map(|(t, &own)| match t.unknown {
                 Unknown::Subgrade => a.subgrade_modulus,
                 Unknown::Slab => a.slab_modulus,
+                Unknown::Void => own,
             })
             .collect();
         if s.iter().all(|v| v.is_finite() && *v > 0.0) {

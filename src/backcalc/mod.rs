@@ -19,4 +19,6 @@ pub use fit::{
     fit_drop, model_basin, student_t975, Estimate, Fit, FitOptions, Termination, Unknown,
 };
 pub use infinite::{dimensionless_deflection, Subgrade};
-pub use survey::{survey, BackcalcMethod, DropResult, Survey, SurveyOptions};
+pub use survey::{
+    intercepts, survey, BackcalcMethod, DropResult, Intercept, Survey, SurveyOptions,
+};

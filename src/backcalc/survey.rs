@@ -2,6 +2,15 @@
 //! alone, or by the fit on liftoff's model with the AREA estimate beside it — in parallel, one
 //! progress event a drop.
 //!
+//! **Voids by the intercept method.** At a station with drops of two or more loads, the
+//! deflection under the plate is fitted by a straight line in the load (least squares); a
+//! slab that bears on its soil gives a line through the origin, one over a void sags into it
+//! before it bears, and the line cuts the deflection axis above the origin — by the part of the
+//! gap the slab's weight had not closed before the first drop, less than the void's depth. An
+//! intercept above `void_threshold` — 2 mils (50.8 µm), the AASHTO Guide's (1993, Part III)
+//! criterion for corners — flags a void. The method is meant for corner and joint drops at
+//! several heights; it is reported at every station with several loads.
+//!
 //! **Static k.** A deflectometer's load is a pulse of some 30 ms: the k a basin gives is the
 //! dynamic one. The AASHTO Guide (1993, Part III, §5.4.5) divides it by 2 for the static k of
 //! design; `static_k_factor` holds that 0.5 and is reported beside every k (on a soil fitted as
@@ -40,6 +49,8 @@ pub struct SurveyOptions {
     pub seating: usize,
     /// Static k over the dynamic k a basin gives (AASHTO 1993: 0.5).
     pub static_k_factor: f64,
+    /// The intercept above which a station's load–deflection line flags a void, m (2 mils).
+    pub void_threshold: f64,
 }
 
 impl Default for SurveyOptions {
@@ -49,6 +60,7 @@ impl Default for SurveyOptions {
             fit: FitOptions::default(),
             seating: 0,
             static_k_factor: 0.5,
+            void_threshold: 2e-3 * crate::units::INCH,
         }
     }
 }
@@ -84,6 +96,62 @@ impl DropResult {
     }
 }
 
+/// A station's load–deflection line: the intercept method for voids.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Intercept {
+    /// The station.
+    pub station: String,
+    /// Where its drops were (the first drop's location).
+    pub location: Location,
+    /// Its drops, seating drops left out.
+    pub drops: usize,
+    /// The line's deflection at zero load, m.
+    pub intercept: f64,
+    /// The line's deflection per unit load, m/N.
+    pub slope: f64,
+    /// The intercept is above the threshold.
+    pub void: bool,
+}
+
+/// The intercept method at every station whose drops have two loads or more (see the module's
+/// description): the deflection at the sensor nearest the plate against the load.
+pub fn intercepts(drops: &[&Drop], threshold: f64) -> Vec<Intercept> {
+    let mut stations: Vec<&str> = Vec::new();
+    for d in drops {
+        if !stations.contains(&d.station.as_str()) {
+            stations.push(&d.station);
+        }
+    }
+    stations
+        .into_iter()
+        .filter_map(|name| {
+            let at: Vec<&&Drop> = drops.iter().filter(|d| d.station == name).collect();
+            let n = at.len() as f64;
+            let (mp, md) = at.iter().fold((0.0, 0.0), |(p, d), x| {
+                (p + x.basin.load / n, d + x.basin.deflections[0] / n)
+            });
+            let (sxx, sxy) = at.iter().fold((0.0, 0.0), |(xx, xy), x| {
+                let dp = x.basin.load - mp;
+                (xx + dp * dp, xy + dp * (x.basin.deflections[0] - md))
+            });
+            // Two loads or more: the spread of the loads is not round-off.
+            if at.len() < 2 || sxx <= (1e-9 * mp).powi(2) * n {
+                return None;
+            }
+            let slope = sxy / sxx;
+            let intercept = md - slope * mp;
+            Some(Intercept {
+                station: name.to_string(),
+                location: at[0].location,
+                drops: at.len(),
+                intercept,
+                slope,
+                void: intercept > threshold,
+            })
+        })
+        .collect()
+}
+
 /// A survey's drops.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Survey {
@@ -95,6 +163,10 @@ pub struct Survey {
     pub discarded: usize,
     /// The static factor applied to k.
     pub static_k_factor: f64,
+    /// The intercept method's lines, at the stations with drops of two loads or more.
+    pub intercepts: Vec<Intercept>,
+    /// The intercept above which a void is flagged, m.
+    pub void_threshold: f64,
     /// The template soil's key the subgrade's modulus is (`modulus`, `youngs_modulus`).
     pub subgrade_key: String,
     /// Every fit converged: otherwise `not_converged` names the drops, and no total is
@@ -118,6 +190,15 @@ pub fn survey(
     monitor: &Monitor<'_>,
 ) -> Result<Survey> {
     let t0 = std::time::Instant::now();
+    if !(options.void_threshold.is_finite() && options.void_threshold >= 0.0) {
+        return Err(Error::invalid(
+            "void_threshold",
+            format!(
+                "must be a deflection of 0 or more (AASHTO 1993: 2 mils, 50.8 µm), got {} m",
+                options.void_threshold
+            ),
+        ));
+    }
     if !(options.static_k_factor.is_finite() && options.static_k_factor > 0.0) {
         return Err(Error::invalid(
             "static_k_factor",
@@ -197,6 +278,8 @@ pub fn survey(
         .map(|r| format!("station {}, drop {}", r.station, r.drop))
         .collect();
     Ok(Survey {
+        intercepts: intercepts(&kept, options.void_threshold),
+        void_threshold: options.void_threshold,
         method: options.method,
         discarded: drops.len() - kept.len(),
         static_k_factor: options.static_k_factor,

@@ -1,6 +1,7 @@
 //! What `liftoff backcalc` writes and prints: backcalc.csv (a row a drop: the moduli with their
-//! 95 % intervals, ℓ, the AREA reading, the misfit, whether the fit converged), basins.csv (a
-//! row a sensor: measured, fitted, misfit), backcalc.json (the survey, SI), and the charts
+//! 95 % intervals, ℓ, a fitted void's depth, the AREA reading, the misfit, whether the fit
+//! converged), basins.csv (a row a sensor: measured, fitted, misfit), intercepts.csv (the
+//! intercept method's line at each station with several loads), backcalc.json (the survey, SI), and the charts
 //! basins.svg/png (measured against fitted, the first eight drops) and moduli.svg/png (the
 //! moduli along the survey). Values are in the template's unit system: SI as MPa/m, MPa, µm,
 //! mm and kN; US as pci, ksi, mils, in and lbf.
@@ -70,14 +71,10 @@ fn subgrade(s: &Survey, u: &Units) -> (&'static str, Unit) {
 fn value(r: &DropResult, what: Unknown) -> Option<(f64, Option<[f64; 2]>)> {
     match &r.fit {
         Some(f) => f.estimate(what).map(|e| (e.value, e.interval)),
-        None => r.area.map(|a| {
-            (
-                match what {
-                    Unknown::Subgrade => a.subgrade_modulus,
-                    Unknown::Slab => a.slab_modulus,
-                },
-                None,
-            )
+        None => r.area.and_then(|a| match what {
+            Unknown::Subgrade => Some((a.subgrade_modulus, None)),
+            Unknown::Slab => Some((a.slab_modulus, None)),
+            Unknown::Void => None,
         }),
     }
 }
@@ -89,7 +86,7 @@ fn opt(v: Option<f64>) -> String {
 fn csv_drops(s: &Survey, u: &Units) -> String {
     let (sg, sgu) = subgrade(s, u);
     let mut out = format!(
-        "station,drop,location,load [{l}],{sg} [{k}],{sg}_low [{k}],{sg}_high [{k}],static_k [{ku}],E [{m}],E_low [{m}],E_high [{m}],ell [{len}],area_{sg} [{k}],area_E [{m}],area_ell [{len}],rms [{d}],largest [{d}],largest_at [{o}],solves,converged,termination\n",
+        "station,drop,location,load [{l}],{sg} [{k}],{sg}_low [{k}],{sg}_high [{k}],static_k [{ku}],E [{m}],E_low [{m}],E_high [{m}],ell [{len}],void [{d}],void_low [{d}],void_high [{d}],area_{sg} [{k}],area_E [{m}],area_ell [{len}],rms [{d}],largest [{d}],largest_at [{o}],solves,converged,termination\n",
         l = u.load.0,
         k = sgu.0,
         ku = u.k.0,
@@ -101,13 +98,14 @@ fn csv_drops(s: &Survey, u: &Units) -> String {
     for r in &s.drops {
         let sub = value(r, Unknown::Subgrade);
         let slab = value(r, Unknown::Slab);
+        let void = value(r, Unknown::Void);
         let iv = |v: Option<(f64, Option<[f64; 2]>)>, i: usize, unit: Unit| {
             opt(v.and_then(|(_, iv)| iv).map(|iv| unit.of(iv[i])))
         };
         let f = r.fit.as_ref();
         let _ = writeln!(
             out,
-            "{},{},{},{:.6e},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{:.6e},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.station,
             r.drop,
             r.location,
@@ -120,6 +118,9 @@ fn csv_drops(s: &Survey, u: &Units) -> String {
             iv(slab, 0, u.modulus),
             iv(slab, 1, u.modulus),
             opt(f.and_then(|f| f.ell).map(|e| u.length.of(e.0))),
+            opt(void.map(|v| u.deflection.of(v.0))),
+            iv(void, 0, u.deflection),
+            iv(void, 1, u.deflection),
             opt(r.area.map(|a| sgu.of(a.subgrade_modulus))),
             opt(r.area.map(|a| u.modulus.of(a.slab_modulus))),
             opt(r.area.map(|a| u.length.of(a.ell))),
@@ -159,6 +160,27 @@ fn csv_basins(s: &Survey, u: &Units) -> String {
     out
 }
 
+fn csv_intercepts(s: &Survey, u: &Units) -> String {
+    let mut out = format!(
+        "station,location,drops,intercept [{d}],slope [{d}/{l}],void\n",
+        d = u.deflection.0,
+        l = u.load.0
+    );
+    for i in &s.intercepts {
+        let _ = writeln!(
+            out,
+            "{},{},{},{:.6e},{:.6e},{}",
+            i.station,
+            i.location,
+            i.drops,
+            u.deflection.of(i.intercept),
+            u.deflection.of(i.slope * u.load.1),
+            i.void
+        );
+    }
+    out
+}
+
 /// The drops the basins chart draws.
 const CHARTED: usize = 8;
 
@@ -176,6 +198,9 @@ pub fn write_backcalc(
     let json = serde_json::to_string_pretty(s)
         .map_err(|e| Error::numerical("backcalc.json", format!("cannot serialise: {e}")))?;
     st.write_text("backcalc.json", &json)?;
+    if !s.intercepts.is_empty() {
+        st.write_text("intercepts.csv", &csv_intercepts(s, &u))?;
+    }
     if s.drops.iter().any(|r| r.fit.is_some()) {
         st.write_text("basins.csv", &csv_basins(s, &u))?;
         let curves: Vec<BasinCurve> = s
@@ -330,6 +355,43 @@ pub fn backcalc_table(
                 Some(f) if f.converged => "converged".to_string(),
                 Some(f) => format!("NOT CONVERGED ({}): best point shown", f.termination),
                 None => "AREA".into(),
+            }
+        );
+    }
+    for r in &s.drops {
+        if let Some((v, iv)) = value(r, Unknown::Void) {
+            let _ = writeln!(
+                out,
+                "  {} drop {}: void depth {} {}{}",
+                r.station,
+                r.drop,
+                short(u.deflection.of(v)),
+                u.deflection.0,
+                iv.map_or(String::new(), |[a, b]| format!(
+                    " (95 %: {}–{})",
+                    short(u.deflection.of(a)),
+                    short(u.deflection.of(b))
+                ))
+            );
+        }
+    }
+    for i in &s.intercepts {
+        let _ = writeln!(
+            out,
+            "  {} ({}, {} loads): zero-load intercept {} {}{}",
+            i.station,
+            i.location,
+            i.drops,
+            short(u.deflection.of(i.intercept)),
+            u.deflection.0,
+            if i.void {
+                format!(
+                    " > {} {}: VOID",
+                    short(u.deflection.of(s.void_threshold)),
+                    u.deflection.0
+                )
+            } else {
+                " (no void)".into()
             }
         );
     }

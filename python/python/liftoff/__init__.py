@@ -430,6 +430,7 @@ def backcalc(
     seating: int = 0,
     static_k_factor: float = 0.5,
     max_evaluations: int = 60,
+    void_threshold: float = 50.8e-6,
     progress: Any = None,
 ) -> Records:
     """Backcalculate the soil and the slab from deflectometer basins (``liftoff backcalc``).
@@ -438,18 +439,23 @@ def backcalc(
     names: README, "Backcalculation"). ``scene``: the template — the slab's size, thickness, ν
     and joints, and the soil whose modulus is fitted. ``method``: ``"fit"`` (least squares on
     liftoff's model, with the AREA reading beside it) or ``"area"``; ``fit``: the unknowns,
-    ``"subgrade"`` (the soil's ``modulus`` k, or its ``youngs_modulus``) and ``"slab"`` (E);
+    ``"subgrade"`` (the soil's ``modulus`` k, or its ``youngs_modulus``), ``"slab"`` (E) and
+    ``"void"`` (the depth of the template's ``[[void]]`` nearest the drop, unbonded contact);
     ``contact``: ``"bonded"`` or ``"unbonded"`` (default: the template's); ``elements``:
     (NX, NY) (default: the template's counts refined to elements under 0.95 of the plate's
     radius); ``seating``: drops discarded at the start of each station; ``static_k_factor``:
-    static over dynamic k (AASHTO 1993: 0.5).
+    static over dynamic k (AASHTO 1993: 0.5); ``void_threshold``: the zero-load intercept (m)
+    above which a station's load–deflection line flags a void (2 mils).
 
     Returns :class:`Records`, one per drop (SI: N/m³, Pa, m): ``station``, ``drop``,
     ``location``, ``load``, ``subgrade`` with ``subgrade_low`` and ``subgrade_high`` (the 95 %
-    interval), ``slab`` with its interval, ``ell`` with its interval, ``static_k``, the AREA
+    interval), ``slab`` with its interval, ``void`` (m) with its interval, ``ell`` with its
+    interval, ``static_k``, the AREA
     reading (``area_subgrade``, ``area_slab``, ``area_ell``), ``rms``, ``largest``,
     ``largest_at``, ``solves``, ``converged``, ``termination``, and the basins as NumPy arrays
-    ``offsets``, ``measured`` and ``fitted``. ``meta`` holds the rest of backcalc.json. A fit
+    ``offsets``, ``measured`` and ``fitted``. ``meta`` holds the rest of backcalc.json, among it ``intercepts`` (the
+    intercept method at each station with several loads: ``intercept`` m, ``slope`` m/N,
+    ``void``). A fit
     that did not converge raises :class:`NotConverged`, its ``.solution`` the records (the
     best points reached).
     """
@@ -475,6 +481,7 @@ def backcalc(
         "seating": int(seating),
         "static_k_factor": float(static_k_factor),
         "max_evaluations": int(max_evaluations),
+        "void_threshold": float(void_threshold),
     }
     doc = json.loads(_progress.run(_core.backcalc, progress, kind, scene_text,
                                    options_json(None, {}), text, name, json.dumps(spec)))
@@ -482,14 +489,14 @@ def backcalc(
     for d in doc.pop("drops"):
         row: Dict[str, Any] = {k: d[k] for k in ("station", "drop", "location", "load", "static_k")}
         f, a = d.get("fit"), d.get("area")
-        for what in ("subgrade", "slab"):
+        for what in ("subgrade", "slab", "void"):
             value = low = high = None
             if f is not None:
                 e = next((e for e in f["estimates"] if e["unknown"] == what), None)
                 if e is not None:
                     value = e["value"]
                     low, high = e["interval"] if e["interval"] else (None, None)
-            elif a is not None:
+            elif a is not None and what != "void":
                 value = a["subgrade_modulus" if what == "subgrade" else "slab_modulus"]
             row[what], row[f"{what}_low"], row[f"{what}_high"] = value, low, high
         ell = f.get("ell") if f else None

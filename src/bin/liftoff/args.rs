@@ -370,7 +370,8 @@ pub(crate) struct BackcalcArgs {
     /// method alone: interior drops on winkler or half-space templates).
     #[arg(long, default_value = "fit", value_parser = choice::<BackcalcMethod>())]
     pub(crate) method: BackcalcMethod,
-    /// The unknowns of the fit, comma-separated: subgrade (the soil's modulus), slab (its E).
+    /// The unknowns of the fit, comma-separated: subgrade (the soil's modulus), slab (its E),
+    /// void (the depth of the template's [[void]] nearest the drop; unbonded contact).
     #[arg(long, value_delimiter = ',', default_value = "subgrade,slab", value_parser = choice::<Unknown>())]
     pub(crate) fit: Vec<Unknown>,
     /// Contact law of the model (overrides the template's [solver] contact).
@@ -390,6 +391,10 @@ pub(crate) struct BackcalcArgs {
     /// Static k over the dynamic k a basin gives (AASHTO 1993: 0.5).
     #[arg(long, default_value_t = 0.5)]
     pub(crate) static_k_factor: f64,
+    /// The zero-load intercept, in µm, above which a station's load–deflection line flags a
+    /// void (AASHTO 1993: 2 mils = 50.8 µm).
+    #[arg(long, default_value_t = 50.8)]
+    pub(crate) void_threshold_um: f64,
     /// Directory for backcalc.csv, basins.csv, backcalc.json and the charts.
     #[arg(long)]
     pub(crate) out: Option<PathBuf>,

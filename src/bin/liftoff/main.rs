@@ -423,6 +423,7 @@ fn backcalc(args: BackcalcArgs) -> Result<(), Failure> {
         },
         seating: args.seating,
         static_k_factor: args.static_k_factor,
+        void_threshold: args.void_threshold_um * 1e-6,
     };
     if let Some(dir) = &args.out {
         output::prepare_dir(dir)?;
