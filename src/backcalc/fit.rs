@@ -40,9 +40,10 @@ use crate::entry::{run, Outcome};
 use crate::error::{Error, Result};
 use crate::foundation::soil::KeyValue;
 use crate::foundation::FoundationKind;
+use crate::layout::JointType;
 use crate::method::Contact;
 use crate::monitor::Monitor;
-use crate::scene::{Coord, LoadKind, LoadSpec, SceneFile};
+use crate::scene::{Coord, JointSpec, LoadKind, LoadSpec, SceneFile};
 use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt, TerminationReason};
 use nalgebra_lm::{DMatrix, DVector, Dyn, Owned};
 use rayon::prelude::*;
@@ -61,9 +62,12 @@ pub enum Unknown {
     /// The depth (m) of the template's `[[void]]` nearest the drop: its extent is the
     /// template's, its depth the start. A void's depth acts only in unbonded contact.
     Void,
+    /// The shear stiffness `stiffness` (AGG, N/m²: force per length of joint per unit jump of
+    /// the deflection) of the template's joint nearest the drop, an `aggregate` or `tied` one.
+    Joint,
 }
 
-crate::choice::names!(Unknown, Subgrade => "subgrade", Slab => "slab", Void => "void");
+crate::choice::names!(Unknown, Subgrade => "subgrade", Slab => "slab", Void => "void", Joint => "joint");
 
 /// How a fit ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
@@ -193,7 +197,7 @@ struct Target {
     key: String,
     /// The soil's key, for the subgrade.
     soil_key: &'static str,
-    /// The void's index, for a void.
+    /// The void's or the joint's index.
     void: usize,
 }
 
@@ -237,6 +241,11 @@ impl Forward<'_> {
                 Unknown::Void => {
                     if let Some(void) = f.void.get_mut(t.void) {
                         void.depth = v;
+                    }
+                }
+                Unknown::Joint => {
+                    if let Some(joint) = f.joint.get_mut(t.void) {
+                        joint.stiffness = Some(v);
                     }
                 }
             }
@@ -482,6 +491,34 @@ fn prepare<'m>(
                 });
                 start.push(v.depth);
             }
+            Unknown::Joint => {
+                let (k, j) = nearest_joint(template, at).ok_or_else(|| {
+                    Error::invalid(
+                        "joint",
+                        "fitting a joint's stiffness needs a [[joint]] in the template beside the drop",
+                    )
+                })?;
+                let stiffness = match (j.kind, j.stiffness) {
+                    (JointType::Aggregate | JointType::Tied, Some(c)) if c > 0.0 => c,
+                    _ => {
+                        return Err(Error::invalid(
+                            format!("joint[{k}].stiffness"),
+                            format!(
+                                "the joint nearest the drop is `{}`{}: a fitted joint is an aggregate or tied joint with a positive stiffness to start from",
+                                j.kind,
+                                j.stiffness.map_or(String::new(), |c| format!(" of stiffness {c}"))
+                            ),
+                        ))
+                    }
+                };
+                targets.push(Target {
+                    unknown: u,
+                    key: format!("joint[{k}].stiffness"),
+                    soil_key: "",
+                    void: k,
+                });
+                start.push(stiffness);
+            }
         }
     }
     if targets.is_empty() {
@@ -528,6 +565,118 @@ fn prepare<'m>(
         monitor,
         solves: std::sync::atomic::AtomicUsize::new(0),
     })
+}
+
+/// A joint drop's load transfer across the joint (see [`load_transfer`]).
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct LoadTransfer {
+    /// The joint (its name, or `joint[i]`).
+    pub joint: String,
+    /// The offset of the first sensor across the joint, m.
+    pub sensor: f64,
+    /// The deflection LTE: that sensor's deflection over the loaded one's.
+    pub lte: f64,
+    /// The slab-bending correction B = w(0)/w(sensor) of the same slab without the joint.
+    pub bending: f64,
+    /// LTE · B: 1 for a joint that transfers as the slab itself.
+    pub corrected: f64,
+    /// The LTE of the fitted model's basin (None without a fit).
+    pub model: Option<f64>,
+}
+
+/// The load transfer of a joint drop (`joint-approach`, `joint-leave`) across the template's
+/// joint nearest it: the deflection LTE of the first sensor across the joint over the loaded
+/// sensor, and that LTE times the slab-bending correction B = w(0)/w(s) — the ratio the same
+/// two sensors read with no joint, computed on the template's model without that joint at the
+/// fitted moduli (the template's where none are fitted) — which the literature takes from an
+/// interior drop's d₀/d₁₂ instead (AASHTO 1993, Part III). None for other drops, or a sensor
+/// line that does not cross the joint.
+pub fn load_transfer(
+    template: &SceneFile,
+    drop: &Drop,
+    fit: Option<&Fit>,
+    options: &FitOptions,
+    monitor: &Monitor<'_>,
+) -> Result<Option<LoadTransfer>> {
+    if !matches!(
+        drop.location,
+        Location::JointApproach | Location::JointLeave
+    ) {
+        return Ok(None);
+    }
+    let quiet = monitor.quiet();
+    let forward = prepare(
+        template,
+        drop,
+        &FitOptions {
+            unknowns: vec![Unknown::Slab],
+            ..options.clone()
+        },
+        &quiet,
+    )?;
+    let Some(at) = drop.at else { return Ok(None) };
+    let Some((k, joint)) = nearest_joint(template, at) else {
+        return Ok(None);
+    };
+    let side = |p: [f64; 2]| match (joint.x, joint.y) {
+        (Some(x), _) => (p[0] - x).signum(),
+        (None, Some(y)) => (p[1] - y).signum(),
+        _ => 0.0,
+    };
+    let loaded = side(at);
+    let Some(j) = forward.sensors.iter().position(|&p| side(p) == -loaded) else {
+        return Ok(None);
+    };
+    let d = &drop.basin.deflections;
+    // The slab without the joint, at the fitted moduli.
+    let mut whole = template.clone();
+    whole.joint.remove(k);
+    if let Some(f) = fit {
+        for e in &f.estimates {
+            match e.unknown {
+                Unknown::Subgrade => {
+                    if let Some(soil) = whole.foundation.as_mut() {
+                        let key = e.key.trim_start_matches("foundation.").to_string();
+                        soil.soil.insert(key, KeyValue::Number(e.value));
+                    }
+                }
+                Unknown::Slab => {
+                    if let Some(p) = whole.plate.as_mut() {
+                        p.youngs_modulus = e.value;
+                    }
+                }
+                Unknown::Void | Unknown::Joint => {}
+            }
+        }
+    }
+    let plain = FitOptions {
+        unknowns: vec![Unknown::Slab],
+        ..options.clone()
+    };
+    let w = model_basin(&whole, drop, &plain, monitor)?;
+    let (lte, bending) = (d[j] / d[0], w[0] / w[j]);
+    Ok(Some(LoadTransfer {
+        joint: joint.name.clone().unwrap_or_else(|| format!("joint[{k}]")),
+        sensor: drop.basin.offsets[j],
+        lte,
+        bending,
+        corrected: lte * bending,
+        model: fit.map(|f| f.fitted[j] / f.fitted[0]),
+    }))
+}
+
+/// The template's joint line nearest `at`, with its index.
+pub fn nearest_joint(template: &SceneFile, at: [f64; 2]) -> Option<(usize, &JointSpec)> {
+    let distance = |j: &JointSpec| match (j.x, j.y) {
+        (Some(x), _) => (x - at[0]).abs(),
+        (None, Some(y)) => (y - at[1]).abs(),
+        _ => f64::INFINITY,
+    };
+    template
+        .joint
+        .iter()
+        .enumerate()
+        .min_by(|a, b| distance(a.1).total_cmp(&distance(b.1)))
 }
 
 /// The AREA method's reading of `drop` on the template's slab and soil, where it applies: an
@@ -595,7 +744,7 @@ pub fn fit_drop(
             .map(|(t, &own)| match t.unknown {
                 Unknown::Subgrade => a.subgrade_modulus,
                 Unknown::Slab => a.slab_modulus,
-                Unknown::Void => own,
+                Unknown::Void | Unknown::Joint => own,
             })
             .collect();
         if s.iter().all(|v| v.is_finite() && *v > 0.0) {

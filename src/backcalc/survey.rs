@@ -20,7 +20,7 @@ use rayon::prelude::*;
 
 use super::area::AreaResult;
 use super::basins::{Drop, Location};
-use super::fit::{area_reading, fit_drop, Fit, FitOptions, Unknown};
+use super::fit::{area_reading, fit_drop, load_transfer, Fit, FitOptions, LoadTransfer, Unknown};
 use crate::error::{Error, Result};
 use crate::monitor::{Cases, Monitor};
 use crate::scene::SceneFile;
@@ -84,6 +84,8 @@ pub struct DropResult {
     /// The static k, N/m³: the fitted (or the AREA's) dynamic k times the static factor; None
     /// on a soil fitted by its Young's modulus.
     pub static_k: Option<f64>,
+    /// A joint drop's load transfer across the joint ([`load_transfer`]).
+    pub load_transfer: Option<LoadTransfer>,
 }
 
 impl DropResult {
@@ -255,8 +257,10 @@ pub fn survey(
                 Some(f) => f.estimate(Unknown::Subgrade).map(|e| e.value),
                 None => area.map(|a| a.subgrade_modulus),
             };
+            let transfer = load_transfer(template, d, fit.as_ref(), &options.fit, &inner)?;
             cases.finish(&d.label())?;
             Ok(DropResult {
+                load_transfer: transfer,
                 station: d.station.clone(),
                 drop: d.drop,
                 location: d.location,

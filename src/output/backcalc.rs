@@ -74,7 +74,7 @@ fn value(r: &DropResult, what: Unknown) -> Option<(f64, Option<[f64; 2]>)> {
         None => r.area.and_then(|a| match what {
             Unknown::Subgrade => Some((a.subgrade_modulus, None)),
             Unknown::Slab => Some((a.slab_modulus, None)),
-            Unknown::Void => None,
+            Unknown::Void | Unknown::Joint => None,
         }),
     }
 }
@@ -86,7 +86,7 @@ fn opt(v: Option<f64>) -> String {
 fn csv_drops(s: &Survey, u: &Units) -> String {
     let (sg, sgu) = subgrade(s, u);
     let mut out = format!(
-        "station,drop,location,load [{l}],{sg} [{k}],{sg}_low [{k}],{sg}_high [{k}],static_k [{ku}],E [{m}],E_low [{m}],E_high [{m}],ell [{len}],void [{d}],void_low [{d}],void_high [{d}],area_{sg} [{k}],area_E [{m}],area_ell [{len}],rms [{d}],largest [{d}],largest_at [{o}],solves,converged,termination\n",
+        "station,drop,location,load [{l}],{sg} [{k}],{sg}_low [{k}],{sg}_high [{k}],static_k [{ku}],E [{m}],E_low [{m}],E_high [{m}],ell [{len}],void [{d}],void_low [{d}],void_high [{d}],joint [{m}],joint_low [{m}],joint_high [{m}],lte [-],bending [-],lte_corrected [-],lte_model [-],area_{sg} [{k}],area_E [{m}],area_ell [{len}],rms [{d}],largest [{d}],largest_at [{o}],solves,converged,termination\n",
         l = u.load.0,
         k = sgu.0,
         ku = u.k.0,
@@ -99,13 +99,15 @@ fn csv_drops(s: &Survey, u: &Units) -> String {
         let sub = value(r, Unknown::Subgrade);
         let slab = value(r, Unknown::Slab);
         let void = value(r, Unknown::Void);
+        let joint = value(r, Unknown::Joint);
+        let lt = r.load_transfer.as_ref();
         let iv = |v: Option<(f64, Option<[f64; 2]>)>, i: usize, unit: Unit| {
             opt(v.and_then(|(_, iv)| iv).map(|iv| unit.of(iv[i])))
         };
         let f = r.fit.as_ref();
         let _ = writeln!(
             out,
-            "{},{},{},{:.6e},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{:.6e},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.station,
             r.drop,
             r.location,
@@ -121,6 +123,13 @@ fn csv_drops(s: &Survey, u: &Units) -> String {
             opt(void.map(|v| u.deflection.of(v.0))),
             iv(void, 0, u.deflection),
             iv(void, 1, u.deflection),
+            opt(joint.map(|v| u.modulus.of(v.0))),
+            iv(joint, 0, u.modulus),
+            iv(joint, 1, u.modulus),
+            opt(lt.map(|t| t.lte)),
+            opt(lt.map(|t| t.bending)),
+            opt(lt.map(|t| t.corrected)),
+            opt(lt.and_then(|t| t.model)),
             opt(r.area.map(|a| sgu.of(a.subgrade_modulus))),
             opt(r.area.map(|a| u.modulus.of(a.slab_modulus))),
             opt(r.area.map(|a| u.length.of(a.ell))),
@@ -371,6 +380,41 @@ pub fn backcalc_table(
                     " (95 %: {}–{})",
                     short(u.deflection.of(a)),
                     short(u.deflection.of(b))
+                ))
+            );
+        }
+    }
+    for r in &s.drops {
+        if let Some((v, iv)) = value(r, Unknown::Joint) {
+            let _ = writeln!(
+                out,
+                "  {} drop {}: joint stiffness {} {}{}",
+                r.station,
+                r.drop,
+                short(u.modulus.of(v)),
+                u.modulus.0,
+                iv.map_or(String::new(), |[a, b]| format!(
+                    " (95 %: {}–{})",
+                    short(u.modulus.of(a)),
+                    short(u.modulus.of(b))
+                ))
+            );
+        }
+        if let Some(t) = &r.load_transfer {
+            let _ = writeln!(
+                out,
+                "  {} drop {}: across {} at {} {}: LTE {:.1} %, × bending {:.3} = {:.1} %{}",
+                r.station,
+                r.drop,
+                t.joint,
+                short(u.offset.of(t.sensor)),
+                u.offset.0,
+                100.0 * t.lte,
+                t.bending,
+                100.0 * t.corrected,
+                t.model.map_or(String::new(), |m| format!(
+                    "; the fitted model's LTE {:.1} %",
+                    100.0 * m
                 ))
             );
         }

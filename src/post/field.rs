@@ -211,20 +211,42 @@ impl FullField {
         Some(self.interpolate(field, x / half_x, y / half_y))
     }
 
-    /// Bilinear interpolation of a nodal field at (s, t) ∈ [−1, 1]², from the grid nodes (on a
-    /// joint line: the lower / left side's copies).
+    /// Bilinear interpolation of a nodal field at (s, t) ∈ [−1, 1]² from the corners of the
+    /// element that holds the point — its own side's copies on a jointed plate, so that a point
+    /// just past a joint reads the far side's deflection, not the loaded side's. A point on a
+    /// grid line is read from the element below / to the left of it (on a joint line: the
+    /// lower / left side's copies).
     pub fn interpolate(&self, field: &[f64], s: f64, t: f64) -> f64 {
         let fx = ((s + 1.0) * 0.5 * self.nx as f64).clamp(0.0, self.nx as f64);
         let fy = ((t + 1.0) * 0.5 * self.ny as f64).clamp(0.0, self.ny as f64);
-        let i = (fx.floor() as usize).min(self.nx - 1);
-        let j = (fy.floor() as usize).min(self.ny - 1);
+        let cell = |f: f64, n: usize| {
+            let below = if f > 0.0 && f.fract() == 0.0 {
+                f - 1.0
+            } else {
+                f.floor()
+            };
+            (below as usize).min(n - 1)
+        };
+        let (i, j) = (cell(fx, self.nx), cell(fy, self.ny));
         let (a, b) = (fx - i as f64, fy - j as f64);
         let n = self.nodes_x();
-        let v00 = field[i + j * n];
-        let v10 = field[i + 1 + j * n];
-        let v01 = field[i + (j + 1) * n];
-        let v11 = field[i + 1 + (j + 1) * n];
-        (1.0 - a) * (1.0 - b) * v00 + a * (1.0 - b) * v10 + (1.0 - a) * b * v01 + a * b * v11
+        let grid = [
+            i + j * n,
+            i + 1 + j * n,
+            i + 1 + (j + 1) * n,
+            i + (j + 1) * n,
+        ];
+        // The element's own copies where the field holds them (every nodal field of a solve
+        // does; a grid-only array reads the grid nodes).
+        let own = self.element_nodes(i, j);
+        let v = |k: usize| {
+            field
+                .get(own[k])
+                .or_else(|| field.get(grid[k]))
+                .copied()
+                .unwrap_or(f64::NAN)
+        };
+        (1.0 - a) * (1.0 - b) * v(0) + a * (1.0 - b) * v(1) + a * b * v(2) + (1.0 - a) * b * v(3)
     }
 }
 

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Independent references for tests/joints_reference.rs (issue 23, jointed slabs).
+"""Independent references for tests/joints_reference.rs (issue 23, jointed slabs) and
+tests/backcalc_joint.rs (issue 34, section F).
 
 Run (Python 3 with numpy and scipy; a few seconds):
 
@@ -20,6 +21,9 @@ k_d in k ell^2), every number tests/joints_reference.rs embeds:
   L. the deflection LTE against AGG/(k ell) = 0.01 ... 1000 (Mindlin, H = 0.25 ell) beside the
      two published regressions (Crovetti's 1/(1 + 1.2 f^-0.849) and the log form with a/ell of
      the circle of equal area);
+  F. a deflectometer's disk (radius 0.15 ell, as 64 strips of its exact band areas) touching
+     the joint on the left plate, Mindlin H = 0.25 ell: w k ell^2 / P at the FWD's eight
+     sensors along x from the disk's centre, for c = 0.3, 1, 3 (tests/backcalc_joint.rs);
   D. a row of dowels (ell = 0.9 m, k = 80 MN/m^3, 32 mm steel bars every 0.3 m, opening 6 mm,
      K = 4.07e11 N/m^3, a 0.25 m square wheel patch at the joint centred on a bar): the smeared
      Mindlin reference c = k_d / s (dowel force c (w- - w+)(y_i) s) for the plate of the test,
@@ -595,6 +599,42 @@ def section_d():
           f" reach 1.0 ell {friberg_shares(ysym, 0, 1.0, 1.0)[18]:.4f}; exact {F[18] / F.sum():.4f}")
 
 
+def disk_strips(xc, a, force=1.0, n=64):
+    """A uniform disk of radius a centred at (xc, 0) as n strips [x_i, x_i+1] x [-b_i, b_i]
+    of equal width h = 2a/n, each as long as the disk's area in its band over h (the band's
+    area is the circle's segment difference, in closed form): the force and its distribution
+    in x are the disk's exactly, only the spread in y within a band is the rectangle's."""
+    p = force / (np.pi * a * a)
+    h = 2 * a / n
+
+    def area_left_of(u):  # the disk's area with x - xc <= u, -a <= u <= a
+        u = min(max(u, -a), a)
+        return u * np.sqrt(a * a - u * u) + a * a * np.arcsin(u / a) + np.pi * a * a / 2
+
+    rects = []
+    for i in range(n):
+        u0, u1 = -a + i * h, -a + (i + 1) * h
+        band = area_left_of(u1) - area_left_of(u0)
+        rects.append((xc + u0, xc + u1, band / (2 * h), p))
+    return rects
+
+
+FWD_OFFSETS = [0.0, 0.203, 0.305, 0.457, 0.610, 0.914, 1.219, 1.524]
+
+
+def section_f():
+    a = 0.15
+    xc = -a
+    rects = disk_strips(xc, a)
+    print(f"\nF. a deflectometer's disk (radius {a} ell, 64 strips) touching the joint on the left plate,")
+    print(f"   centre x = {xc}; Mindlin H = {H_A} ell, nu = {NU}; w k ell^2 / P at the sensors x = {xc} + r, y = 0")
+    print("   c      | " + " ".join(f"r={r:<6g}" for r in FWD_OFFSETS))
+    for c in (0.3, 1.0, 3.0):
+        m = TwoMindlin(c, 0.0, NU, H_A, rects)
+        vals = [m.w(xc + r, 0.0, "L" if xc + r < 0 else "R") for r in FWD_OFFSETS]
+        print(f"   {c:<6g} | " + " ".join(f"{v:.8f}" for v in vals))
+
+
 if __name__ == "__main__":
     import sys
 
@@ -608,3 +648,4 @@ if __name__ == "__main__":
     section_w()
     section_l()
     section_d()
+    section_f()

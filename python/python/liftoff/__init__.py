@@ -440,7 +440,8 @@ def backcalc(
     and joints, and the soil whose modulus is fitted. ``method``: ``"fit"`` (least squares on
     liftoff's model, with the AREA reading beside it) or ``"area"``; ``fit``: the unknowns,
     ``"subgrade"`` (the soil's ``modulus`` k, or its ``youngs_modulus``), ``"slab"`` (E) and
-    ``"void"`` (the depth of the template's ``[[void]]`` nearest the drop, unbonded contact);
+    ``"void"`` (the depth of the template's ``[[void]]`` nearest the drop, unbonded contact) and
+    ``"joint"`` (the ``stiffness`` of the template's aggregate or tied joint nearest the drop);
     ``contact``: ``"bonded"`` or ``"unbonded"`` (default: the template's); ``elements``:
     (NX, NY) (default: the template's counts refined to elements under 0.95 of the plate's
     radius); ``seating``: drops discarded at the start of each station; ``static_k_factor``:
@@ -449,8 +450,9 @@ def backcalc(
 
     Returns :class:`Records`, one per drop (SI: N/m³, Pa, m): ``station``, ``drop``,
     ``location``, ``load``, ``subgrade`` with ``subgrade_low`` and ``subgrade_high`` (the 95 %
-    interval), ``slab`` with its interval, ``void`` (m) with its interval, ``ell`` with its
-    interval, ``static_k``, the AREA
+    interval), ``slab`` with its interval, ``void`` (m) and ``joint`` (N/m²) with theirs,
+    ``ell`` with its interval, ``static_k``, for joint drops the load transfer (``lte``,
+    ``bending``, ``lte_corrected``, ``lte_model``), the AREA
     reading (``area_subgrade``, ``area_slab``, ``area_ell``), ``rms``, ``largest``,
     ``largest_at``, ``solves``, ``converged``, ``termination``, and the basins as NumPy arrays
     ``offsets``, ``measured`` and ``fitted``. ``meta`` holds the rest of backcalc.json, among it ``intercepts`` (the
@@ -489,19 +491,24 @@ def backcalc(
     for d in doc.pop("drops"):
         row: Dict[str, Any] = {k: d[k] for k in ("station", "drop", "location", "load", "static_k")}
         f, a = d.get("fit"), d.get("area")
-        for what in ("subgrade", "slab", "void"):
+        for what in ("subgrade", "slab", "void", "joint"):
             value = low = high = None
             if f is not None:
                 e = next((e for e in f["estimates"] if e["unknown"] == what), None)
                 if e is not None:
                     value = e["value"]
                     low, high = e["interval"] if e["interval"] else (None, None)
-            elif a is not None and what != "void":
+            elif a is not None and what in ("subgrade", "slab"):
                 value = a["subgrade_modulus" if what == "subgrade" else "slab_modulus"]
             row[what], row[f"{what}_low"], row[f"{what}_high"] = value, low, high
         ell = f.get("ell") if f else None
         row["ell"] = ell[0] if ell else (a["ell"] if a and f is None else None)
         row["ell_low"], row["ell_high"] = (ell[1] if ell and ell[1] else (None, None))
+        t = d.get("load_transfer")
+        row["lte"] = t["lte"] if t else None
+        row["bending"] = t["bending"] if t else None
+        row["lte_corrected"] = t["corrected"] if t else None
+        row["lte_model"] = t["model"] if t else None
         row["area_subgrade"] = a["subgrade_modulus"] if a else None
         row["area_slab"] = a["slab_modulus"] if a else None
         row["area_ell"] = a["ell"] if a else None

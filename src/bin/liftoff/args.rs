@@ -371,7 +371,8 @@ pub(crate) struct BackcalcArgs {
     #[arg(long, default_value = "fit", value_parser = choice::<BackcalcMethod>())]
     pub(crate) method: BackcalcMethod,
     /// The unknowns of the fit, comma-separated: subgrade (the soil's modulus), slab (its E),
-    /// void (the depth of the template's [[void]] nearest the drop; unbonded contact).
+    /// void (the depth of the template's [[void]] nearest the drop; unbonded contact), joint
+    /// (the stiffness of the template's aggregate or tied joint nearest the drop).
     #[arg(long, value_delimiter = ',', default_value = "subgrade,slab", value_parser = choice::<Unknown>())]
     pub(crate) fit: Vec<Unknown>,
     /// Contact law of the model (overrides the template's [solver] contact).
