@@ -9,8 +9,14 @@
 //!   71 kN, in unbonded contact on the panel's self-weight: a sound one, and one over a 0.5 mm
 //!   void 0.6 m × 0.6 m under the corner.
 //!
+//! - fwd-joint.csv (argument `joint`, template `example:fwd-joint`): drops of 40 kN on the
+//!   approach side of the aggregate joint T1 (the plate's edge at the joint, the sensors across
+//!   it) at three places along it, the joint's stiffness AGG = 80, 40 and 15 MN/m² (E = 32 GPa,
+//!   k = 70 MN/m³).
+//!
 //! `cargo run --release --example fwd_basins > examples/fwd-basins.csv`
 //! `cargo run --release --example fwd_basins -- void > examples/fwd-void.csv`
+//! `cargo run --release --example fwd_basins -- joint > examples/fwd-joint.csv`
 
 use liftoff::backcalc::{model_basin, Basin, Drop, FitOptions, Location};
 use liftoff::scene::SceneFile;
@@ -38,7 +44,11 @@ fn main() -> Result<(), liftoff::Error> {
         let (a, b) = (u(), u());
         (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos()
     };
-    let void = std::env::args().nth(1).as_deref() == Some("void");
+    let mode = std::env::args().nth(1).unwrap_or_default();
+    if mode == "joint" {
+        return joint(normal);
+    }
+    let void = mode == "void";
     let stations: Vec<Station> = if void {
         println!(
             "# Synthetic basins: liftoff's model of example:fwd-panel in unbonded contact on its"
@@ -130,6 +140,61 @@ fn main() -> Result<(), liftoff::Error> {
                 cells.join(",")
             );
         }
+    }
+    Ok(())
+}
+
+/// fwd-joint.csv: approach-side drops at the joint of `example:fwd-joint`.
+fn joint(mut normal: impl FnMut() -> f64) -> Result<(), liftoff::Error> {
+    let template = SceneFile::example("fwd-joint")?;
+    println!(
+        "# Synthetic basins: liftoff's model of example:fwd-joint (bonded, 96 × 48 elements) at"
+    );
+    println!("# E = 32 GPa, k = 70 MN/m³ and the joint's AGG = 80, 40, 15 MN/m² at stations 6, 7, 8+000;");
+    println!("# 1 µm of Gaussian noise; `cargo run --release --example fwd_basins -- joint`.");
+    let header: Vec<String> = SENSORS_MM.iter().map(|o| format!("d{o:.0}mm_um")).collect();
+    println!(
+        "station,location,load_kN,radius_mm,x_m,y_m,{}",
+        header.join(",")
+    );
+    for (station, agg, y) in [
+        ("6+000", 8e7, -0.9),
+        ("7+000", 4e7, 0.0),
+        ("8+000", 1.5e7, 0.9),
+    ] {
+        let mut t = template.clone();
+        if let Some(p) = t.plate.as_mut() {
+            p.youngs_modulus = 32e9;
+        }
+        if let Some(f) = t.foundation.as_mut() {
+            f.soil.insert(
+                "modulus".into(),
+                liftoff::foundation::soil::KeyValue::Number(7e7),
+            );
+        }
+        t.joint[0].stiffness = Some(agg);
+        let d = Drop {
+            station: station.into(),
+            drop: 1,
+            location: Location::JointApproach,
+            basin: Basin {
+                load: 40e3,
+                radius: 0.15,
+                offsets: SENSORS_MM.iter().map(|o| o / 1e3).collect(),
+                deflections: Vec::new(),
+            },
+            at: Some([-0.15, y]),
+            direction: 0.0,
+        };
+        let w = model_basin(&t, &d, &FitOptions::default(), &Monitor::NONE)?;
+        let cells: Vec<String> = w
+            .iter()
+            .map(|w| format!("{:.1}", 1e6 * w + normal()))
+            .collect();
+        println!(
+            "{station},joint-approach,40.0,150,-0.15,{y},{}",
+            cells.join(",")
+        );
     }
     Ok(())
 }

@@ -48,6 +48,11 @@ pub const SCENES: &[(&str, &str, &str)] = &[
         include_str!("../examples/fwd-panel.toml"),
     ),
     (
+        "fwd-joint",
+        "the template of a deflectometer survey across a joint: two 4.6 m × 3.7 m × 250 mm panels with aggregate interlock, on springs; `liftoff backcalc examples/fwd-joint.csv --scene example:fwd-joint --fit subgrade,slab,joint`",
+        include_str!("../examples/fwd-joint.toml"),
+    ),
+    (
         "warehouse-bay",
         "warehouse floor: 3 × 3 sawn panels of 6 m on a clay layer, drying-shrinkage curl, a 60 kN rack post at a joint crossing",
         include_str!("../examples/warehouse-bay.toml"),

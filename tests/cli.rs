@@ -771,3 +771,40 @@ fn backcalc_flags_the_voided_corner_by_its_intercept() {
     assert_eq!(field(&h, voided, "void"), "true");
     assert!(number(&h, voided, "intercept [µm]") > 50.8);
 }
+
+/// The bundled joint survey (`examples/fwd-joint.csv`: liftoff's model of `example:fwd-joint`
+/// at E = 32 GPa, k = 70 MN/m³ and the joint's AGG = 80, 40 and 15 MN/m², 1 µm of noise):
+/// `--fit subgrade,slab,joint` gives each station's joint stiffness within 5 % (the noise
+/// moves it by about 2 % at the weakest joint) and k within 3 %, the fitted model's LTE
+/// matches the measured one within 1 % (of the LTE), and lte.svg is written.
+#[test]
+fn backcalc_fits_the_bundled_joints_stiffness_and_load_transfer() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let out = dir.path().join("joint");
+    let basins = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/fwd-joint.csv");
+    let o = liftoff(&[
+        "backcalc",
+        basins.to_str().expect("utf-8"),
+        "--scene",
+        "example:fwd-joint",
+        "--fit",
+        "subgrade,slab,joint",
+        "--out",
+        out.to_str().expect("utf-8"),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (h, rows) = read_csv(&out.join("backcalc.csv"));
+    assert_eq!(rows.len(), 3);
+    for (row, agg) in rows.iter().zip([80.0, 40.0, 15.0]) {
+        let found = number(&h, row, "joint [MPa]");
+        assert!(
+            (found / agg - 1.0).abs() < 0.05,
+            "AGG {found} against {agg}"
+        );
+        assert!((number(&h, row, "k [MPa/m]") / 70.0 - 1.0).abs() < 0.03);
+        let (lte, model) = (number(&h, row, "lte [-]"), number(&h, row, "lte_model [-]"));
+        assert!((model / lte - 1.0).abs() < 0.01, "LTE {lte}, model {model}");
+        assert!(number(&h, row, "bending [-]") > 1.0);
+    }
+    assert_svg(&out.join("lte.svg"));
+}

@@ -2,8 +2,8 @@
 //! 95 % intervals, ℓ, a fitted void's depth, the AREA reading, the misfit, whether the fit
 //! converged), basins.csv (a row a sensor: measured, fitted, misfit), intercepts.csv (the
 //! intercept method's line at each station with several loads), backcalc.json (the survey, SI), and the charts
-//! basins.svg/png (measured against fitted, the first eight drops) and moduli.svg/png (the
-//! moduli along the survey). Values are in the template's unit system: SI as MPa/m, MPa, µm,
+//! basins.svg/png (measured against fitted, the first eight drops), moduli.svg/png (the
+//! moduli along the survey) and, with joint drops, lte.svg/png (the load transfer by drop). Values are in the template's unit system: SI as MPa/m, MPa, µm,
 //! mm and kN; US as pci, ksi, mils, in and lbf.
 
 use std::fmt::Write as _;
@@ -284,6 +284,46 @@ pub fn write_backcalc(
         },
     ];
     let stations: Vec<String> = s.drops.iter().map(|r| r.station.clone()).collect();
+    // The load transfer by joint drop, where there are joint drops.
+    let joints: Vec<(usize, &crate::backcalc::LoadTransfer)> = s
+        .drops
+        .iter()
+        .enumerate()
+        .filter_map(|(i, r)| r.load_transfer.as_ref().map(|t| (i, t)))
+        .collect();
+    if !joints.is_empty() {
+        let names: Vec<String> = joints
+            .iter()
+            .map(|(i, t)| format!("{} ({})", s.drops[*i].station, t.joint))
+            .collect();
+        let pct =
+            |f: fn(&crate::backcalc::LoadTransfer) -> f64| -> Vec<(f64, f64, Option<[f64; 2]>)> {
+                joints
+                    .iter()
+                    .enumerate()
+                    .map(|(k, (_, t))| ((k + 1) as f64, 100.0 * f(t), None))
+                    .collect()
+            };
+        let series = [
+            ModulusSeries {
+                label: "deflection LTE [%]",
+                points: pct(|t| t.lte),
+            },
+            ModulusSeries {
+                label: "LTE × bending correction [%]",
+                points: pct(|t| t.corrected),
+            },
+        ];
+        chart::write_moduli(
+            &st.path("lte.svg"),
+            &st.path("lte.png"),
+            &ModuliChart {
+                title: &format!("{title} — load transfer by joint drop"),
+                series: &series,
+                stations: &names,
+            },
+        )?;
+    }
     chart::write_moduli(
         &st.path("moduli.svg"),
         &st.path("moduli.png"),
