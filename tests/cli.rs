@@ -776,7 +776,8 @@ fn backcalc_flags_the_voided_corner_by_its_intercept() {
 /// at E = 32 GPa, k = 70 MN/m³ and the joint's AGG = 80, 40 and 15 MN/m², 1 µm of noise):
 /// `--fit subgrade,slab,joint` gives each station's joint stiffness within 5 % (the noise
 /// moves it by about 2 % at the weakest joint) and k within 3 %, the fitted model's LTE
-/// matches the measured one within 1 % (of the LTE), and lte.svg is written.
+/// matches the measured one within 1 % (of the LTE), lte.svg is written, and `--report`
+/// makes report.html of the files.
 #[test]
 fn backcalc_fits_the_bundled_joints_stiffness_and_load_transfer() {
     let dir = tempfile::tempdir().expect("tempdir");
@@ -791,6 +792,7 @@ fn backcalc_fits_the_bundled_joints_stiffness_and_load_transfer() {
         "subgrade,slab,joint",
         "--out",
         out.to_str().expect("utf-8"),
+        "--report",
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let (h, rows) = read_csv(&out.join("backcalc.csv"));
@@ -807,4 +809,13 @@ fn backcalc_fits_the_bundled_joints_stiffness_and_load_transfer() {
         assert!(number(&h, row, "bending [-]") > 1.0);
     }
     assert_svg(&out.join("lte.svg"));
+    // report.html shows the drops' table and the three charts inlined.
+    let page = std::fs::read_to_string(out.join("report.html")).expect("report.html");
+    for needle in [
+        "Backcalculation from deflection basins",
+        "joint-approach",
+        "Figure 3. the load transfer of the joint drops",
+    ] {
+        assert!(page.contains(needle), "report.html lacks {needle:?}");
+    }
 }

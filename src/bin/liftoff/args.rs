@@ -50,7 +50,7 @@ pub(crate) enum Command {
     /// Regenerate the paper's Figs. 3–7 (SVG and PNG), paper.json and paper.md.
     Paper(PaperArgs),
     /// Write one self-contained HTML page (summary, tables, charts) from an output directory
-    /// of `solve` or `critical`.
+    /// of `solve`, `critical`, `damage`, `design` or `backcalc`.
     Report(ReportArgs),
     /// Print a bundled example scene (without NAME: list them).
     Example {
@@ -402,6 +402,9 @@ pub(crate) struct BackcalcArgs {
     /// Print backcalc.json to stdout instead of the table.
     #[arg(long)]
     pub(crate) json: bool,
+    /// Also write report.html (one self-contained page) into --out.
+    #[arg(long, requires = "out")]
+    pub(crate) report: bool,
 }
 
 fn parse_vary(s: &str) -> Result<[f64; 2], String> {
@@ -421,7 +424,7 @@ fn parse_vary(s: &str) -> Result<[f64; 2], String> {
 
 #[derive(clap::Args)]
 pub(crate) struct ReportArgs {
-    /// An output directory of `liftoff solve` or `liftoff critical`.
+    /// An output directory of `liftoff solve`, `critical`, `damage`, `design` or `backcalc`.
     pub(crate) dir: PathBuf,
     /// The page to write (default: DIR/report.html).
     #[arg(long)]

@@ -438,6 +438,7 @@ fn backcalc(args: BackcalcArgs) -> Result<(), Failure> {
         Some(dir) => output::backcalc::write_backcalc(dir, &s, &title, file.units)?.len(),
         None => 0,
     };
+    let written = written + with_report(args.report, args.out.as_deref(), written)?;
     if args.json {
         let json = serde_json::to_string_pretty(&s)
             .map_err(|e| Failure::new(exit::IO, format!("cannot serialise backcalc.json: {e}")))?;

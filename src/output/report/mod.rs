@@ -6,10 +6,11 @@
 //!
 //! Each kind of output has its reader (`solve.rs`: `liftoff solve`, with or without
 //! combinations; `critical.rs`: `liftoff critical`; `damage.rs`: `liftoff damage` and
-//! `liftoff design`), listed in [`READERS`]; a directory may hold
+//! `liftoff design`; `backcalc.rs`: `liftoff backcalc`), listed in [`READERS`]; a directory may hold
 //! several kinds, and each gives its sections. A new command's files get a reader of their own
 //! and a line in that list. Every chart no reader shows still goes on the page ("Other charts").
 
+mod backcalc;
 mod critical;
 mod damage;
 mod page;
@@ -45,6 +46,10 @@ const READERS: &[Reader] = &[
     Reader {
         marks: damage::MARKS,
         read: damage::read,
+    },
+    Reader {
+        marks: backcalc::MARKS,
+        read: backcalc::read,
     },
 ];
 
