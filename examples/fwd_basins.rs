@@ -127,6 +127,7 @@ fn main() -> Result<(), liftoff::Error> {
                 },
                 at: None,
                 direction: 0.0,
+                temperature_difference: None,
             };
             let w = model_basin(&t, &d, &FitOptions::default(), &Monitor::NONE)?;
             let cells: Vec<String> = w
@@ -185,6 +186,7 @@ fn joint(mut normal: impl FnMut() -> f64) -> Result<(), liftoff::Error> {
             },
             at: Some([-0.15, y]),
             direction: 0.0,
+            temperature_difference: None,
         };
         let w = model_basin(&t, &d, &FitOptions::default(), &Monitor::NONE)?;
         let cells: Vec<String> = w

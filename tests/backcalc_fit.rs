@@ -48,6 +48,7 @@ fn drop(location: Location, deflections: Vec<f64>) -> Drop {
         },
         at: None,
         direction: 0.0,
+        temperature_difference: None,
     }
 }
 

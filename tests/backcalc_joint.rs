@@ -70,6 +70,7 @@ fn joint_drop(values: &[f64; 8]) -> Drop {
         },
         at: Some([-0.15, 0.0]),
         direction: 0.0,
+        temperature_difference: None,
     }
 }
 

@@ -39,6 +39,7 @@ fn corner(load: f64, deflections: Vec<f64>) -> Drop {
         },
         at: None,
         direction: 0.0,
+        temperature_difference: None,
     }
 }
 
@@ -130,4 +131,61 @@ fn a_fitted_void_depth_comes_back() {
         assert!(fit.converged, "{:?}", fit.termination);
         assert!((depth / 4e-4 - 1.0).abs() < 0.2, "depth {depth}");
     }
+}
+
+/// The slab's temperature at test time (the basin file's `dT_C`): a corner drop at night
+/// (top 10 K cooler, the corner curled up off its soil) on the unbonded panel. The drop's basin
+/// with the column equals the basin of a template that carries the same temperature load; the
+/// fit of k and E with the column gives back the moduli that made it, and a fit that ignores
+/// the curl reads them off (printed), since the curled corner deflects more under the drop.
+#[test]
+fn the_curl_at_test_time_enters_the_fit() {
+    let expansion = |mut f: SceneFile| {
+        if let Some(p) = f.plate.as_mut() {
+            p.thermal_expansion = Some(1.0e-5);
+        }
+        f
+    };
+    let flat = expansion(panel(None));
+    let mut curled = flat.clone();
+    let mut t = liftoff::scene::LoadSpec::new(liftoff::scene::LoadKind::Temperature);
+    t.difference = Some(-10.0);
+    curled.load.insert(0, t);
+    let options = FitOptions::default();
+    let by_template =
+        model_basin(&curled, &corner(40e3, Vec::new()), &options, &Monitor::NONE).expect("basin");
+    let night = |d: Vec<f64>| Drop {
+        temperature_difference: Some(-10.0),
+        ..corner(40e3, d)
+    };
+    let by_column =
+        model_basin(&flat, &night(Vec::new()), &options, &Monitor::NONE).expect("basin");
+    for (a, b) in by_template.iter().zip(&by_column) {
+        assert!((a - b).abs() <= 1e-12 * by_template[0], "{a} vs {b}");
+    }
+    let flat_basin =
+        model_basin(&flat, &corner(40e3, Vec::new()), &options, &Monitor::NONE).expect("basin");
+    assert!(
+        by_column[0] > 1.05 * flat_basin[0],
+        "the curled corner deflects more"
+    );
+    let mut guess = flat.clone();
+    if let Some(p) = guess.plate.as_mut() {
+        p.youngs_modulus = 25e9;
+    }
+    let with = fit_drop(&guess, &night(by_column.clone()), &options, &Monitor::NONE).expect("fit");
+    let without =
+        fit_drop(&guess, &corner(40e3, by_column), &options, &Monitor::NONE).expect("fit");
+    let k = |f: &liftoff::backcalc::Fit| f.estimate(Unknown::Subgrade).expect("k").value;
+    let e = |f: &liftoff::backcalc::Fit| f.estimate(Unknown::Slab).expect("E").value;
+    eprintln!(
+        "night corner: with dT k {:+.2e} E {:+.2e}; without k {:+.3} E {:+.3} (rms {:.2} µm)",
+        k(&with) / 4.5e7 - 1.0,
+        e(&with) / 32e9 - 1.0,
+        k(&without) / 4.5e7 - 1.0,
+        e(&without) / 32e9 - 1.0,
+        1e6 * without.rms
+    );
+    assert!(with.converged);
+    assert!((k(&with) / 4.5e7 - 1.0).abs() < 1e-3 && (e(&with) / 32e9 - 1.0).abs() < 1e-3);
 }

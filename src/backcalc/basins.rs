@@ -15,7 +15,9 @@
 //!   neither): `x_m` and `y_m`, or `x_ft` and `y_ft`; and `direction_deg`, the sensor line's
 //!   direction from the x axis (default 0);
 //! - the sensors, one column each, named `d<offset><unit>_<unit>`: the offset in `mm`, `in` or
-//!   `m`, the deflection in `um`, `mils` or `mm` (`d0mm_um`, `d12in_mils`).
+//!   `m`, the deflection in `um`, `mils` or `mm` (`d0mm_um`, `d12in_mils`);
+//! - the slab's temperature difference at test time, top minus bottom (optional): `dT_C` (K)
+//!   or `dT_F` (°F): the curl the drop starts from (the fit adds it to the template's loads).
 //!
 //! Every drop is checked where it is read, and an error names its station and drop: a load that
 //! is not positive, an empty or unreadable sensor, a deflection that is not positive at the
@@ -62,6 +64,9 @@ pub struct Drop {
     pub at: Option<[f64; 2]>,
     /// The sensor line's direction from the x axis, degrees.
     pub direction: f64,
+    /// The slab's temperature difference at test time, top minus bottom, K (None: not
+    /// measured).
+    pub temperature_difference: Option<f64>,
 }
 
 impl Drop {
@@ -191,7 +196,12 @@ enum Column {
     X(f64),
     Y(f64),
     Direction,
-    Sensor { offset: f64, unit: f64 },
+    /// A temperature difference, K per unit.
+    Temperature(f64),
+    Sensor {
+        offset: f64,
+        unit: f64,
+    },
 }
 
 /// What a header names, if anything known.
@@ -202,6 +212,8 @@ fn column(name: &str) -> Option<Column> {
         "drop" => return Some(Column::Drop),
         "location" => return Some(Column::Location),
         "direction_deg" => return Some(Column::Direction),
+        "dT_C" => return Some(Column::Temperature(1.0)),
+        "dT_F" => return Some(Column::Temperature(5.0 / 9.0)),
         _ => {}
     }
     if let Some(f) = unit("load_", force_unit) {
@@ -230,7 +242,7 @@ fn column(name: &str) -> Option<Column> {
 }
 
 /// The columns a basin file may have, for the error that meets an unknown one.
-const COLUMNS: &str = "station, drop, location, load_kN|load_N|load_lbf|load_kip, radius_mm|radius_in|radius_m, x_m & y_m (or _ft), direction_deg, and sensors d<offset><mm|in|m>_<um|mils|mm> such as d0mm_um or d12in_mils";
+const COLUMNS: &str = "station, drop, location, load_kN|load_N|load_lbf|load_kip, radius_mm|radius_in|radius_m, x_m & y_m (or _ft), direction_deg, dT_C|dT_F, and sensors d<offset><mm|in|m>_<um|mils|mm> such as d0mm_um or d12in_mils";
 
 /// Read drops from CSV text (see the module's description); `source` names the file in errors.
 /// Every drop is [`Drop::check`]ed.
@@ -336,6 +348,7 @@ pub fn read_basins(text: &str, source: &str) -> Result<Vec<Drop>> {
             },
             at: None,
             direction: 0.0,
+            temperature_difference: None,
         };
         let (mut x, mut y) = (None, None);
         for (c, col) in columns.iter().enumerate() {
@@ -373,6 +386,9 @@ pub fn read_basins(text: &str, source: &str) -> Result<Vec<Drop>> {
                     if let Some(v) = number(c, name)? {
                         drop.direction = v;
                     }
+                }
+                Column::Temperature(f) => {
+                    drop.temperature_difference = number(c, name)?.map(|v| v * f);
                 }
             }
         }
@@ -419,11 +435,13 @@ mod tests {
 
     #[test]
     fn us_units_convert_by_the_exact_inch_and_pound() {
-        let f = "station,load_lbf,radius_in,d0in_mils,d12in_mils\nS,9000,5.9,4.0,3.5\n";
+        let f = "station,load_lbf,radius_in,dT_F,d0in_mils,d12in_mils\nS,9000,5.9,-9,4.0,3.5\n";
         let d = read_basins(f, "f.csv").expect("reads");
         assert!((d[0].basin.load - 9000.0 * 4.448_221_615_260_5).abs() < 1e-6);
         assert!((d[0].basin.deflections[0] - 4.0 * 25.4e-6).abs() < 1e-15);
         assert!((d[0].basin.offsets[1] - 0.3048).abs() < 1e-15);
+        // A difference of −9 °F is one of −5 K.
+        assert!((d[0].temperature_difference.expect("dT") + 5.0).abs() < 1e-12);
     }
 
     #[test]

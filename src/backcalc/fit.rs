@@ -532,10 +532,26 @@ fn prepare<'m>(
     if let Some(c) = options.contact {
         f.solver.contact = c;
     }
-    let background = f.solver.contact == Contact::Unbonded && !f.load.is_empty();
-    if !background {
+    if f.solver.contact != Contact::Unbonded {
         f.load.clear();
     }
+    if let Some(dt) = drop.temperature_difference {
+        // The curl at test time: part of the state the drop starts from (it changes the drop's
+        // deflection only where the slab lifts, in unbonded contact).
+        if plate.thermal_expansion.is_none() {
+            return Err(Error::invalid(
+                format!("{label}: dT"),
+                "a temperature at test time needs the template's plate.thermal_expansion (say 1.0e-5 1/K)",
+            ));
+        }
+        if f.solver.contact == Contact::Unbonded {
+            let mut t = LoadSpec::new(LoadKind::Temperature);
+            t.difference = Some(dt);
+            t.name = Some("temperature at test time".into());
+            f.load.insert(0, t);
+        }
+    }
+    let background = f.solver.contact == Contact::Unbonded && !f.load.is_empty();
     let mut disk = LoadSpec::new(LoadKind::Circle);
     disk.x = Some(Coord::Value(at[0]));
     disk.y = Some(Coord::Value(at[1]));
