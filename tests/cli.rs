@@ -819,3 +819,38 @@ fn backcalc_fits_the_bundled_joints_stiffness_and_load_transfer() {
         assert!(page.contains(needle), "report.html lacks {needle:?}");
     }
 }
+
+/// A template in US units without loads of its own (a backcalculation's template needs none:
+/// the drops are its loads): the table and backcalc.csv are in pci, ksi and mils, and the
+/// moduli are the SI run's, converted (k = 70 MN/m³ is 257.9 pci, E = 32 GPa is 4641 ksi;
+/// the bundled survey's noise moves them by under 2 %).
+#[test]
+fn backcalc_reads_a_us_template_without_loads_and_reports_in_its_units() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let scene = dir.path().join("us.toml");
+    std::fs::write(
+        &scene,
+        "units = \"us\"\n[plate]\nlength = 181.1\nwidth = 145.7\nthickness = 9.84\nyoungs_modulus = 4.35e6\npoissons_ratio = 0.15\n\
+         [foundation]\nmodel = \"winkler\"\nmodulus = 184.0\n[mesh]\nelements = [16, 16]\n[solver]\ncontact = \"bonded\"\n",
+    )
+    .expect("write");
+    let out = dir.path().join("us");
+    let basins = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/fwd-basins.csv");
+    let o = liftoff(&[
+        "backcalc",
+        basins.to_str().expect("utf-8"),
+        "--scene",
+        scene.to_str().expect("utf-8"),
+        "--seating",
+        "1",
+        "--out",
+        out.to_str().expect("utf-8"),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stdout(&o).contains("k [pci] (95 %)") && stdout(&o).contains("rms [mils]"));
+    let (h, rows) = read_csv(&out.join("backcalc.csv"));
+    let k = number(&h, &rows[0], "k [pci]");
+    let e = number(&h, &rows[0], "E [ksi]");
+    assert!((k / 257.9 - 1.0).abs() < 0.02, "k {k} pci");
+    assert!((e / 4641.0 - 1.0).abs() < 0.02, "E {e} ksi");
+}

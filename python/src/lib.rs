@@ -675,7 +675,7 @@ fn backcalc(
         let drops = liftoff::backcalc::read_basins(basins, source_name)?;
         let mut file = source(kind, text).parse()?;
         Overrides::from_json(options)?.apply(&mut file);
-        file.validate()?;
+        liftoff::backcalc::check_template(&file)?;
         liftoff::backcalc::survey(&file, &drops, &survey_options, m)
     })?;
     json(&s)

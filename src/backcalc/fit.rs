@@ -718,6 +718,24 @@ pub fn area_reading(template: &SceneFile, drop: &Drop) -> Option<AreaResult> {
     area_method(&drop.basin, plate.thickness, plate.poissons_ratio, subgrade).ok()
 }
 
+/// Check a template before any drop is fitted: the scene's own checks, with a small disk at
+/// the centre standing in for the drops when the template has no loads of its own (a
+/// backcalculation's template needs none: the drops are its loads).
+pub fn check_template(template: &SceneFile) -> Result<()> {
+    let mut f = template.clone();
+    if f.load.is_empty() {
+        if let Some(p) = template.plate.as_ref() {
+            let mut disk = LoadSpec::new(LoadKind::Circle);
+            disk.x = Some(Coord::Value(0.0));
+            disk.y = Some(Coord::Value(0.0));
+            disk.radius = Some(0.01 * p.length.min(p.width));
+            disk.force = Some(1.0);
+            f.load.push(disk);
+        }
+    }
+    f.validate().map(|_| ())
+}
+
 /// The model's basin for `drop` at the template's own moduli: what the fit compares with the
 /// measured deflections (the drop's deflections are not read) — synthetic basins, and the
 /// model's prediction for a survey.

@@ -16,8 +16,8 @@ pub mod survey;
 pub use area::{area_method, AreaResult, Basin, AREA_OFFSETS};
 pub use basins::{read_basins, Drop, Location};
 pub use fit::{
-    area_reading, fit_drop, load_transfer, model_basin, nearest_joint, student_t975, Estimate, Fit,
-    FitOptions, LoadTransfer, Termination, Unknown,
+    area_reading, check_template, fit_drop, load_transfer, model_basin, nearest_joint,
+    student_t975, Estimate, Fit, FitOptions, LoadTransfer, Termination, Unknown,
 };
 pub use infinite::{dimensionless_deflection, Subgrade};
 pub use survey::{

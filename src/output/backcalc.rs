@@ -397,7 +397,7 @@ pub fn backcalc_table(
             show(value(r, Unknown::Slab), u.modulus),
             f.map_or(r.area.map(|a| a.ell), |f| f.ell.map(|e| e.0))
                 .map_or("-".into(), |e| format!("{:.3}", u.length.of(e))),
-            f.map_or("-".into(), |f| format!("{:.2}", u.deflection.of(f.rms))),
+            f.map_or("-".into(), |f| short(u.deflection.of(f.rms))),
             r.area
                 .map_or("-".into(), |a| short(sgu.of(a.subgrade_modulus))),
             match f {

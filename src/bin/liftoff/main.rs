@@ -410,9 +410,9 @@ fn backcalc(args: BackcalcArgs) -> Result<(), Failure> {
     let file = Source::from_arg(&args.scene)
         .parse()
         .map_err(|e| Failure::in_scene(&args.scene, e))?;
-    // The template as given must be valid before the fits change its moduli and loads.
-    file.validate()
-        .map_err(|e| Failure::in_scene(&args.scene, e))?;
+    // The template must be valid before the fits change its moduli and loads (it needs no
+    // loads of its own: the drops are).
+    liftoff::backcalc::check_template(&file).map_err(|e| Failure::in_scene(&args.scene, e))?;
     let options = liftoff::backcalc::SurveyOptions {
         method: args.method,
         fit: liftoff::backcalc::FitOptions {
