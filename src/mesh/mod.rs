@@ -10,6 +10,7 @@
 //! ([`Mesh::n_nodes`], [`Mesh::element_nodes`], [`Mesh::node_xy`]). Without joints the
 //! topology is `None` and every method is the plain grid's.
 
+pub mod outline;
 pub mod topology;
 
 use std::sync::Arc;

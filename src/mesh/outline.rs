@@ -1,0 +1,381 @@
+//! Plates of any outline on the structured grid (issue 35, begun: the geometry only, not yet
+//! read from scenes nor solved). An outline is a polygon whose edges run along the grid's
+//! lines; on the grid it is a mask of cells — a cell is plate when its centre is inside the
+//! polygon — and openings remove the cells inside theirs. An edge that does not run along a
+//! grid line would become a staircase of spurious re-entrant corners, so it is refused, naming
+//! the mesh that would put it on one.
+//!
+//! Coordinates are the scene's: the plate's bounding box is [−a/2, a/2] × [−b/2, b/2] with
+//! `elements` = [nx, ny] cells over it. Cells are numbered i + j nx from the lower left.
+
+use crate::error::{Error, Result};
+
+/// Which of the grid's cells are plate.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CellMask {
+    /// Cells along x.
+    pub nx: usize,
+    /// Cells along y.
+    pub ny: usize,
+    /// `true` where the cell i + j nx is plate.
+    pub plate: Vec<bool>,
+}
+
+/// The largest multiple of the element counts [`check_polygon`] tries when it names the mesh
+/// that would put every vertex on a grid line.
+const MAX_REFINEMENT: usize = 64;
+
+impl CellMask {
+    /// Every cell plate: the bounding rectangle.
+    pub fn full(nx: usize, ny: usize) -> Self {
+        Self {
+            nx,
+            ny,
+            plate: vec![true; nx * ny],
+        }
+    }
+
+    /// The cells whose centres lie inside the polygon `corners` (grid indices of its vertices,
+    /// as [`check_polygon`] returns them): the even–odd rule, counting the polygon's vertical
+    /// edges that a ray from the centre towards +x crosses.
+    pub fn inside(nx: usize, ny: usize, corners: &[[usize; 2]]) -> Self {
+        let n = corners.len();
+        let mut plate = vec![false; nx * ny];
+        for j in 0..ny {
+            let yc = j as f64 + 0.5;
+            for i in 0..nx {
+                let xc = i as f64 + 0.5;
+                let mut crossings = 0;
+                for k in 0..n {
+                    let [x0, y0] = corners[k];
+                    let [x1, y1] = corners[(k + 1) % n];
+                    if x0 == x1 {
+                        let (lo, hi) = (y0.min(y1) as f64, y0.max(y1) as f64);
+                        if lo < yc && yc < hi && (x0 as f64) > xc {
+                            crossings += 1;
+                        }
+                    }
+                }
+                plate[i + j * nx] = crossings % 2 == 1;
+            }
+        }
+        Self { nx, ny, plate }
+    }
+
+    /// This mask without the cells of `opening` (a mask of the same grid).
+    pub fn without(&self, opening: &CellMask) -> Self {
+        Self {
+            plate: self
+                .plate
+                .iter()
+                .zip(&opening.plate)
+                .map(|(&p, &o)| p && !o)
+                .collect(),
+            ..self.clone()
+        }
+    }
+
+    /// The number of plate cells.
+    pub fn count(&self) -> usize {
+        self.plate.iter().filter(|&&p| p).count()
+    }
+
+    /// The plate's pieces: cells joined through a shared edge, each piece's cells in
+    /// increasing order, the pieces by their first cell. Two cells that touch at a corner
+    /// only are not joined (they would share one node: a hinge, not a slab).
+    pub fn pieces(&self) -> Vec<Vec<usize>> {
+        let (nx, ny) = (self.nx, self.ny);
+        let mut piece = vec![usize::MAX; nx * ny];
+        let mut out: Vec<Vec<usize>> = Vec::new();
+        for start in 0..nx * ny {
+            if !self.plate[start] || piece[start] != usize::MAX {
+                continue;
+            }
+            let id = out.len();
+            let mut cells = vec![start];
+            piece[start] = id;
+            let mut k = 0;
+            while k < cells.len() {
+                let c = cells[k];
+                let (i, j) = (c % nx, c / nx);
+                let mut next = Vec::with_capacity(4);
+                if i > 0 {
+                    next.push(c - 1);
+                }
+                if i + 1 < nx {
+                    next.push(c + 1);
+                }
+                if j > 0 {
+                    next.push(c - nx);
+                }
+                if j + 1 < ny {
+                    next.push(c + nx);
+                }
+                for m in next {
+                    if self.plate[m] && piece[m] == usize::MAX {
+                        piece[m] = id;
+                        cells.push(m);
+                    }
+                }
+                k += 1;
+            }
+            cells.sort_unstable();
+            out.push(cells);
+        }
+        out
+    }
+}
+
+/// The grid indices of a polygon's vertices, after checking that it is a simple polygon with
+/// edges along the grid's lines inside the plate's bounding box [−a/2, a/2] × [−b/2, b/2]
+/// (`size` = [a, b]) of `elements` = [nx, ny] cells. A closing vertex equal to the first is
+/// dropped. Errors name `field` (`plate.outline`, `opening[2].outline`) and the fix.
+pub fn check_polygon(
+    vertices: &[[f64; 2]],
+    size: [f64; 2],
+    elements: [usize; 2],
+    field: &str,
+) -> Result<Vec<[usize; 2]>> {
+    let mut v: Vec<[f64; 2]> = vertices.to_vec();
+    if v.len() > 1 && v.first() == v.last() {
+        v.pop();
+    }
+    if v.len() < 4 {
+        return Err(Error::invalid(
+            field,
+            format!(
+                "an outline along the grid's lines has at least 4 corners, got {}",
+                v.len()
+            ),
+        ));
+    }
+    let [a, b] = size;
+    let [nx, ny] = elements;
+    // Each vertex as a fraction of the box, then as grid indices.
+    let frac = |p: [f64; 2]| [(p[0] + a / 2.0) / a, (p[1] + b / 2.0) / b];
+    for (k, &p) in v.iter().enumerate() {
+        let [fx, fy] = frac(p);
+        let tol = 1e-9;
+        let inside = (-tol..=1.0 + tol).contains(&fx) && (-tol..=1.0 + tol).contains(&fy);
+        if !(p[0].is_finite() && p[1].is_finite() && inside) {
+            return Err(Error::invalid(
+                format!("{field}[{k}]"),
+                format!(
+                    "({}, {}) lies outside the plate's {a} × {b} box [{}, {}] × [{}, {}]",
+                    p[0],
+                    p[1],
+                    -a / 2.0,
+                    a / 2.0,
+                    -b / 2.0,
+                    b / 2.0
+                ),
+            ));
+        }
+    }
+    let on = |f: f64, n: usize| (f * n as f64 - (f * n as f64).round()).abs() < 1e-6;
+    if let Some(k) = v
+        .iter()
+        .position(|&p| !(on(frac(p)[0], nx) && on(frac(p)[1], ny)))
+    {
+        // The least refinement of each count that puts every vertex on a grid line.
+        let fits = |n: usize, axis: usize| {
+            (1..=MAX_REFINEMENT)
+                .map(|m| m * n)
+                .find(|&m| v.iter().all(|&p| on(frac(p)[axis], m)))
+        };
+        let hint = match (fits(nx, 0), fits(ny, 1)) {
+            (Some(mx), Some(my)) => format!(
+                "a mesh of [{mx}, {my}] elements puts every corner on a grid line"
+            ),
+            _ => format!(
+                "no mesh of up to {MAX_REFINEMENT} times [{nx}, {ny}] elements does: put the corners on a common grid"
+            ),
+        };
+        return Err(Error::invalid(
+            format!("{field}[{k}]"),
+            format!(
+                "({}, {}) is not on a grid line of the [{nx}, {ny}] mesh (cells {} × {}); an edge off the grid would become a staircase of false re-entrant corners; {hint}",
+                v[k][0],
+                v[k][1],
+                a / nx as f64,
+                b / ny as f64
+            ),
+        ));
+    }
+    let corners: Vec<[usize; 2]> = v
+        .iter()
+        .map(|&p| {
+            let [fx, fy] = frac(p);
+            [
+                (fx * nx as f64).round() as usize,
+                (fy * ny as f64).round() as usize,
+            ]
+        })
+        .collect();
+    let n = corners.len();
+    for k in 0..n {
+        let (p, q) = (corners[k], corners[(k + 1) % n]);
+        if p == q {
+            return Err(Error::invalid(
+                format!("{field}[{k}]"),
+                "repeats the corner before it: give each corner once",
+            ));
+        }
+        if p[0] != q[0] && p[1] != q[1] {
+            return Err(Error::invalid(
+                format!("{field}[{k}]"),
+                format!(
+                    "the edge from ({}, {}) to ({}, {}) runs along neither x nor y: an outline on the structured grid has edges along its lines only",
+                    v[k][0],
+                    v[k][1],
+                    v[(k + 1) % n][0],
+                    v[(k + 1) % n][1]
+                ),
+            ));
+        }
+    }
+    // Simple: no two edges meet except adjacent ones at their shared corner, and adjacent
+    // ones do not fold back onto each other.
+    let edge = |k: usize| (corners[k], corners[(k + 1) % n]);
+    for k in 0..n {
+        for m in k + 1..n {
+            let adjacent = m == k + 1 || (k == 0 && m == n - 1);
+            let (p, q) = (edge(k), edge(m));
+            let touch = segments_touch(p, q);
+            let folds = adjacent && overlap_length(p, q) > 0;
+            if (!adjacent && touch) || folds {
+                return Err(Error::invalid(
+                    field,
+                    format!(
+                        "edges {k} and {m} {}: the outline must be a simple polygon (one boundary that does not cross or touch itself)",
+                        if folds { "fold back onto each other" } else { "cross or touch" }
+                    ),
+                ));
+            }
+        }
+    }
+    Ok(corners)
+}
+
+/// Whether two axis-parallel segments of grid indices share a point.
+fn segments_touch(p: ([usize; 2], [usize; 2]), q: ([usize; 2], [usize; 2])) -> bool {
+    let span = |s: ([usize; 2], [usize; 2]), d: usize| (s.0[d].min(s.1[d]), s.0[d].max(s.1[d]));
+    (0..2).all(|d| {
+        let (a0, a1) = span(p, d);
+        let (b0, b1) = span(q, d);
+        a0 <= b1 && b0 <= a1
+    })
+}
+
+/// The length two collinear axis-parallel segments share (0 when they are not collinear).
+fn overlap_length(p: ([usize; 2], [usize; 2]), q: ([usize; 2], [usize; 2])) -> usize {
+    for d in 0..2 {
+        let o = 1 - d;
+        let (pc, qc) = (p.0[o] == p.1[o], q.0[o] == q.1[o]);
+        if pc && qc && p.0[o] == q.0[o] {
+            let (a0, a1) = (p.0[d].min(p.1[d]), p.0[d].max(p.1[d]));
+            let (b0, b1) = (q.0[d].min(q.1[d]), q.0[d].max(q.1[d]));
+            return a1.min(b1).saturating_sub(a0.max(b0));
+        }
+    }
+    0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// An L of a 4 × 4 box with its upper-right quarter cut away, on an 8 × 8 grid.
+    const L: [[f64; 2]; 6] = [
+        [-2.0, -2.0],
+        [2.0, -2.0],
+        [2.0, 0.0],
+        [0.0, 0.0],
+        [0.0, 2.0],
+        [-2.0, 2.0],
+    ];
+
+    fn field(r: Result<Vec<[usize; 2]>>) -> (String, String) {
+        match r {
+            Err(Error::Invalid { field, message }) => (field, message),
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn an_l_is_three_quarters_of_its_box_in_one_piece() {
+        let corners = check_polygon(&L, [4.0, 4.0], [8, 8], "plate.outline").expect("L");
+        let m = CellMask::inside(8, 8, &corners);
+        assert_eq!(m.count(), 48);
+        // The cut-away quarter: cells i, j ≥ 4.
+        assert!(!m.plate[5 + 5 * 8] && m.plate[5 + 2 * 8] && m.plate[2 + 5 * 8]);
+        assert_eq!(m.pieces().len(), 1);
+        // The L as the box less a square opening over the cut-away quarter: the same cells.
+        let square = [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]];
+        let hole = check_polygon(&square, [4.0, 4.0], [8, 8], "opening[0]").expect("square");
+        assert_eq!(
+            CellMask::full(8, 8).without(&CellMask::inside(8, 8, &hole)),
+            m
+        );
+    }
+
+    #[test]
+    fn an_opening_across_the_plate_leaves_two_pieces() {
+        let slot = [[-0.5, -2.0], [0.5, -2.0], [0.5, 2.0], [-0.5, 2.0]];
+        let hole = check_polygon(&slot, [4.0, 4.0], [8, 8], "opening[0]").expect("slot");
+        let m = CellMask::full(8, 8).without(&CellMask::inside(8, 8, &hole));
+        let pieces = m.pieces();
+        assert_eq!(pieces.len(), 2);
+        assert_eq!(pieces[0].len() + pieces[1].len(), 48);
+        // Two cells that touch at a corner only are two pieces.
+        let mut diagonal = CellMask::full(2, 2);
+        diagonal.plate = vec![true, false, false, true];
+        assert_eq!(diagonal.pieces().len(), 2);
+    }
+
+    #[test]
+    fn bad_outlines_are_refused_naming_the_corner_and_the_fix() {
+        let size = [4.0, 4.0];
+        // Off the grid: 0.3 is not a multiple of 0.5; a 40 × 8 mesh puts it on one.
+        let mut off = L;
+        off[2] = [2.0, 0.3];
+        off[3] = [0.0, 0.3];
+        let (f, m) = field(check_polygon(&off, size, [8, 8], "plate.outline"));
+        assert_eq!(f, "plate.outline[2]");
+        assert!(m.contains("a mesh of [8, 40] elements"), "{m}");
+        // A diagonal edge.
+        let tri = [[-2.0, -2.0], [2.0, -2.0], [2.0, 2.0], [0.0, 2.0]];
+        let (f, m) = field(check_polygon(&tri, size, [8, 8], "plate.outline"));
+        assert_eq!(f, "plate.outline[3]");
+        assert!(m.contains("runs along neither x nor y"), "{m}");
+        // A bow tie of axis-parallel edges: edges 1 and 4 cross.
+        let bow = [
+            [-2.0, -2.0],
+            [0.0, -2.0],
+            [0.0, 2.0],
+            [1.0, 2.0],
+            [1.0, 0.0],
+            [-2.0, 0.0],
+        ];
+        let (f, m) = field(check_polygon(&bow, size, [8, 8], "plate.outline"));
+        assert_eq!(f, "plate.outline");
+        assert!(m.contains("cross or touch"), "{m}");
+        // Outside the box, and too few corners.
+        let mut out = L;
+        out[0] = [-2.5, -2.0];
+        assert_eq!(
+            field(check_polygon(&out, size, [8, 8], "plate.outline")).0,
+            "plate.outline[0]"
+        );
+        assert!(field(check_polygon(&L[..3], size, [8, 8], "plate.outline"))
+            .1
+            .contains("at least 4 corners"));
+        // A closing corner equal to the first is the same outline.
+        let mut closed = L.to_vec();
+        closed.push(L[0]);
+        assert_eq!(
+            check_polygon(&closed, size, [8, 8], "plate.outline").expect("closed"),
+            check_polygon(&L, size, [8, 8], "plate.outline").expect("open")
+        );
+    }
+}
