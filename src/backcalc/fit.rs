@@ -197,8 +197,8 @@ struct Target {
     key: String,
     /// The soil's key, for the subgrade.
     soil_key: &'static str,
-    /// The void's or the joint's index.
-    void: usize,
+    /// The void's or the joint's index in the template.
+    index: usize,
 }
 
 /// The drop's model: the template prepared, the sensors placed.
@@ -239,12 +239,12 @@ impl Forward<'_> {
                     }
                 }
                 Unknown::Void => {
-                    if let Some(void) = f.void.get_mut(t.void) {
+                    if let Some(void) = f.void.get_mut(t.index) {
                         void.depth = v;
                     }
                 }
                 Unknown::Joint => {
-                    if let Some(joint) = f.joint.get_mut(t.void) {
+                    if let Some(joint) = f.joint.get_mut(t.index) {
                         joint.stiffness = Some(v);
                     }
                 }
@@ -445,7 +445,7 @@ fn prepare<'m>(
                     unknown: u,
                     key: format!("foundation.{key}"),
                     soil_key: key,
-                    void: 0,
+                    index: 0,
                 });
                 start.push(soil.number(key).unwrap_or(f64::NAN));
             }
@@ -454,7 +454,7 @@ fn prepare<'m>(
                     unknown: u,
                     key: "plate.youngs_modulus".into(),
                     soil_key: "",
-                    void: 0,
+                    index: 0,
                 });
                 start.push(plate.youngs_modulus);
             }
@@ -487,7 +487,7 @@ fn prepare<'m>(
                     unknown: u,
                     key: format!("void[{k}].depth"),
                     soil_key: "",
-                    void: k,
+                    index: k,
                 });
                 start.push(v.depth);
             }
@@ -515,7 +515,7 @@ fn prepare<'m>(
                     unknown: u,
                     key: format!("joint[{k}].stiffness"),
                     soil_key: "",
-                    void: k,
+                    index: k,
                 });
                 start.push(stiffness);
             }
