@@ -894,6 +894,16 @@ fn e76_e77_e78_basin_files_templates_and_fits() {
         "E77: message: {err}"
     );
     let o = run(
+        "station,location,load_kN,x_m,y_m,d0mm_um,d305mm_um\nE1,edge,40,0,-1.8,200,150\n",
+        &[],
+    );
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "E77: exit code ({err})");
+    assert!(
+        err.contains("scene field `station E1, drop 1: x, y`: the load plate of radius 0.15 m at (0, -1.8) reaches beyond the template's 4.6 × 3.7 m plate"),
+        "E77: message: {err}"
+    );
+    let o = run(
         &format!("{head}2+000,40,270,250,220,185\n")
             .replace("station,", "station,location,")
             .replace("2+000,", "2+000,edge,"),

@@ -400,6 +400,15 @@ fn prepare<'m>(
             ))
         }
     };
+    if at[0].abs() + r > a / 2.0 * (1.0 + 1e-12) || at[1].abs() + r > b / 2.0 * (1.0 + 1e-12) {
+        return Err(Error::invalid(
+            format!("{label}: x, y"),
+            format!(
+                "the load plate of radius {r} m at ({}, {}) reaches beyond the template's {a} × {b} m plate: check the drop's place and the template's size",
+                at[0], at[1]
+            ),
+        ));
+    }
     let (c, s) = (
         drop.direction.to_radians().cos(),
         drop.direction.to_radians().sin(),
