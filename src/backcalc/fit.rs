@@ -366,27 +366,10 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for Misfit<'_, '_> {
     }
 }
 
-/// The template's stand for the drop: its place, the sensors along their line, the disk as the
-/// last load, the mesh, the contact.
-fn prepare<'m>(
-    template: &SceneFile,
-    drop: &Drop,
-    options: &FitOptions,
-    monitor: &'m Monitor<'m>,
-) -> Result<Forward<'m>> {
+/// Where the drop stood on the template's plate and where its sensors are, checked to lie on
+/// it (see the module's description for the locations' default places).
+fn place(plate: &crate::scene::PlateSpec, drop: &Drop) -> Result<([f64; 2], Vec<[f64; 2]>)> {
     let label = drop.label();
-    let plate = template.plate.as_ref().ok_or_else(|| {
-        Error::invalid(
-            "plate",
-            "a backcalculation's template is a physical scene: give [plate] and [foundation]",
-        )
-    })?;
-    let soil = template.foundation.as_ref().ok_or_else(|| {
-        Error::invalid(
-            "foundation",
-            "a backcalculation's template is a physical scene: give [plate] and [foundation]",
-        )
-    })?;
     let (a, b, r) = (plate.length, plate.width, drop.basin.radius);
     let at = match (drop.at, drop.location) {
         (Some(p), _) => p,
@@ -430,10 +413,21 @@ fn prepare<'m>(
             ));
         }
     }
+    Ok((at, sensors))
+}
+
+/// The unknowns as the scene keys they write, with the template's values as their starts.
+fn targets(
+    template: &SceneFile,
+    plate: &crate::scene::PlateSpec,
+    soil: &crate::scene::FoundationSpec,
+    at: [f64; 2],
+    unknowns: &[Unknown],
+) -> Result<(Vec<Target>, Vec<f64>)> {
     let mut targets = Vec::new();
     let mut start = Vec::new();
-    for (i, &u) in options.unknowns.iter().enumerate() {
-        if options.unknowns[..i].contains(&u) {
+    for (i, &u) in unknowns.iter().enumerate() {
+        if unknowns[..i].contains(&u) {
             return Err(Error::invalid("unknowns", format!("`{u}` is named twice")));
         }
         match u {
@@ -536,6 +530,22 @@ fn prepare<'m>(
             "name at least one: subgrade, slab",
         ));
     }
+    Ok((targets, start))
+}
+
+/// The template as the drop's model: its combinations dropped, the contact asked, its loads
+/// kept as the state before the drop in unbonded contact (with the curl at test time) and
+/// dropped in bonded contact, the drop's disk as the last load, the mesh refined. Returns the
+/// scene and whether the basin is a difference of two solves.
+fn drop_scene(
+    template: &SceneFile,
+    plate: &crate::scene::PlateSpec,
+    drop: &Drop,
+    at: [f64; 2],
+    options: &FitOptions,
+) -> Result<(SceneFile, bool)> {
+    let label = drop.label();
+    let (a, b, r) = (plate.length, plate.width, drop.basin.radius);
     let mut f = template.clone();
     f.combination.clear();
     if let Some(c) = options.contact {
@@ -581,8 +591,34 @@ fn prepare<'m>(
             vec![(bx * m) as i64, (by * m) as i64]
         }
     };
+    Ok((f, background))
+}
+
+/// The template's stand for the drop: its place, the sensors along their line, the unknowns,
+/// the drop's model.
+fn prepare<'m>(
+    template: &SceneFile,
+    drop: &Drop,
+    options: &FitOptions,
+    monitor: &'m Monitor<'m>,
+) -> Result<Forward<'m>> {
+    let plate = template.plate.as_ref().ok_or_else(|| {
+        Error::invalid(
+            "plate",
+            "a backcalculation's template is a physical scene: give [plate] and [foundation]",
+        )
+    })?;
+    let soil = template.foundation.as_ref().ok_or_else(|| {
+        Error::invalid(
+            "foundation",
+            "a backcalculation's template is a physical scene: give [plate] and [foundation]",
+        )
+    })?;
+    let (at, sensors) = place(plate, drop)?;
+    let (targets, start) = targets(template, plate, soil, at, &options.unknowns)?;
+    let (scene, background) = drop_scene(template, plate, drop, at, options)?;
     Ok(Forward {
-        scene: f,
+        scene,
         targets,
         start,
         sensors,
