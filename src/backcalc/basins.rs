@@ -244,19 +244,18 @@ fn column(name: &str) -> Option<Column> {
 /// The columns a basin file may have, for the error that meets an unknown one.
 const COLUMNS: &str = "station, drop, location, load_kN|load_N|load_lbf|load_kip, radius_mm|radius_in|radius_m, x_m & y_m (or _ft), direction_deg, dT_C|dT_F, and sensors d<offset><mm|in|m>_<um|mils|mm> such as d0mm_um or d12in_mils";
 
-/// Read drops from CSV text (see the module's description); `source` names the file in errors.
-/// Every drop is [`Drop::check`]ed.
-pub fn read_basins(text: &str, source: &str) -> Result<Vec<Drop>> {
-    let mut reader = csv::ReaderBuilder::new()
-        .trim(csv::Trim::All)
-        .comment(Some(b'#'))
-        .from_reader(text.as_bytes());
-    let headers = reader
-        .headers()
-        .map_err(|e| Error::invalid(source, format!("cannot read the header row: {e}")))?
-        .clone();
-    let mut columns = Vec::with_capacity(headers.len());
-    for h in &headers {
+/// A basin file's header: each column's meaning and name, and the sensors — (column, offset
+/// m, m per unit) — in the order of their offsets.
+struct Header {
+    columns: Vec<Column>,
+    names: Vec<String>,
+    sensors: Vec<(usize, f64, f64)>,
+}
+
+/// Read and check the header row's columns (see the module's description).
+fn header(names: &csv::StringRecord, source: &str) -> Result<Header> {
+    let mut columns = Vec::with_capacity(names.len());
+    for h in names {
         match column(h) {
             Some(c) => columns.push(c),
             None => {
@@ -306,105 +305,138 @@ pub fn read_basins(text: &str, source: &str) -> Result<Vec<Drop>> {
             format!("a basin needs two sensor columns or more; the columns are {COLUMNS}"),
         ));
     }
-    let mut drops: Vec<Drop> = Vec::new();
-    for (row, record) in reader.records().enumerate() {
-        let line = row + 2;
-        let record =
-            record.map_err(|e| Error::invalid(format!("{source}: line {line}"), e.to_string()))?;
-        let text_of = |c: usize| record.get(c).unwrap_or("");
-        let station = columns
-            .iter()
-            .position(|c| matches!(c, Column::Station))
-            .map(text_of)
-            .unwrap_or("");
-        if station.is_empty() {
+    Ok(Header {
+        columns,
+        names: names.iter().map(str::to_string).collect(),
+        sensors,
+    })
+}
+
+/// One row's drop (checked by the caller): `earlier` counts the drops of a station read
+/// before, `line` is the row's line in the file.
+fn drop_of(
+    record: &csv::StringRecord,
+    header: &Header,
+    line: u64,
+    source: &str,
+    earlier: impl Fn(&str) -> usize,
+) -> Result<Drop> {
+    let text_of = |c: usize| record.get(c).unwrap_or("");
+    let station = header
+        .columns
+        .iter()
+        .position(|c| matches!(c, Column::Station))
+        .map(text_of)
+        .unwrap_or("");
+    if station.is_empty() {
+        return Err(Error::invalid(
+            format!("{source}: line {line}: station"),
+            "every drop needs its station's name",
+        ));
+    }
+    let number = |c: usize, what: &str| -> Result<Option<f64>> {
+        let t = text_of(c);
+        if t.is_empty() {
+            return Ok(None);
+        }
+        t.parse::<f64>().map(Some).map_err(|_| {
+            Error::invalid(
+                format!("station {station} (line {line}): {what}"),
+                format!("`{t}` is not a number"),
+            )
+        })
+    };
+    let mut drop = Drop {
+        station: station.to_string(),
+        drop: earlier(station) + 1,
+        location: Location::Interior,
+        basin: Basin {
+            load: f64::NAN,
+            radius: 0.15,
+            offsets: header.sensors.iter().map(|s| s.1).collect(),
+            deflections: vec![f64::NAN; header.sensors.len()],
+        },
+        at: None,
+        direction: 0.0,
+        temperature_difference: None,
+    };
+    let (mut x, mut y) = (None, None);
+    for (c, col) in header.columns.iter().enumerate() {
+        let name = &header.names[c];
+        match *col {
+            Column::Station | Column::Sensor { .. } => {}
+            Column::Drop => {
+                if let Some(v) = number(c, name)? {
+                    if v < 1.0 || v.fract() != 0.0 {
+                        return Err(Error::invalid(
+                            format!("station {station} (line {line}): drop"),
+                            format!("must be a whole number from 1, got {v}"),
+                        ));
+                    }
+                    drop.drop = v as usize;
+                }
+            }
+            Column::Location => {
+                let t = text_of(c);
+                if !t.is_empty() {
+                    drop.location = t.parse().map_err(|e: String| {
+                        Error::invalid(format!("station {station} (line {line}): location"), e)
+                    })?;
+                }
+            }
+            Column::Load(f) => drop.basin.load = number(c, name)?.map_or(f64::NAN, |v| v * f),
+            Column::Radius(f) => {
+                if let Some(v) = number(c, name)? {
+                    drop.basin.radius = v * f;
+                }
+            }
+            Column::X(f) => x = number(c, name)?.map(|v| v * f),
+            Column::Y(f) => y = number(c, name)?.map(|v| v * f),
+            Column::Direction => {
+                if let Some(v) = number(c, name)? {
+                    drop.direction = v;
+                }
+            }
+            Column::Temperature(f) => {
+                drop.temperature_difference = number(c, name)?.map(|v| v * f);
+            }
+        }
+    }
+    for (k, &(c, _, unit)) in header.sensors.iter().enumerate() {
+        drop.basin.deflections[k] = number(c, &header.names[c])?.map_or(f64::NAN, |v| v * unit);
+    }
+    drop.at = match (x, y) {
+        (Some(x), Some(y)) => Some([x, y]),
+        (None, None) => None,
+        _ => {
             return Err(Error::invalid(
-                format!("{source}: line {line}: station"),
-                "every drop needs its station's name",
-            ));
+                format!("{}: x, y", drop.label()),
+                "give both coordinates of the plate's place, or neither",
+            ))
         }
-        let number = |c: usize, what: &str| -> Result<Option<f64>> {
-            let t = text_of(c);
-            if t.is_empty() {
-                return Ok(None);
-            }
-            t.parse::<f64>().map(Some).map_err(|_| {
-                Error::invalid(
-                    format!("station {station} (line {line}): {what}"),
-                    format!("`{t}` is not a number"),
-                )
-            })
-        };
-        let earlier = drops.iter().filter(|d| d.station == station).count();
-        let mut drop = Drop {
-            station: station.to_string(),
-            drop: earlier + 1,
-            location: Location::Interior,
-            basin: Basin {
-                load: f64::NAN,
-                radius: 0.15,
-                offsets: sensors.iter().map(|s| s.1).collect(),
-                deflections: vec![f64::NAN; sensors.len()],
-            },
-            at: None,
-            direction: 0.0,
-            temperature_difference: None,
-        };
-        let (mut x, mut y) = (None, None);
-        for (c, col) in columns.iter().enumerate() {
-            let name = &headers[c];
-            match *col {
-                Column::Station | Column::Sensor { .. } => {}
-                Column::Drop => {
-                    if let Some(v) = number(c, name)? {
-                        if v < 1.0 || v.fract() != 0.0 {
-                            return Err(Error::invalid(
-                                format!("station {station} (line {line}): drop"),
-                                format!("must be a whole number from 1, got {v}"),
-                            ));
-                        }
-                        drop.drop = v as usize;
-                    }
-                }
-                Column::Location => {
-                    let t = text_of(c);
-                    if !t.is_empty() {
-                        drop.location = t.parse().map_err(|e: String| {
-                            Error::invalid(format!("station {station} (line {line}): location"), e)
-                        })?;
-                    }
-                }
-                Column::Load(f) => drop.basin.load = number(c, name)?.map_or(f64::NAN, |v| v * f),
-                Column::Radius(f) => {
-                    if let Some(v) = number(c, name)? {
-                        drop.basin.radius = v * f;
-                    }
-                }
-                Column::X(f) => x = number(c, name)?.map(|v| v * f),
-                Column::Y(f) => y = number(c, name)?.map(|v| v * f),
-                Column::Direction => {
-                    if let Some(v) = number(c, name)? {
-                        drop.direction = v;
-                    }
-                }
-                Column::Temperature(f) => {
-                    drop.temperature_difference = number(c, name)?.map(|v| v * f);
-                }
-            }
-        }
-        for (k, &(c, _, unit)) in sensors.iter().enumerate() {
-            drop.basin.deflections[k] = number(c, &headers[c])?.map_or(f64::NAN, |v| v * unit);
-        }
-        drop.at = match (x, y) {
-            (Some(x), Some(y)) => Some([x, y]),
-            (None, None) => None,
-            _ => {
-                return Err(Error::invalid(
-                    format!("{}: x, y", drop.label()),
-                    "give both coordinates of the plate's place, or neither",
-                ))
-            }
-        };
+    };
+    Ok(drop)
+}
+
+/// Read drops from CSV text (see the module's description); `source` names the file in errors.
+/// Every drop is [`Drop::check`]ed.
+pub fn read_basins(text: &str, source: &str) -> Result<Vec<Drop>> {
+    let mut reader = csv::ReaderBuilder::new()
+        .trim(csv::Trim::All)
+        .comment(Some(b'#'))
+        .from_reader(text.as_bytes());
+    let names = reader
+        .headers()
+        .map_err(|e| Error::invalid(source, format!("cannot read the header row: {e}")))?
+        .clone();
+    let header = header(&names, source)?;
+    let mut drops: Vec<Drop> = Vec::new();
+    for record in reader.records() {
+        let record = record.map_err(|e| Error::invalid(source, e.to_string()))?;
+        // The row's line in the file, comments and the header counted.
+        let line = record.position().map_or(0, csv::Position::line);
+        let earlier = |station: &str| drops.iter().filter(|d| d.station == station).count();
+        let drop = drop_of(&record, &header, line, source, earlier)?;
         drop.check()?;
         drops.push(drop);
     }
@@ -469,6 +501,12 @@ mod tests {
         assert_eq!(
             err("station,load_kN,d0mm_um,d305mm_furlongs\nS1,40,100,90\n"),
             "f.csv: column `d305mm_furlongs`"
+        );
+        // A cell that is not a number, named by its station and its line in the file, the
+        // comment lines counted.
+        assert_eq!(
+            err("# survey\n# day 1\nstation,load_kN,d0mm_um,d305mm_um\nS1,4O,100,90\n"),
+            "station S1 (line 4): load_kN"
         );
     }
 }
