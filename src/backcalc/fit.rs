@@ -665,6 +665,7 @@ pub fn load_transfer(
     ) {
         return Ok(None);
     }
+    drop.check()?;
     let quiet = monitor.quiet();
     let forward = prepare(
         template,

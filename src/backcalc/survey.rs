@@ -127,7 +127,11 @@ pub fn intercepts(drops: &[&Drop], threshold: f64) -> Vec<Intercept> {
     stations
         .into_iter()
         .filter_map(|name| {
-            let at: Vec<&&Drop> = drops.iter().filter(|d| d.station == name).collect();
+            // Drops with a deflection at the plate (a checked drop has one).
+            let at: Vec<&&Drop> = drops
+                .iter()
+                .filter(|d| d.station == name && !d.basin.deflections.is_empty())
+                .collect();
             let n = at.len() as f64;
             let (mp, md) = at.iter().fold((0.0, 0.0), |(p, d), x| {
                 (p + x.basin.load / n, d + x.basin.deflections[0] / n)
