@@ -34,6 +34,9 @@ pub fn patch_integrals(mesh: &Mesh, x: [f64; 2], y: [f64; 2]) -> Vec<(usize, f64
                 continue;
             }
             let e = ie + je * mesh.nx;
+            if !mesh.is_live(e) {
+                continue; // outside a shaped plate: no plate, no soil contact
+            }
             let nodes = mesh.element_nodes(e);
             let mut acc = [0.0; 4];
             for (px, wx) in rule.on_interval(cx0, cx1) {

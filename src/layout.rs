@@ -216,22 +216,58 @@ pub struct PanelOverride {
     pub section: PanelSection,
 }
 
-/// Joints and panel overrides of a plate; empty for a plate of one piece.
+/// A polygon in the unit system: its corners in order (either sense), the closing edge implied.
+pub type Polygon = Vec<[f64; 2]>;
+
+/// Joints, panel overrides and the plate's shape (an outline other than its bounding rectangle,
+/// openings); empty for a rectangular plate of one piece.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Layout {
     /// Joint lines, in the order given.
     pub joints: Vec<Joint>,
     /// Panels with their own section.
     pub panels: Vec<PanelOverride>,
+    /// The plate's outline when it is not the rectangle [−1, 1] × [−μ, μ] (`[plate] outline`):
+    /// edges along the grid's lines ([`crate::mesh::outline::check_polygon`]).
+    pub outline: Option<Polygon>,
+    /// Holes through the slab (`[[opening]]`): no plate and no soil contact inside.
+    pub openings: Vec<Polygon>,
 }
 
 /// Tolerance on positions in the unit system (lines at equal positions are one line).
 const TOL: f64 = 1e-9;
 
 impl Layout {
-    /// True without joints and overrides: the plain plate.
+    /// True without joints, overrides, outline and openings: the plain rectangular plate.
     pub fn is_empty(&self) -> bool {
-        self.joints.is_empty() && self.panels.is_empty()
+        self.joints.is_empty() && self.panels.is_empty() && !self.is_shaped()
+    }
+
+    /// True when the plate is not its whole bounding rectangle (an outline or openings).
+    pub fn is_shaped(&self) -> bool {
+        self.outline.is_some() || !self.openings.is_empty()
+    }
+
+    /// True when the point (x, y) is plate: inside the outline (the whole rectangle without
+    /// one) and inside no opening. Meant for cell centres, which never lie on an edge of a
+    /// polygon whose edges run along grid lines.
+    pub fn is_plate(&self, x: f64, y: f64) -> bool {
+        self.outline.as_ref().is_none_or(|p| inside(p, x, y))
+            && !self.openings.iter().any(|p| inside(p, x, y))
+    }
+
+    /// True when every corner of the outline and the openings lies on a grid line of the
+    /// plate [−1, 1] × [−μ, μ] on `elements` (to 1e-6 of an element).
+    pub fn shapes_fit(&self, elements: [usize; 2], mu: f64) -> bool {
+        let on = |v: f64, half: f64, n: usize| {
+            let f = (v + half) / (2.0 * half) * n as f64;
+            (f - f.round()).abs() <= 1e-6
+        };
+        self.outline
+            .iter()
+            .chain(&self.openings)
+            .flatten()
+            .all(|p| on(p[0], 1.0, elements[0]) && on(p[1], mu, elements[1]))
     }
 
     /// Positions of the joint lines of one family, every kind, sorted.
@@ -366,6 +402,21 @@ impl Layout {
     }
 }
 
+/// The even–odd rule: a ray from (x, y) towards +x crosses the polygon's edges an odd number
+/// of times.
+fn inside(polygon: &[[f64; 2]], x: f64, y: f64) -> bool {
+    let n = polygon.len();
+    let mut odd = false;
+    for k in 0..n {
+        let [x0, y0] = polygon[k];
+        let [x1, y1] = polygon[(k + 1) % n];
+        if (y0 > y) != (y1 > y) && x < x0 + (y - y0) / (y1 - y0) * (x1 - x0) {
+            odd = !odd;
+        }
+    }
+    odd
+}
+
 /// Equal to 1e-12 relative (constants of mirrored joints).
 fn close(a: f64, b: f64) -> bool {
     (a - b).abs() <= 1e-12 * a.abs().max(b.abs())
@@ -395,6 +446,7 @@ mod tests {
                 joint(Axis::X, 0.5 + 1e-12),
             ],
             panels: Vec::new(),
+            ..Layout::default()
         };
         assert_eq!(layout.lines(Axis::X), vec![-0.5, 0.0, 0.5]);
         assert_eq!(layout.lines(Axis::Y), vec![0.2]);
@@ -461,6 +513,7 @@ mod tests {
                 row: 1,
                 section: PanelSection::of(2.0, 1.0),
             }],
+            ..Layout::default()
         };
         assert_eq!(layout.panel_counts(), [3, 2]);
         assert_eq!(layout.panel_at(-0.9, -0.1), [0, 0]);
@@ -489,6 +542,7 @@ mod tests {
                 joint(Axis::Y, 0.2, dowels(vec![-0.4, 0.4])),
             ],
             panels: Vec::new(),
+            ..Layout::default()
         };
         assert!(pair.symmetric(true), "mirror joints and mirrored bars");
         assert!(!pair.symmetric(false), "the y-joint at 0.2 has no mirror");
@@ -514,6 +568,7 @@ mod tests {
         let cut = Layout {
             joints: vec![joint(Axis::X, 0.0, JointKind::Free)],
             panels: Vec::new(),
+            ..Layout::default()
         };
         assert!(cut.symmetric(true) && cut.cut_on_symmetry_line(true).is_some());
         assert!(cut.cut_on_symmetry_line(false).is_none());

@@ -459,8 +459,8 @@ impl Model {
         (5.0 * (1.0 - g.nu) * g.mu * g.delta).sqrt()
     }
 
-    /// True when loads, voids, zones and the layout (joints and panels) are all unchanged by
-    /// the mirror about x = 0 (`about_x`) or y = 0.
+    /// True when loads, voids, zones, the layout (joints and panels) and the plate's shape (its
+    /// cells) are all unchanged by the mirror about x = 0 (`about_x`) or y = 0.
     pub fn symmetric(&self, about_x: bool) -> bool {
         let voids: Vec<_> = self.voids.iter().map(|v| (v.x, v.y, v.depth)).collect();
         let zones: Vec<_> = self
@@ -468,18 +468,47 @@ impl Model {
             .iter()
             .map(|z| (z.x, z.y, z.compliance_ratio))
             .collect();
+        let shape = || {
+            crate::mesh::outline::CellMask::of_layout(&self.layout, self.elements, self.groups.mu)
+                .symmetric(about_x)
+        };
         loads_symmetric(&self.loads, about_x)
             && rects_symmetric(&voids, about_x)
             && rects_symmetric(&zones, about_x)
             && self.layout.symmetric(about_x)
+            && (!self.layout.is_shaped() || shape())
+    }
+
+    /// True when every print of the vehicle `vehicle` at `at` (as [`Model::place`]) lies on the
+    /// plate's cells: always on a plate that is its whole rectangle; on a shaped plate, no print
+    /// on an opening or outside the outline.
+    pub fn prints_on_plate(&self, vehicle: usize, at: [f64; 3]) -> Result<bool> {
+        if !self.layout.is_shaped() {
+            return Ok(true);
+        }
+        let missing = || Error::invalid("load", format!("the model has no vehicle {vehicle}"));
+        let v = self.vehicles.get(vehicle).ok_or_else(missing)?;
+        let mu = self.groups.mu;
+        let mask = crate::mesh::outline::CellMask::of_layout(&self.layout, self.elements, mu);
+        Ok(v.prints(at)?.iter().all(|p| mask.covers_unit(p.x, p.y, mu)))
     }
 
     /// Move the vehicle `vehicle` (an index into [`Model::vehicles`]) to `at` = (x, y, heading),
     /// m and degrees: its prints replace its loads, factored and in units of P as the scene made
-    /// them (P stays: moving a load changes no resultant). A print off the plate is refused.
+    /// them (P stays: moving a load changes no resultant). A print off the plate — off its
+    /// bounding rectangle, on an opening or outside its outline — is refused.
     pub fn place(&mut self, vehicle: usize, at: [f64; 3]) -> Result<()> {
         let missing = || Error::invalid("load", format!("the model has no vehicle {vehicle}"));
         let v = self.vehicles.get(vehicle).ok_or_else(missing)?;
+        if !self.prints_on_plate(vehicle, at)? {
+            return Err(Error::invalid(
+                format!("load[{}]", v.entry),
+                format!(
+                    "at ({}, {}) and {}°, a print falls on an opening or outside the plate's outline: a load that falls through the slab is not carried — place it on the plate",
+                    at[0], at[1], at[2]
+                ),
+            ));
+        }
         let prints = v.prints(at)?;
         let (factor, p) = (v.factor, self.load_scale);
         let slots = (self.loads.get_mut(v.loads.clone()))

@@ -201,7 +201,7 @@ pub(crate) fn assemble_structured<'a>(
         indptr.push(indices.len());
     }
     let mut data = vec![0.0; indices.len()];
-    for e in 0..mesh.n_elements() {
+    for e in mesh.elements() {
         let ke = ke_of(e);
         let eqs = dofs.element_eqs(&mesh.element_nodes(e));
         for (b, eb) in eqs.iter().enumerate() {
@@ -282,7 +282,7 @@ mod tests {
             let k = assemble_stiffness(&mesh, &dofs, &section());
             let ke = element_stiffness(&section(), mesh.hx, mesh.hy);
             let mut tri = sprs::TriMat::new((dofs.n_eq(), dofs.n_eq()));
-            for e in 0..mesh.n_elements() {
+            for e in mesh.elements() {
                 let eqs = dofs.element_eqs(&mesh.element_nodes(e));
                 for (a, ea) in eqs.iter().enumerate() {
                     for (b, eb) in eqs.iter().enumerate() {

@@ -100,9 +100,9 @@ pub struct Summary {
     pub w_max: f64,
     /// Largest V.
     pub V_max: f64,
-    /// V at the centre.
+    /// V at the centre (NaN, null in JSON, where a shaped plate has no plate there).
     pub V_center: f64,
-    /// V at the corner (+L, +μL).
+    /// V at the corner (+L, +μL) (NaN, null in JSON, where a shaped plate has no plate there).
     pub V_corner: f64,
     /// Largest contact pressure, physical.
     pub pressure_max: f64,
@@ -110,6 +110,9 @@ pub struct Summary {
     pub moments: crate::post::Moments,
     /// Contact area / plate area.
     pub contact_fraction: f64,
+    /// A shaped plate's area over its bounding rectangle's (absent on a rectangle: 1).
+    #[serde(skip_serializing_if = "is_whole")]
+    pub plate_fraction: f64,
     /// √(contact area / π) / L.
     pub contact_radius: f64,
     /// Contact extents.
@@ -196,6 +199,7 @@ impl Summary {
             pressure_max: report.pressure_max,
             moments: report.moments,
             contact_fraction: report.contact_fraction,
+            plate_fraction: report.plate_fraction,
             contact_radius: report.contact_radius,
             contact_extent: report.contact_extent,
             resultant: report.resultant,
@@ -318,4 +322,9 @@ fn convert(v: &mut serde_json::Value, keys: &[&str], f: &dyn Fn(f64) -> f64) -> 
         (Some((k, rest)), Value::Object(o)) => o.get_mut(*k).is_some_and(|x| convert(x, rest, f)),
         _ => false,
     }
+}
+
+/// True for a plate that is its whole bounding rectangle (`plate_fraction` = 1).
+fn is_whole(fraction: &f64) -> bool {
+    *fraction == 1.0
 }

@@ -130,7 +130,7 @@ pub fn assemble_system(mesh: &Mesh, dofs: &DofMap, sections: &[Section]) -> sprs
     let last = kes.len().saturating_sub(1);
     let ke_of = |e: usize| &kes[mesh.panel_of(e).min(last)];
     match &mesh.topo {
-        Some(t) if t.cuts() => assemble_jointed(mesh, dofs, t, ke_of),
+        Some(t) if t.cuts() || t.is_shaped() => assemble_jointed(mesh, dofs, t, ke_of),
         _ => assemble_structured(mesh, dofs, ke_of),
     }
 }
@@ -146,7 +146,7 @@ fn assemble_jointed<'a>(
     let blocks = joint_blocks(topo, false);
     let n_nodes = mesh.n_nodes();
     let mut near: Vec<Vec<usize>> = vec![Vec::new(); n_nodes];
-    for e in 0..mesh.n_elements() {
+    for e in mesh.elements() {
         let c = mesh.element_nodes(e);
         for &p in &c {
             near[p].extend_from_slice(&c);
@@ -192,7 +192,7 @@ fn assemble_jointed<'a>(
             data[indptr[col] + k] += v;
         }
     };
-    for e in 0..mesh.n_elements() {
+    for e in mesh.elements() {
         let ke = ke_of(e);
         let eqs = dofs.element_eqs(&mesh.element_nodes(e));
         for (b, eb) in eqs.iter().enumerate() {

@@ -51,6 +51,7 @@ fn layout(joints: Vec<Joint>) -> Layout {
     Layout {
         joints,
         panels: Vec::new(),
+        ..Layout::default()
     }
 }
 
@@ -485,6 +486,7 @@ fn each_panel_curls_freely_with_its_own_curvature() {
             row: 0,
             section: PanelSection::of(0.5, 1.0),
         }],
+        ..Layout::default()
     };
     let mesh = Mesh::new(2.0, 1.0, [8, 4], false, false).with_layout(&l);
     let dofs = DofMap::new(&mesh);

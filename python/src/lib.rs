@@ -249,14 +249,44 @@ fn fields<'py>(
         .collect();
     let bytes = |v: &[f64]| v.iter().flat_map(|x| x.to_le_bytes()).collect::<Vec<u8>>();
     // The (ny + 1, nx + 1) arrays are the grid nodes (on a joint, the lower / left copy); the
-    // extra copies follow in `joint_nodes`.
+    // extra copies follow in `joint_nodes`. On a shaped plate the nodes and elements outside
+    // it read NaN (their coordinates stay), and the masks say which are plate.
     let n_grid = f.n_grid();
+    let on_node = f.node_on_plate();
+    let on_cell: Vec<bool> = (0..f.nx * f.ny)
+        .map(|c| f.is_plate(c % f.nx.max(1), c / f.nx.max(1)))
+        .collect();
+    let masked = |v: &[f64], on: &[bool], keep: bool| -> Vec<f64> {
+        v.iter()
+            .enumerate()
+            .map(|(k, &x)| match keep || on.get(k).copied().unwrap_or(true) {
+                true => x,
+                false => f64::NAN,
+            })
+            .collect()
+    };
+    // Coordinates stay, and the contact flag (0 off the plate: a mask, not a value).
+    let place = |name: &str, prefix: &str| {
+        ["x", "y", "s", "t", "contact"].contains(&name.trim_start_matches(prefix))
+    };
     for (name, v) in nodal.iter() {
-        d.set_item(*name, PyBytes::new(py, &bytes(&v[..n_grid.min(v.len())])))?;
+        let v = masked(&v[..n_grid.min(v.len())], &on_node, place(name, ""));
+        d.set_item(*name, PyBytes::new(py, &bytes(&v)))?;
     }
     for (name, v) in element.iter() {
-        d.set_item(*name, PyBytes::new(py, &bytes(v)))?;
+        let v = masked(v, &on_cell, place(name, "element_"));
+        d.set_item(*name, PyBytes::new(py, &bytes(&v)))?;
     }
+    let flag = |on: &[bool]| {
+        on.iter()
+            .map(|&o| f64::from(u8::from(o)))
+            .collect::<Vec<f64>>()
+    };
+    d.set_item(
+        "plate_nodes",
+        PyBytes::new(py, &bytes(&flag(&on_node[..n_grid.min(on_node.len())]))),
+    )?;
+    d.set_item("plate_cells", PyBytes::new(py, &bytes(&flag(&on_cell))))?;
     d.set_item("shape", (f.ny + 1, f.nx + 1))?;
     if e.x.len() == f.nx * f.ny {
         d.set_item("element_shape", (f.ny, f.nx))?;

@@ -238,7 +238,7 @@ impl Compliance {
 pub fn nodal_areas(mesh: &Mesh) -> Vec<f64> {
     let mut m = vec![0.0; mesh.n_nodes()];
     let quarter = 0.25 * mesh.element_area();
-    for e in 0..mesh.n_elements() {
+    for e in mesh.elements() {
         for n in mesh.element_nodes(e) {
             m[n] += quarter;
         }
@@ -276,7 +276,7 @@ pub fn coupling(mesh: &Mesh, dofs: &DofMap, lumped: bool) -> sprs::CsMat<f64> {
         }
     } else {
         let me = element_mass(mesh.hx, mesh.hy);
-        for e in 0..mesh.n_elements() {
+        for e in mesh.elements() {
             let nodes = mesh.element_nodes(e);
             for (a, &na) in nodes.iter().enumerate() {
                 let Some(r) = dofs.eq(na, Dof::W) else {

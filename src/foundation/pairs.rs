@@ -100,10 +100,12 @@ pub fn dense_matrix(mesh: &Mesh, c: f64, kernel: &Kernel) -> faer::Mat<f64> {
     if mesh.sym_x && mesh.sym_y {
         images.push((true, true));
     }
-    let ne = mesh.n_elements();
-    let nodes: Vec<[usize; 4]> = (0..ne).map(|e| mesh.element_nodes(e)).collect();
-    let pos: Vec<(isize, isize)> = (0..ne)
-        .map(|e| {
+    let live: Vec<usize> = mesh.elements().collect();
+    let ne = live.len();
+    let nodes: Vec<[usize; 4]> = live.iter().map(|&e| mesh.element_nodes(e)).collect();
+    let pos: Vec<(isize, isize)> = live
+        .iter()
+        .map(|&e| {
             let (i, j) = mesh.element_ij(e);
             (i as isize + shift_x, j as isize + shift_y)
         })

@@ -130,7 +130,11 @@ impl Mesh {
             return Some(coarse);
         };
         let even = |lines: &[(usize, usize)]| lines.iter().all(|&(i, _)| i.is_multiple_of(2));
-        if !(even(&topo.lines_x) && even(&topo.lines_y)) {
+        let mu = 0.5 * b;
+        let fits = even(&topo.lines_x)
+            && even(&topo.lines_y)
+            && topo.layout.shapes_fit([full[0] / 2, full[1] / 2], mu);
+        if !fits {
             return None;
         }
         Some(coarse.with_layout(&topo.layout))
@@ -220,9 +224,35 @@ impl Mesh {
         self.nx * self.ny
     }
 
-    /// Node index of grid position (i, j).
+    /// Node index of grid position (i, j): its first copy. On a shaped plate a grid node that
+    /// no plate cell touches has none and this is `usize::MAX`; [`Self::live_node`] says so.
     pub fn node(&self, i: usize, j: usize) -> usize {
-        i + j * self.nodes_x()
+        self.live_node(i, j).unwrap_or(usize::MAX)
+    }
+
+    /// The first copy of grid position (i, j), `None` where no plate cell touches it.
+    pub fn live_node(&self, i: usize, j: usize) -> Option<usize> {
+        let g = i + j * self.nodes_x();
+        match &self.topo {
+            Some(t) => t.primary(g),
+            None => Some(g),
+        }
+    }
+
+    /// True when element e is plate (always, on a plate that is its whole rectangle).
+    pub fn is_live(&self, e: usize) -> bool {
+        self.topo.as_ref().is_none_or(|t| t.is_live(e))
+    }
+
+    /// The plate's elements: every one of a rectangle, those inside the outline and outside
+    /// the openings of a shaped plate.
+    pub fn elements(&self) -> impl Iterator<Item = usize> + '_ {
+        (0..self.n_elements()).filter(|&e| self.is_live(e))
+    }
+
+    /// True when some cell of the grid is not plate (an outline, openings).
+    pub fn is_shaped(&self) -> bool {
+        self.topo.as_ref().is_some_and(|t| t.is_shaped())
     }
 
     /// Coordinates of node n (the copies of a grid node share them).
@@ -266,6 +296,9 @@ impl Mesh {
 
     /// The element containing (x, y) and the local coordinates (ξ, η) ∈ [−1, 1]² there, or
     /// `None` outside the model (a tolerance of 1e-9 element sizes admits points on its edge).
+    /// On a shaped plate the element is a plate cell: a point on the edge between a plate cell
+    /// and a cell outside is found in the plate cell, and a point in no plate cell's closure
+    /// is `None`.
     pub fn locate(&self, x: f64, y: f64) -> Option<(usize, f64, f64)> {
         let fx = (x - self.x0) / self.hx;
         let fy = (y - self.y0) / self.hy;
@@ -273,8 +306,27 @@ impl Mesh {
         if !(fx >= -tol && fy >= -tol && fx <= self.nx as f64 + tol && fy <= self.ny as f64 + tol) {
             return None;
         }
-        let ie = (fx.floor().max(0.0) as usize).min(self.nx - 1);
-        let je = (fy.floor().max(0.0) as usize).min(self.ny - 1);
+        let cell = |f: f64, n: usize| (f.floor().max(0.0) as usize).min(n - 1);
+        let (ie, je) = (cell(fx, self.nx), cell(fy, self.ny));
+        // The cells whose closure holds the point: the one below / left of it too when it lies
+        // on a grid line (to the tolerance above).
+        let near = |f: f64, i: usize| {
+            let back = i > 0 && (f - i as f64).abs() <= tol;
+            let fwd = i + 1 < usize::MAX && (f - (i + 1) as f64).abs() <= tol;
+            [Some(i), back.then(|| i - 1), fwd.then_some(i + 1)]
+        };
+        let (ie, je) = if self.is_live(ie + je * self.nx) {
+            (ie, je)
+        } else {
+            let found = near(fx, ie).into_iter().flatten().find_map(|i| {
+                near(fy, je)
+                    .into_iter()
+                    .flatten()
+                    .find(|&j| i < self.nx && j < self.ny && self.is_live(i + j * self.nx))
+                    .map(|j| (i, j))
+            });
+            found?
+        };
         let xi = 2.0 * (fx - ie as f64) - 1.0;
         let eta = 2.0 * (fy - je as f64) - 1.0;
         Some((ie + je * self.nx, xi.clamp(-1.0, 1.0), eta.clamp(-1.0, 1.0)))
@@ -410,9 +462,11 @@ impl DofMap {
 /// this is the optimal fill-reducing order (George 1973): O(n log n) fill, O(n^1.5) work. On a
 /// jointed grid each grid node is followed by its extra copies.
 pub fn nested_dissection(mesh: &Mesh) -> Vec<usize> {
-    fn push(mesh: &Mesh, g: usize, out: &mut Vec<usize>) {
-        out.push(g);
-        out.extend_from_slice(mesh.extra_copies(g));
+    fn push(mesh: &Mesh, i: usize, j: usize, out: &mut Vec<usize>) {
+        if let Some(n) = mesh.live_node(i, j) {
+            out.push(n);
+            out.extend_from_slice(mesh.extra_copies(i + j * mesh.nodes_x()));
+        }
     }
     fn recurse(mesh: &Mesh, i0: usize, i1: usize, j0: usize, j1: usize, out: &mut Vec<usize>) {
         if i0 > i1 || j0 > j1 {
@@ -422,7 +476,7 @@ pub fn nested_dissection(mesh: &Mesh) -> Vec<usize> {
         if w * h <= 16 {
             for j in j0..=j1 {
                 for i in i0..=i1 {
-                    push(mesh, mesh.node(i, j), out);
+                    push(mesh, i, j, out);
                 }
             }
             return;
@@ -434,7 +488,7 @@ pub fn nested_dissection(mesh: &Mesh) -> Vec<usize> {
             }
             recurse(mesh, m + 1, i1, j0, j1, out);
             for j in j0..=j1 {
-                push(mesh, mesh.node(m, j), out);
+                push(mesh, m, j, out);
             }
         } else {
             let m = j0 + h / 2;
@@ -443,7 +497,7 @@ pub fn nested_dissection(mesh: &Mesh) -> Vec<usize> {
             }
             recurse(mesh, i0, i1, m + 1, j1, out);
             for i in i0..=i1 {
-                push(mesh, mesh.node(i, m), out);
+                push(mesh, i, m, out);
             }
         }
     }

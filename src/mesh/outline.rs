@@ -1,7 +1,9 @@
-//! Plates of any outline on the structured grid (issue 35, begun: the geometry only, not yet
-//! read from scenes nor solved). An outline is a polygon whose edges run along the grid's
-//! lines; on the grid it is a mask of cells — a cell is plate when its centre is inside the
-//! polygon — and openings remove the cells inside theirs. An edge that does not run along a
+//! Plates of any outline on the structured grid. An outline is a polygon whose edges run along
+//! the grid's lines; on the grid it is a mask of cells — a cell is plate when its centre is
+//! inside the polygon — and openings remove the cells inside theirs. The scene checks the
+//! polygons here ([`check_polygon`]) and the loads against the mask ([`CellMask::holds_point`],
+//! [`CellMask::covers`]); the model's grid keeps the mask in its topology
+//! ([`super::Topology`]). An edge that does not run along a
 //! grid line would become a staircase of spurious re-entrant corners, so it is refused, naming
 //! the mesh that would put it on one.
 //!
@@ -9,6 +11,7 @@
 //! `elements` = [nx, ny] cells over it. Cells are numbered i + j nx from the lower left.
 
 use crate::error::{Error, Result};
+use crate::layout::Layout;
 
 /// Which of the grid's cells are plate.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -60,6 +63,67 @@ impl CellMask {
             }
         }
         Self { nx, ny, plate }
+    }
+
+    /// The plate cells of a layout's outline and openings (unit system) on the whole plate
+    /// [−1, 1] × [−μ, μ] of `elements` cells.
+    pub fn of_layout(layout: &Layout, elements: [usize; 2], mu: f64) -> Self {
+        let [nx, ny] = elements;
+        let (hx, hy) = (2.0 / nx as f64, 2.0 * mu / ny as f64);
+        let plate = (0..nx * ny)
+            .map(|c| {
+                let (i, j) = (c % nx, c / nx);
+                layout.is_plate(-1.0 + (i as f64 + 0.5) * hx, -mu + (j as f64 + 0.5) * hy)
+            })
+            .collect();
+        Self { nx, ny, plate }
+    }
+
+    /// True when the mask is its own mirror image about the box's middle line x = const
+    /// (`about_x`) or y = const.
+    pub fn symmetric(&self, about_x: bool) -> bool {
+        let (nx, ny) = (self.nx, self.ny);
+        (0..nx * ny).all(|c| {
+            let (i, j) = (c % nx, c / nx);
+            let m = if about_x {
+                (nx - 1 - i) + j * nx
+            } else {
+                i + (ny - 1 - j) * nx
+            };
+            self.plate[c] == self.plate[m]
+        })
+    }
+
+    /// True when some plate cell's closure holds the point (fx, fy), given in cells from the
+    /// box's lower-left corner (a tolerance of 1e-9 cells: a point on the outline is on the
+    /// plate).
+    pub fn holds_point(&self, fx: f64, fy: f64) -> bool {
+        let tol = 1e-9;
+        let range = |f: f64, n: usize| {
+            let lo = (f - tol).floor().max(0.0) as usize;
+            let hi = ((f + tol).floor().max(0.0) as usize).min(n - 1);
+            lo.min(n - 1)..=hi
+        };
+        range(fx, self.nx).any(|i| range(fy, self.ny).any(|j| self.plate[i + j * self.nx]))
+    }
+
+    /// True when every cell that the rectangle [fx0, fx1] × [fy0, fy1] (in cells from the box's
+    /// lower-left corner) overlaps with positive area is plate.
+    pub fn covers(&self, fx: [f64; 2], fy: [f64; 2]) -> bool {
+        let tol = 1e-9;
+        let span = |f: [f64; 2], n: usize| {
+            let lo = (f[0] + tol).floor().max(0.0) as usize;
+            let hi = ((f[1] - tol).ceil().max(1.0) as usize).min(n);
+            lo.min(n)..hi
+        };
+        span(fx, self.nx).all(|i| span(fy, self.ny).all(|j| self.plate[i + j * self.nx]))
+    }
+
+    /// [`Self::covers`] for a rectangle in the unit system of a whole plate [−1, 1] × [−μ, μ].
+    pub fn covers_unit(&self, x: [f64; 2], y: [f64; 2], mu: f64) -> bool {
+        let fx = |v: f64| (v + 1.0) * 0.5 * self.nx as f64;
+        let fy = |v: f64| (v + mu) / (2.0 * mu) * self.ny as f64;
+        self.covers([fx(x[0]), fx(x[1])], [fy(y[0]), fy(y[1])])
     }
 
     /// This mask without the cells of `opening` (a mask of the same grid).

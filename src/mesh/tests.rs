@@ -115,6 +115,7 @@ mod jointed {
         Layout {
             joints,
             panels: Vec::new(),
+            ..Layout::default()
         }
     }
 
@@ -363,6 +364,7 @@ mod dowels {
                 },
             ],
             panels: Vec::new(),
+            ..Layout::default()
         };
         // Half-y model: y ∈ [0, 1], 4 rows of 0.25.
         let m = Mesh::new(2.0, 2.0, [8, 8], false, true).with_layout(&l);
@@ -416,6 +418,7 @@ mod dowels {
                 },
             }],
             panels: Vec::new(),
+            ..Layout::default()
         };
         let m = Mesh::new(2.0, 2.0, [8, 8], false, false).with_layout(&l);
         let t = m.topo.as_ref().expect("topology");

@@ -2,11 +2,13 @@
 //! corner table of the elements, the panels, the rigid pieces and their clusters, the joint
 //! segments and the dowel springs.
 //!
-//! The grid stays the uniform one of the whole outline; a joint line that cuts the plate (any
-//! kind but continuous) doubles the nodes on it, one copy per side (four at a crossing of two
-//! such lines). Node ids 0..N_g are the grid nodes i + j(nx + 1) — at a joint the copy of the
-//! lower / left side — and N_g.. the extra copies, in the order (grid node, side). Each copy is
-//! one plate node (w, ψx, ψy) and one pressure unknown.
+//! The grid stays the uniform one of the whole bounding box; a joint line that cuts the plate
+//! (any kind but continuous) doubles the nodes on it, one copy per side (four at a crossing of
+//! two such lines). A shaped plate (an outline, openings) keeps only the cells inside it: a
+//! grid node that no plate cell touches has no copy at all. Node ids 0..N_p are the first
+//! copies of the grid nodes a plate cell touches, in grid order (i + j(nx + 1) on a rectangle)
+//! — at a joint the copy of the lower / left side — and N_p.. the extra copies, in the order
+//! (grid node, side). Each copy is one plate node (w, ψx, ψy) and one pressure unknown.
 //!
 //! This file knows nothing of [`super::Mesh`]: it works on the plain numbers of a [`Grid`].
 
@@ -93,6 +95,12 @@ pub struct Topology {
     pub segments: Vec<Segment>,
     /// Dowel springs of the model.
     pub dowels: Vec<DowelSpring>,
+    /// Whether each model element is plate (a shaped plate's mask; all true otherwise).
+    live: Vec<bool>,
+    /// The first copy of each grid node, `usize::MAX` where no plate cell touches it.
+    primary: Vec<usize>,
+    /// The grid node of each first copy (node ids 0..N_p; extras follow).
+    grid_node: Vec<usize>,
     /// Extra copies of each grid node: `extra_of[g]..extra_of[g + 1]` indexes `extra_list`.
     extra_of: Vec<usize>,
     extra_list: Vec<usize>,
@@ -153,8 +161,46 @@ impl Topology {
         let cut_x = cut(&lines_x, nx);
         let cut_y = cut(&lines_y, ny);
 
-        // Node copies: per grid node, its ≤ 4 elements (LL, LR, UL, UR) joined across edges no
-        // joint cuts; each group of elements is one copy, the first group keeps the grid id.
+        // The plate's cells: every one of a rectangle, those inside the outline and outside
+        // every opening of a shaped plate (each cell by its centre).
+        let live: Vec<bool> = (0..nx * ny)
+            .map(|e| {
+                let (ie, je) = (e % nx, e / nx);
+                layout.is_plate(
+                    grid.x0 + (ie as f64 + 0.5) * grid.hx,
+                    grid.y0 + (je as f64 + 0.5) * grid.hy,
+                )
+            })
+            .collect();
+        // (element, the node's corner in it) of grid node (i, j), in the order LL, LR, UL, UR,
+        // plate cells only.
+        let slots_of = |i: usize, j: usize| -> [Option<(usize, usize)>; 4] {
+            let cell = |ok: bool, ie: usize, je: usize, c: usize| {
+                (ok && live[ie + je * nx]).then_some((ie + je * nx, c))
+            };
+            [
+                cell(i > 0 && j > 0, i.wrapping_sub(1), j.wrapping_sub(1), 2),
+                cell(i < nx && j > 0, i, j.wrapping_sub(1), 3),
+                cell(i > 0 && j < ny, i.wrapping_sub(1), j, 1),
+                cell(i < nx && j < ny, i, j, 0),
+            ]
+        };
+        // The first copy of each grid node a plate cell touches, numbered in grid order; a
+        // node no plate cell touches does not exist.
+        let mut primary = vec![usize::MAX; n_grid];
+        let mut grid_node = Vec::with_capacity(n_grid);
+        for j in 0..ny1 {
+            for i in 0..nx1 {
+                if slots_of(i, j).iter().any(Option::is_some) {
+                    primary[i + j * nx1] = grid_node.len();
+                    grid_node.push(i + j * nx1);
+                }
+            }
+        }
+        let n_primary = grid_node.len();
+
+        // Node copies: per grid node, its ≤ 4 elements joined across edges no joint cuts;
+        // each group of elements is one copy, the first group keeps the node's first id.
         let mut corners = vec![[usize::MAX; 4]; nx * ny];
         let mut extra_grid = Vec::new();
         let mut extra_of = Vec::with_capacity(n_grid + 1);
@@ -163,13 +209,7 @@ impl Topology {
         for j in 0..ny1 {
             for i in 0..nx1 {
                 let g = i + j * nx1;
-                // (element, the node's corner in it), in the order LL, LR, UL, UR.
-                let slots: [Option<(usize, usize)>; 4] = [
-                    (i > 0 && j > 0).then(|| ((i - 1) + (j - 1) * nx, 2)),
-                    (i < nx && j > 0).then(|| (i + (j - 1) * nx, 3)),
-                    (i > 0 && j < ny).then(|| ((i - 1) + j * nx, 1)),
-                    (i < nx && j < ny).then(|| (i + j * nx, 0)),
-                ];
+                let slots = slots_of(i, j);
                 let mut parent = [0, 1, 2, 3];
                 let mut join = |a: usize, b: usize| {
                     if slots[a].is_some() && slots[b].is_some() {
@@ -192,11 +232,11 @@ impl Topology {
                     let r = root(&mut parent, s);
                     if id_of_root[r] == usize::MAX {
                         id_of_root[r] = if first {
-                            g
+                            primary[g]
                         } else {
                             extra_grid.push(g);
-                            extra_list.push(n_grid + extra_grid.len() - 1);
-                            n_grid + extra_grid.len() - 1
+                            extra_list.push(n_primary + extra_grid.len() - 1);
+                            n_primary + extra_grid.len() - 1
                         };
                         first = false;
                     }
@@ -205,9 +245,9 @@ impl Topology {
                 extra_of.push(extra_list.len());
             }
         }
-        let n_nodes = n_grid + extra_grid.len();
+        let n_nodes = n_primary + extra_grid.len();
         let mut counts = vec![0usize; n_nodes + 1];
-        for c in &corners {
+        for c in corners.iter().filter(|c| c[0] != usize::MAX) {
             for &n in c {
                 counts[n + 1] += 1;
             }
@@ -218,38 +258,75 @@ impl Topology {
         let incident_of = counts.clone();
         let mut incident = vec![(0, 0); incident_of[n_nodes]];
         let mut next = counts;
-        for (e, c) in corners.iter().enumerate() {
+        for (e, c) in corners
+            .iter()
+            .enumerate()
+            .filter(|(_, c)| c[0] != usize::MAX)
+        {
             for (a, &n) in c.iter().enumerate() {
                 incident[next[n]] = (e, a);
                 next[n] += 1;
             }
         }
 
-        // Panels by every line of the whole plate; pieces by the model's cutting lines.
+        // Panels by every line of the whole plate; pieces: plate cells joined through edges
+        // that no cutting joint runs along (numbered by their first cell).
         let [pcols, _] = layout.panel_counts();
         let mut panel = Vec::with_capacity(nx * ny);
-        let band = |cut: &[bool], k: usize| cut[..=k].iter().filter(|&&c| c).count();
-        let pieces_x = band(&cut_x, nx) + 1;
-        let mut piece = Vec::with_capacity(nx * ny);
         for je in 0..ny {
             for ie in 0..nx {
                 let xc = grid.x0 + (ie as f64 + 0.5) * grid.hx;
                 let yc = grid.y0 + (je as f64 + 0.5) * grid.hy;
                 let [c, r] = layout.panel_at(xc, yc);
                 panel.push((c + r * pcols) as u32);
-                piece.push((band(&cut_x, ie) + band(&cut_y, je) * pieces_x) as u32);
             }
         }
-        let n_pieces = pieces_x * (band(&cut_y, ny) + 1);
+        let mut parent: Vec<usize> = (0..nx * ny).collect();
+        for je in 0..ny {
+            for ie in 0..nx {
+                let e = ie + je * nx;
+                if !live[e] {
+                    continue;
+                }
+                for (ok, n) in [
+                    (ie + 1 < nx && !cut_x[ie + 1], e + 1),
+                    (je + 1 < ny && !cut_y[je + 1], e + nx),
+                ] {
+                    if ok && live[n] {
+                        let (ra, rb) = (root(&mut parent, e), root(&mut parent, n));
+                        parent[ra.max(rb)] = ra.min(rb);
+                    }
+                }
+            }
+        }
+        let mut piece = vec![u32::MAX; nx * ny];
+        let mut n_pieces = 0;
+        for e in (0..nx * ny).filter(|&e| live[e]) {
+            let r = root(&mut parent, e);
+            if piece[r] == u32::MAX {
+                piece[r] = n_pieces;
+                n_pieces += 1;
+            }
+            piece[e] = piece[r];
+        }
+        let n_pieces = n_pieces as usize;
 
-        // Segments of every cutting joint, then the bars on them.
+        // Segments of every cutting joint where plate lies on both sides (a joint ends where
+        // it meets an opening or the outline), then the bars on them; `along` keeps, per
+        // joint line, the segment of each cell along it.
         let mut segments = Vec::new();
+        let mut along: Vec<(usize, Vec<Option<usize>>)> = Vec::new();
         for &(i, k) in &lines_x {
             if !cut_x[i] {
                 continue;
             }
-            for je in 0..ny {
+            let mut cells = vec![None; ny];
+            for (je, cell) in cells.iter_mut().enumerate() {
                 let (m, p) = ((i - 1) + je * nx, i + je * nx);
+                if !(live[m] && live[p]) {
+                    continue;
+                }
+                *cell = Some(segments.len());
                 segments.push(Segment {
                     joint: k,
                     a: [corners[m][1], corners[m][2]],
@@ -260,13 +337,19 @@ impl Topology {
                     length: grid.hy,
                 });
             }
+            along.push((k, cells));
         }
         for &(j, k) in &lines_y {
             if !cut_y[j] {
                 continue;
             }
-            for ie in 0..nx {
+            let mut cells = vec![None; nx];
+            for (ie, cell) in cells.iter_mut().enumerate() {
                 let (m, p) = (ie + (j - 1) * nx, ie + j * nx);
+                if !(live[m] && live[p]) {
+                    continue;
+                }
+                *cell = Some(segments.len());
                 segments.push(Segment {
                     joint: k,
                     a: [corners[m][3], corners[m][2]],
@@ -277,17 +360,14 @@ impl Topology {
                     length: grid.hx,
                 });
             }
+            along.push((k, cells));
         }
         let mut dowels = Vec::new();
-        for (s0, seg) in segments.iter().enumerate() {
-            // Bars are placed once per joint, from its first segment.
-            if s0 > 0 && segments[s0 - 1].joint == seg.joint {
-                continue;
-            }
-            let JointKind::Dowels { k, positions, .. } = &layout.joints[seg.joint].kind else {
+        for (joint, cells) in &along {
+            let JointKind::Dowels { k, positions, .. } = &layout.joints[*joint].kind else {
                 continue;
             };
-            let (origin, h, n, sym) = match seg.axis {
+            let (origin, h, n, sym) = match layout.joints[*joint].axis {
                 Axis::X => (grid.y0, grid.hy, ny, grid.sym_y),
                 Axis::Y => (grid.x0, grid.hx, nx, grid.sym_x),
             };
@@ -299,8 +379,10 @@ impl Topology {
                 let f = f.clamp(0.0, n as f64);
                 let cell = (f.floor() as usize).min(n - 1);
                 let on_mirror = sym && p.abs() <= ON_LINE * h;
+                // A bar where the joint has no plate on one side (validation refuses it).
+                let Some(segment) = cells[cell] else { continue };
                 dowels.push(DowelSpring {
-                    segment: s0 + cell,
+                    segment,
                     t: (f - cell as f64).clamp(0.0, 1.0),
                     k: if on_mirror { 0.5 * k } else { *k },
                     bar,
@@ -349,6 +431,9 @@ impl Topology {
             cluster,
             segments,
             dowels,
+            live,
+            primary,
+            grid_node,
             extra_of,
             extra_list,
             incident_of,
@@ -356,19 +441,32 @@ impl Topology {
         }
     }
 
-    /// Number of node copies (grid nodes and extras).
+    /// Number of node copies (first copies and extras).
     pub fn n_nodes(&self) -> usize {
-        self.extra_of.len() - 1 + self.extra_grid.len()
+        self.grid_node.len() + self.extra_grid.len()
     }
 
     /// The grid node of node copy `n`.
     pub fn grid_of(&self, n: usize) -> usize {
-        let n_grid = self.extra_of.len() - 1;
-        if n < n_grid {
-            n
-        } else {
-            self.extra_grid[n - n_grid]
+        match self.grid_node.get(n) {
+            Some(&g) => g,
+            None => self.extra_grid[n - self.grid_node.len()],
         }
+    }
+
+    /// The first copy of grid node `g`, `None` where no plate cell touches it.
+    pub fn primary(&self, g: usize) -> Option<usize> {
+        self.primary.get(g).copied().filter(|&n| n != usize::MAX)
+    }
+
+    /// True when model element `e` is plate (inside the outline, outside every opening).
+    pub fn is_live(&self, e: usize) -> bool {
+        self.live[e]
+    }
+
+    /// True when some cell of the model is not plate.
+    pub fn is_shaped(&self) -> bool {
+        self.live.iter().any(|&l| !l)
     }
 
     /// The extra copies of grid node `g` (its own id not included).

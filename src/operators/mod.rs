@@ -478,7 +478,7 @@ pub fn load_vector_with(mesh: &Mesh, dofs: &DofMap, section: &Section, loads: &[
                         fe
                     })
                     .collect();
-                for e in 0..mesh.n_elements() {
+                for e in mesh.elements() {
                     let fe = &fes[mesh.panel_of(e).min(fes.len() - 1)];
                     for (a, node) in mesh.element_nodes(e).into_iter().enumerate() {
                         for (k, dof) in [Dof::W, Dof::PsiX, Dof::PsiY].into_iter().enumerate() {
@@ -522,12 +522,12 @@ pub fn constraint_points(mesh: &Mesh, kind: ConstraintPoints) -> Constraints {
         }
         ConstraintPoints::Gauss => {
             let rule = GaussRule::new(2);
-            let ne = mesh.n_elements();
+            let ne = mesh.elements().count();
             let mut tri = sprs::TriMat::new((4 * ne, n));
             let mut weights = Vec::with_capacity(4 * ne);
             let mut points = Vec::with_capacity(4 * ne);
             let det = 0.25 * mesh.hx * mesh.hy;
-            for e in 0..ne {
+            for e in mesh.elements() {
                 let nodes = mesh.element_nodes(e);
                 let (xc, yc) = mesh.element_centre(e);
                 for (&eta, &wy) in rule.points.iter().zip(&rule.weights) {

@@ -101,7 +101,7 @@ fn frames(mesh: &Mesh, topo: &Topology) -> Vec<Frame> {
         ];
         n
     ];
-    for e in 0..mesh.n_elements() {
+    for e in mesh.elements() {
         let (xc, yc) = mesh.element_centre(e);
         let b = &mut bounds[topo.piece[e] as usize];
         b[0] = b[0].min(xc - 0.5 * mesh.hx);
@@ -138,7 +138,7 @@ pub const NULL_TOLERANCE: f64 = 1e-10;
 /// positive definite. Also returns each mode's cluster. On a mesh no joint cuts these are
 /// [`rigid_modes`]' (one cluster).
 pub fn jointed_rigid_modes(mesh: &Mesh, dofs: &DofMap) -> (Vec<Vec<f64>>, Vec<usize>, Vec<usize>) {
-    let Some(topo) = mesh.topo.as_ref().filter(|t| t.cuts()) else {
+    let Some(topo) = mesh.topo.as_ref().filter(|t| t.cuts() || t.is_shaped()) else {
         let (modes, fixed) = rigid_modes(mesh, dofs);
         let clusters = vec![0; modes.len()];
         return (modes, fixed, clusters);

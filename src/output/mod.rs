@@ -238,7 +238,7 @@ pub fn stage_all(
     let p = st.path(&format!("{prefix}nodes.csv"));
     tables::write_nodes(&p, &field, system)?;
     let p = st.path(&format!("{prefix}elements.csv"));
-    tables::write_elements(&p, &elements, system)?;
+    tables::write_elements(&p, &elements, &field.plate, system)?;
     let p = st.path(&format!("{prefix}profiles.csv"));
     tables::write_profiles(&p, &report.profiles)?;
     if !report.joints.is_empty() {

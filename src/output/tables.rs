@@ -18,8 +18,9 @@ fn csv_err(path: &Path, e: csv::Error) -> Error {
     }
 }
 
-/// nodes.csv: x,y,s,t,w,psi_x,psi_y,pressure,gap,V,sigma,s1_bottom,s1_top,contact (whole plate),
-/// each header with its unit (`w [in]`); `f` in the units of `system` ([`FullField::in_units`]).
+/// nodes.csv: x,y,s,t,w,psi_x,psi_y,pressure,gap,V,sigma,s1_bottom,s1_top,contact (whole plate:
+/// on a shaped plate the nodes of its cells only), each header with its unit (`w [in]`); `f` in
+/// the units of `system` ([`FullField::in_units`]).
 pub fn write_nodes(path: &Path, f: &FullField, system: Option<UnitSystem>) -> Result<()> {
     let columns = f.columns();
     let mut header: Vec<String> = columns
@@ -27,7 +28,8 @@ pub fn write_nodes(path: &Path, f: &FullField, system: Option<UnitSystem>) -> Re
         .map(|(name, m, _)| m.header(name, system))
         .collect();
     header.push(Measure::Number.header("contact", system));
-    let rows = (0..f.x.len()).map(|i| {
+    let on = f.node_on_plate();
+    let rows = (0..f.x.len()).filter(|&i| on[i]).map(|i| {
         let mut rec: Vec<String> = columns
             .iter()
             .map(|(_, _, c)| format!("{:.12e}", c[i]))
@@ -39,14 +41,21 @@ pub fn write_nodes(path: &Path, f: &FullField, system: Option<UnitSystem>) -> Re
 }
 
 /// elements.csv: x,y,mx,my,mxy,qx,qy and the faces' stresses (sx_bottom … angle_top) at element
-/// centres, each header with its unit; `e` in the units of `system`.
-pub fn write_elements(path: &Path, e: &ElementField, system: Option<UnitSystem>) -> Result<()> {
+/// centres (on a shaped plate its cells only: `plate`, [`FullField::plate`], empty for all),
+/// each header with its unit; `e` in the units of `system`.
+pub fn write_elements(
+    path: &Path,
+    e: &ElementField,
+    plate: &[bool],
+    system: Option<UnitSystem>,
+) -> Result<()> {
     let columns = e.columns();
     let header: Vec<String> = columns
         .iter()
         .map(|(name, m, _)| m.header(name, system))
         .collect();
-    let rows = (0..e.x.len()).map(|i| {
+    let on = |i: usize| plate.get(i).copied().unwrap_or(true);
+    let rows = (0..e.x.len()).filter(move |&i| on(i)).map(|i| {
         columns
             .iter()
             .map(|(_, _, c)| format!("{:.12e}", c[i]))
@@ -298,12 +307,17 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
             units.moment(),
             units.force(),
         );
+        // A shaped plate may have no plate at the centre or the corner (NaN in summary.json).
+        let at = |v: f64| match v.is_finite() {
+            true => format!("{:.3} {}", units.from_v(v), defl.unit),
+            false => "off the plate".to_string(),
+        };
         l.push(format!(
-            "  deflection : max {:.3} {u}, centre {:.3} {u}, corner {:.3} {u} (downward)",
+            "  deflection : max {:.3} {}, centre {}, corner {} (downward)",
             defl.apply(s.w_max),
-            units.from_v(s.V_center),
-            units.from_v(s.V_corner),
-            u = defl.unit
+            defl.unit,
+            at(s.V_center),
+            at(s.V_corner),
         ));
         l.push(format!(
             "  pressure   : nodal peak {:.1} {}{}",
@@ -331,12 +345,13 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
             r.relative_error,
             u = force.unit
         ));
-        // Plate area 2L × 2μL; extents are fractions of L, μL and the half-diagonal.
+        // Plate area 2L × 2μL (times the shaped plate's share of it); extents are fractions of
+        // L, μL and the half-diagonal.
         let mu = g.mu;
         let plate_area = units.from_l(2.0) * units.from_l(2.0 * mu);
         // The plan area in the area unit (m², ft²) from the lengths' (m, in).
         let (len, area) = (units.length(), units.area());
-        let plate_area = plate_area / (len.factor * len.factor) * area.factor;
+        let plate_area = plate_area / (len.factor * len.factor) * area.factor * s.plate_fraction;
         l.push(format!(
             "  contact    : {:.1} % of the plate ({:.2} {a}), radius {:.2} {u}, extent x {:.2} {u}, y {:.2} {u}, diagonal {:.2} {u} from the centre",
             100.0 * s.contact_fraction,

@@ -215,17 +215,18 @@ pub fn negative_fraction(f: [f64; 4]) -> f64 {
 }
 
 impl FullField {
-    /// Contact area / plate area: the exact area of {φ < 0} of the bilinear would-be gap,
+    /// Contact area / plate area (a shaped plate's own cells): the exact area of {φ < 0} of the bilinear would-be gap,
     /// element by element ([`negative_fraction`]), each from its own corners (its own side of
     /// a joint). Exactly 1 when every node is in contact.
     pub fn contact_fraction(&self) -> f64 {
-        let mut sum = 0.0;
+        let (mut sum, mut cells) = (0.0, 0);
         for j in 0..self.ny {
-            for i in 0..self.nx {
+            for i in (0..self.nx).filter(|&i| self.is_plate(i, j)) {
                 sum += negative_fraction(self.element_nodes(i, j).map(|k| self.signed_gap[k]));
+                cells += 1;
             }
         }
-        sum / (self.nx * self.ny) as f64
+        sum / cells.max(1) as f64
     }
 
     /// The contact boundary: the zero level set of the bilinear would-be gap by marching
@@ -234,7 +235,7 @@ impl FullField {
     pub fn contact_boundary(&self) -> Vec<BoundarySegment> {
         let mut out = Vec::new();
         for j in 0..self.ny {
-            for i in 0..self.nx {
+            for i in (0..self.nx).filter(|&i| self.is_plate(i, j)) {
                 let c = self.element_nodes(i, j);
                 let f = c.map(|k| self.signed_gap[k]);
                 let ins = f.map(inside);

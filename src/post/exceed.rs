@@ -196,7 +196,7 @@ pub fn area_above(field: &FullField, values: &[f64], level: f64) -> Result<f64> 
     let g = Levelled::new(field, values, level)?;
     let mut sum = 0.0;
     for j in 0..field.ny {
-        for i in 0..field.nx {
+        for i in (0..field.nx).filter(|&i| field.is_plate(i, j)) {
             let c = g.cell(i, j);
             let (x0, y0) = g.corner(i, j, 0);
             let (x1, y1) = g.corner(i, j, 2);
@@ -223,7 +223,7 @@ pub fn level_contour(field: &FullField, values: &[f64], level: f64) -> Result<Ve
     const NONE: usize = usize::MAX;
     let mut at_edge = vec![[NONE; 2]; n_edges];
     for j in 0..field.ny {
-        for i in 0..field.nx {
+        for i in (0..field.nx).filter(|&i| field.is_plate(i, j)) {
             let Classified { up, cross, centre } = g.classify(i, j);
             let mut pairs: Vec<(usize, usize)> = Vec::with_capacity(2);
             let crossed: Vec<usize> = (0..4).filter(|&e| cross[e].is_some()).collect();
@@ -303,7 +303,7 @@ pub fn pieces_above(field: &FullField, values: &[f64], level: f64) -> Result<Vec
     let g = Levelled::new(field, values, level)?;
     let mut out = Vec::new();
     for j in 0..field.ny {
-        for i in 0..field.nx {
+        for i in (0..field.nx).filter(|&i| field.is_plate(i, j)) {
             let Classified { up, cross, centre } = g.classify(i, j);
             if !up.iter().any(|&u| u) {
                 continue;

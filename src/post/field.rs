@@ -79,6 +79,12 @@ pub struct FullField {
     pub corners: Option<Vec<[usize; 4]>>,
     /// The panel (column + row · columns) of each element; empty without a layout.
     pub panel: Vec<u32>,
+    /// Whether each element (ie + je nx) is plate; empty on a plate that is its whole
+    /// rectangle. The nodes of a shaped plate that no plate element holds keep their place in
+    /// the arrays with zero values, out of contact: what reads element by element skips the
+    /// cells outside ([`Self::is_plate`]), what lists nodes skips those nodes
+    /// ([`Self::node_on_plate`]).
+    pub plate: Vec<bool>,
     /// The joint lines of the plate (every kind), in the scene's order.
     pub joints: Vec<JointLine>,
 }
@@ -107,6 +113,54 @@ impl FullField {
             self.extra_grid[n - self.n_grid()]
         };
         (g % self.nodes_x(), g / self.nodes_x())
+    }
+
+    /// True when element (i, j) is plate.
+    pub fn is_plate(&self, i: usize, j: usize) -> bool {
+        self.plate.get(i + j * self.nx).copied().unwrap_or(true)
+    }
+
+    /// True when the point (s, t) ∈ [−1, 1]² lies on the plate: in the closure of a plate cell
+    /// (always on a plate that is its whole rectangle).
+    pub fn on_plate_at(&self, s: f64, t: f64) -> bool {
+        if self.plate.is_empty() {
+            return true;
+        }
+        let f = |v: f64, n: usize| (v + 1.0) * 0.5 * n as f64;
+        let (fx, fy) = (f(s, self.nx), f(t, self.ny));
+        let near = |v: f64, n: usize| {
+            let lo = ((v - 1e-9).floor().max(0.0) as usize).min(n - 1);
+            let hi = ((v + 1e-9).floor().max(0.0) as usize).min(n - 1);
+            lo..=hi
+        };
+        near(fx, self.nx).any(|i| near(fy, self.ny).any(|j| self.is_plate(i, j)))
+    }
+
+    /// The plate's cells over all cells: its area over its bounding rectangle's (1 on a plate
+    /// that is its whole rectangle).
+    pub fn plate_fraction(&self) -> f64 {
+        match self.plate.is_empty() {
+            true => 1.0,
+            false => self.plate.iter().filter(|&&p| p).count() as f64 / self.plate.len() as f64,
+        }
+    }
+
+    /// Whether each node copy belongs to a plate element (all true on a plate that is its
+    /// whole rectangle).
+    pub fn node_on_plate(&self) -> Vec<bool> {
+        let mut on = vec![self.plate.is_empty(); self.n_nodes()];
+        if !self.plate.is_empty() {
+            for j in 0..self.ny {
+                for i in 0..self.nx {
+                    if self.is_plate(i, j) {
+                        for n in self.element_nodes(i, j) {
+                            on[n] = true;
+                        }
+                    }
+                }
+            }
+        }
+        on
     }
 
     /// The node copies at the corners of element (i, j), counter-clockwise from (i, j): its own

@@ -11,6 +11,7 @@
 
 pub mod average;
 pub mod boundary;
+pub mod corner;
 pub mod exceed;
 pub mod field;
 pub mod joints;
@@ -119,6 +120,8 @@ pub struct Report {
     pub elements: ElementField,
     /// Profiles.
     pub profiles: Vec<Profile>,
+    /// The plate's area over its bounding rectangle's (1 unless it is shaped).
+    pub plate_fraction: f64,
     /// Largest deflection (physical).
     pub w_max: f64,
     /// Largest V.
@@ -247,13 +250,18 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
     let profiles = profiles(&field);
     let v_max = field.v.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
     let w_max = field.w.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
-    let v_center = field.interpolate(&field.v, 0.0, 0.0);
+    // NaN where a shaped plate has no plate (an opening at the centre, the corner cut away).
+    let off = |s: f64, t: f64, v: f64| if field.on_plate_at(s, t) { v } else { f64::NAN };
+    let v_center = off(0.0, 0.0, field.interpolate(&field.v, 0.0, 0.0));
     // The corner (+L, +μL) is the last grid node (one element: never doubled).
-    let v_corner = field.v[field.n_grid() - 1];
+    let v_corner = off(1.0, 1.0, field.v[field.n_grid() - 1]);
 
-    // Contact measures from the boundary located inside the elements.
+    // Contact measures from the boundary located inside the elements; on a shaped plate the
+    // fraction is of its own area, `plate_fraction` of the box's.
     let contact_fraction = field.contact_fraction();
-    let contact_radius = (contact_fraction * 4.0 * mu / std::f64::consts::PI).sqrt();
+    let plate_fraction = field.plate_fraction();
+    let contact_radius =
+        (contact_fraction * plate_fraction * 4.0 * mu / std::f64::consts::PI).sqrt();
     let contact_extent = Extent {
         x: field.contact_extent_along(1.0, 0.0),
         y: field.contact_extent_along(0.0, 1.0),
@@ -318,7 +326,7 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
             max: pressure_max,
             nodal_utilisation: pressure_max / allowable,
             area_exceeding: area,
-            fraction_exceeding: area / (lx * ly),
+            fraction_exceeding: area / (lx * ly * plate_fraction),
         }
     });
     let length = match model.physical {
@@ -328,6 +336,12 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
     let mut notes: Vec<String> = average::edge_note(model.groups.foundation(), &length)
         .into_iter()
         .collect();
+    notes.extend(corner::notes(
+        &field,
+        model.groups.nu,
+        [("bottom", &stress.bottom), ("top", &stress.top)],
+        if model.physical.is_some() { "m" } else { "L" },
+    ));
     // The dual-tire print's rectangle stands only along the grid: at other headings each tire
     // is a square of its contact area (README, "Pavement loads").
     for v in model.vehicles.iter().filter(|v| !v.square) {
@@ -343,6 +357,7 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
         }
     }
     Report {
+        plate_fraction,
         notes,
         joints,
         stress,
@@ -390,8 +405,13 @@ pub fn profiles(field: &FullField) -> Vec<Profile> {
         coords.dedup_by(|x, y| (*x - *y).abs() < 1e-12);
         Profile {
             line: name,
+            // A shaped plate's profile skips the points off it (an opening, a cut-away part).
             points: coords
                 .into_iter()
+                .filter(|&c| {
+                    let u = 0.5 * (c + 1.0);
+                    field.on_plate_at(a.0 + u * (b.0 - a.0), a.1 + u * (b.1 - a.1))
+                })
                 .map(|c| {
                     let u = 0.5 * (c + 1.0);
                     let (s, t) = (a.0 + u * (b.0 - a.0), a.1 + u * (b.1 - a.1));

@@ -73,7 +73,7 @@ pub(super) fn recover_principal(mesh: &Mesh, face: &FaceStress) -> Vec<f64> {
     let n = mesh.n_nodes();
     let mut sum = vec![[0.0; 3]; n];
     let mut count = vec![0u32; n];
-    for e in 0..mesh.n_elements() {
+    for e in mesh.elements() {
         for &node in &mesh.element_nodes(e) {
             sum[node][0] += face.sx[e];
             sum[node][1] += face.sy[e];

@@ -164,36 +164,83 @@ pub(super) fn fields(
         }),
         ..FullField::default()
     };
+    // The field's numbering: every grid node first (on a shaped plate those outside it too,
+    // zero and out of contact, read by no plate cell), then the extra copies; the whole
+    // mesh's own numbering skips the nodes outside the plate.
+    let n_grid = nnx * (ny + 1);
+    let n_first = n - field.extra_grid.len();
+    let index = |k: usize| {
+        if k < n_first {
+            wm.grid_of(k)
+        } else {
+            n_grid + (k - n_first)
+        }
+    };
+    let n_field = n_grid + field.extra_grid.len();
     let mut full_u = vec![[0.0; 3]; n];
+    for g in 0..n_field {
+        let gg = if g < n_grid {
+            g
+        } else {
+            field.extra_grid[g - n_grid]
+        };
+        let (ii, jj) = (gg % nnx, gg / nnx);
+        let xu = -1.0 + ii as f64 * 2.0 / nx as f64;
+        let yu = mu * (-1.0 + jj as f64 * 2.0 / ny as f64);
+        field.x.push(xu * ph.half_length);
+        field.y.push(yu * ph.half_length);
+        field.s.push(xu);
+        field.t.push(yu / mu);
+    }
+    for v in [
+        &mut field.w,
+        &mut field.psi_x,
+        &mut field.psi_y,
+        &mut field.pressure,
+        &mut field.gap,
+        &mut field.signed_gap,
+        &mut field.v,
+        &mut field.sigma,
+    ] {
+        v.resize(n_field, 0.0);
+    }
+    field.contact.resize(n_field, false);
     for (k, &(m, sx, sy)) in whole.source.iter().enumerate() {
         let get = |d: Dof| ops.dofs.eq(m, d).map_or(0.0, |e| sol.u[e]);
         let w = get(Dof::W);
         let px = sx * get(Dof::PsiX);
         let py = sy * get(Dof::PsiY);
         full_u[k] = [w, px, py];
-        let g = if k < nnx * (ny + 1) {
-            k
-        } else {
-            field.extra_grid[k - nnx * (ny + 1)]
-        };
-        let (ii, jj) = (g % nnx, g / nnx);
-        let xu = -1.0 + ii as f64 * 2.0 / nx as f64;
-        let yu = mu * (-1.0 + jj as f64 * 2.0 / ny as f64);
         let r = sol.sigma[m];
         let gap = sol.gap[m] / areas[m];
-        field.x.push(xu * ph.half_length);
-        field.y.push(yu * ph.half_length);
-        field.s.push(xu);
-        field.t.push(yu / mu);
-        field.w.push(w * ph.deflection());
-        field.psi_x.push(px * ph.rotation());
-        field.psi_y.push(py * ph.rotation());
-        field.pressure.push(r * ph.pressure());
-        field.gap.push(gap * ph.deflection());
-        field.signed_gap.push(phi[m] * ph.deflection());
-        field.v.push(w);
-        field.sigma.push(mu * r);
-        field.contact.push(r > threshold);
+        let i = index(k);
+        field.w[i] = w * ph.deflection();
+        field.psi_x[i] = px * ph.rotation();
+        field.psi_y[i] = py * ph.rotation();
+        field.pressure[i] = r * ph.pressure();
+        field.gap[i] = gap * ph.deflection();
+        field.signed_gap[i] = phi[m] * ph.deflection();
+        field.v[i] = w;
+        field.sigma[i] = mu * r;
+        field.contact[i] = r > threshold;
+    }
+    if let Some(t) = wm.topo.as_ref().filter(|t| t.is_shaped()) {
+        field.plate = (0..wm.n_elements()).map(|e| t.is_live(e)).collect();
+        field.corners = Some(
+            t.corners
+                .iter()
+                .enumerate()
+                .map(|(e, c)| {
+                    if t.is_live(e) {
+                        c.map(index)
+                    } else {
+                        let (i, j) = wm.element_ij(e);
+                        let g = i + j * nnx;
+                        [g, g + 1, g + 1 + nnx, g + nnx]
+                    }
+                })
+                .collect(),
+        );
     }
 
     // Element resultants on the whole plate. A temperature load's initial curvature carries
@@ -209,6 +256,25 @@ pub(super) fn fields(
         .map_or(vec![PanelSection::REFERENCE], |l| l.sections());
     let mut elements = ElementField::default();
     for e in 0..wm.n_elements() {
+        if !wm.is_live(e) {
+            // A cell outside a shaped plate: its place kept (rows are ie + je nx), no values.
+            let (xc, yc) = wm.element_centre(e);
+            elements.x.push(xc * ph.half_length);
+            elements.y.push(yc * ph.half_length);
+            for v in [
+                &mut elements.mx,
+                &mut elements.my,
+                &mut elements.mxy,
+                &mut elements.qx,
+                &mut elements.qy,
+                &mut elements.thickness,
+            ] {
+                v.push(0.0);
+            }
+            elements.bottom.push(0.0, 0.0, 0.0);
+            elements.top.push(0.0, 0.0, 0.0);
+            continue;
+        }
         let p = wm.panel_of(e);
         let ratio = ratios.get(p).copied().unwrap_or(PanelSection::REFERENCE);
         let section = ops.sections.get(p).copied().unwrap_or(ops.section);
@@ -242,7 +308,14 @@ pub(super) fn fields(
         elements.top.push(t[0] * s, t[1] * s, t[2] * s);
         elements.thickness.push(h * ph.half_length);
     }
-    field.s1_bottom = stress::recover_principal(wm, &elements.bottom);
-    field.s1_top = stress::recover_principal(wm, &elements.top);
+    let in_field = |values: Vec<f64>| {
+        let mut out = vec![0.0; n_field];
+        for (k, v) in values.into_iter().enumerate() {
+            out[index(k)] = v;
+        }
+        out
+    };
+    field.s1_bottom = in_field(stress::recover_principal(wm, &elements.bottom));
+    field.s1_top = in_field(stress::recover_principal(wm, &elements.top));
     (field, elements, full_u)
 }

@@ -43,6 +43,7 @@ impl Model {
                 load: Vec::new(),
                 combination: Vec::new(),
                 void: Vec::new(),
+                opening: Vec::new(),
                 joint: Vec::new(),
                 panel: Vec::new(),
                 traffic: None,

@@ -96,7 +96,7 @@ pub(super) fn layout(file: &SceneFile, frame: &Frame) -> Result<Layout> {
     }
     Ok(Layout {
         joints,
-        panels: Vec::new(),
+        ..Layout::default()
     })
 }
 

@@ -12,6 +12,8 @@
 //! * the soils read their own keys ([`crate::foundation::soil`]);
 //! * `joints` and `panels`: `[[joint]]` and `[[panel]]` into the model's
 //!   [`crate::layout::Layout`], and the loads a joint line would split;
+//! * `outline`: `[plate] outline` and `[[opening]]` into the same layout, and the loads that
+//!   would fall off the plate;
 //! * [`builder`]: [`Model::builder`], the same validation from Rust without writing TOML.
 
 mod bearing;
@@ -20,6 +22,7 @@ pub mod convert;
 mod joints;
 mod load_spec;
 mod loads;
+mod outline;
 pub mod overrides;
 mod panels;
 pub mod plausible;

@@ -28,6 +28,10 @@ pub struct PlateSpec {
     /// Coefficient of thermal expansion α, 1/K; needed only with a temperature load.
     #[serde(default)]
     pub thermal_expansion: Option<f64>,
+    /// The plate's outline, m: corners [x, y] in order, edges along the mesh's grid lines,
+    /// inside the `length` × `width` box (which the mesh covers); default the box itself.
+    #[serde(default)]
+    pub outline: Option<Vec<[f64; 2]>>,
 }
 
 impl PlateSpec {
@@ -48,6 +52,7 @@ impl PlateSpec {
             poissons_ratio,
             shear_correction: None,
             thermal_expansion: None,
+            outline: None,
         }
     }
 }
@@ -161,6 +166,22 @@ pub struct VoidSpec {
     /// Depth, m (SI), or in the loads' units of V (dimensionless: depth · D / L² in the
     /// force unit of the loads).
     pub depth: f64,
+}
+
+/// One `[[opening]]`: a hole through the slab — no plate and no soil contact inside — given as
+/// a rectangle (`x`, `y`) or a polygon (`outline`), edges along the mesh's grid lines.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OpeningSpec {
+    /// [x0, x1]: m, or s in a dimensionless scene.
+    #[serde(default)]
+    pub x: Option<[f64; 2]>,
+    /// [y0, y1]: m, or t in a dimensionless scene.
+    #[serde(default)]
+    pub y: Option<[f64; 2]>,
+    /// Corners [x, y] in order (instead of `x` and `y`).
+    #[serde(default)]
+    pub outline: Option<Vec<[f64; 2]>>,
 }
 
 /// One `[[combination]]`: factors on named load cases, solved as its own contact problem.
@@ -504,6 +525,9 @@ pub struct SceneFile {
     /// Voids under the plate.
     #[serde(default)]
     pub void: Vec<VoidSpec>,
+    /// Holes through the slab.
+    #[serde(default)]
+    pub opening: Vec<OpeningSpec>,
     /// Joint lines cutting the plate into panels.
     #[serde(default)]
     pub joint: Vec<JointSpec>,

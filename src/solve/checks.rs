@@ -112,7 +112,9 @@ pub fn check_feasible_jointed(ops: &Operators) -> Result<()> {
     let n_clusters = topo.n_clusters();
     let columns = topo.layout.panel_counts()[0];
     let panels = |c: usize| -> String {
-        let mut ids: Vec<u32> = (0..ops.mesh.n_elements())
+        let mut ids: Vec<u32> = ops
+            .mesh
+            .elements()
             .filter(|&e| topo.cluster[topo.piece[e] as usize] as usize == c)
             .map(|e| topo.panel[e])
             .collect();

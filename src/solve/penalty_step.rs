@@ -166,7 +166,7 @@ impl Backend {
                     }
                 }
                 // Every σσ entry a penalty can touch: couplings of nodes of one element.
-                for e in 0..ops.mesh.n_elements() {
+                for e in ops.mesh.elements() {
                     for a in ops.mesh.element_nodes(e) {
                         for b in ops.mesh.element_nodes(e) {
                             tri.add_triplet(n + a, n + b, 0.0);

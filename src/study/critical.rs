@@ -708,6 +708,25 @@ fn grid(model: &Model, k: usize, options: &CriticalOptions) -> Result<Grid> {
             }
         }
     }
+    // On a shaped plate, the positions that keep every print on its cells.
+    if model.layout.is_shaped() {
+        let mut kept = Vec::with_capacity(points.len());
+        for p in points {
+            if model.prints_on_plate(k, p)? {
+                kept.push(p);
+            }
+        }
+        if kept.is_empty() {
+            return Err(Error::invalid(
+                "load",
+                format!(
+                    "no position of the grid keeps the prints of `{}` on the plate: every one falls on an opening or outside the outline — refine the grid or check the outline",
+                    options.load
+                ),
+            ));
+        }
+        points = kept;
+    }
     // The largest step between neighbouring coordinates of the first heading's points.
     let first: Vec<&[f64; 3]> = points.iter().take_while(|p| p[2] == headings[0]).collect();
     let step = |axis: usize| {

@@ -55,6 +55,11 @@ class Solution:
       σ₁ from x, degrees), and the same ``…_top``. On a plate with panels each element's
       moments and stresses are its own panel's (σ = ±6m/H_p²).
 
+    On a plate of another outline (``[plate] outline``, ``[[opening]]``) the arrays cover its
+    bounding rectangle: ``plate_nodes`` (shape ``(ny + 1, nx + 1)``) and ``plate_cells``
+    (``(ny, nx)``) are True on the plate, and every value off it is NaN (its coordinates
+    stay), so that ``np.nanmax`` and plotting skip the openings.
+
     On a jointed plate (``[[joint]]``) the nodal arrays above hold one copy of each node: on a
     joint line the copy of the lower / left side. The other copies are in
 
@@ -87,6 +92,11 @@ class Solution:
         self.contact = self.contact.astype(bool)
         for name in ELEMENT:
             setattr(self, name, _array(fields[name], eshape))
+        # Which nodes and elements are plate (all of them on a rectangle).
+        self.plate_nodes = (_array(fields["plate_nodes"], shape) if "plate_nodes" in fields
+                            else np.ones_like(self.w)).astype(bool)
+        self.plate_cells = (_array(fields["plate_cells"], eshape) if "plate_cells" in fields
+                            else np.ones_like(self.mx)).astype(bool)
         extra = fields.get("joint_nodes") or {}
         self.joint_nodes: Dict[str, np.ndarray] = {
             k: _array(extra[k], None) if k in extra else np.zeros(0) for k in JOINT_NODES}

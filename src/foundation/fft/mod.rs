@@ -371,9 +371,11 @@ impl ToeplitzCompliance {
             field.iter_mut().for_each(|v| *v = 0.0);
             if let Some(gather) = &self.gather {
                 let at = &gather[b * full[0] * full[1]..(b + 1) * full[0] * full[1]];
+                // A cell outside a shaped plate reads no pressure (DEAD).
                 for ie in 0..full[0] {
                     for je in 0..full[1] {
-                        field[ie * m2 + je] = x[at[ie * full[1] + je] as usize];
+                        let node = at[ie * full[1] + je];
+                        field[ie * m2 + je] = if node == DEAD { 0.0 } else { x[node as usize] };
                     }
                 }
                 continue;
@@ -413,6 +415,7 @@ impl ToeplitzCompliance {
                 let row = (ie + shift[0]) * m2;
                 for je in 0..self.mesh.ny {
                     let node = match self.gather {
+                        Some(_) if !self.mesh.is_live(ie + je * nx) => continue,
                         Some(_) => self.mesh.element_nodes(ie + je * nx)[a],
                         None => (ie + ax) + (je + ay) * nx1,
                     };
@@ -469,7 +472,7 @@ impl ToeplitzCompliance {
         let full = self.mesh.full_elements();
         let per = full[0] * full[1];
         let mut readers: Vec<Vec<(isize, isize, usize)>> = vec![Vec::new(); self.len()];
-        for (k, &node) in gather.iter().enumerate() {
+        for (k, &node) in gather.iter().enumerate().filter(|(_, &n)| n != DEAD) {
             let (b, cell) = (k / per, k % per);
             readers[node as usize].push(((cell / full[1]) as isize, (cell % full[1]) as isize, b));
         }
@@ -493,7 +496,10 @@ impl ToeplitzCompliance {
     }
 }
 
-/// The gather map of a jointed mesh (see [`ToeplitzCompliance`]'s `gather`): whole-plate element
+/// The gather map's entry for a cell outside a shaped plate: no node, no pressure.
+const DEAD: u32 = u32::MAX;
+
+/// The gather map of a jointed or shaped mesh (see [`ToeplitzCompliance`]'s `gather`): whole-plate element
 /// (I, J) is the model element at |I − shift| (mirrored: shift − 1 − I) with its corners
 /// reflected; `None` on a plain grid.
 fn gather_map(mesh: &Mesh, shift: [usize; 2]) -> Option<Vec<u32>> {
@@ -519,8 +525,12 @@ fn gather_map(mesh: &Mesh, shift: [usize; 2]) -> Option<Vec<u32>> {
                 if fy {
                     corner = pairs::MIRROR_Y[corner];
                 }
-                let node = mesh.element_nodes(mi + mj * mesh.nx)[corner];
-                gather[(b * full[0] + ie) * full[1] + je] = node as u32;
+                let e = mi + mj * mesh.nx;
+                gather[(b * full[0] + ie) * full[1] + je] = if mesh.is_live(e) {
+                    mesh.element_nodes(e)[corner] as u32
+                } else {
+                    DEAD
+                };
             }
         }
     }

@@ -147,6 +147,7 @@ fn jointed_layout() -> Layout {
             joint(Axis::X, 0.25, JointKind::Continuous),
         ],
         panels: Vec::new(),
+        ..Layout::default()
     }
 }
 
@@ -205,6 +206,7 @@ fn gather_map_of_an_uncut_layout_is_the_plain_one() {
     let l = Layout {
         joints: vec![joint(Axis::X, 0.5, JointKind::Continuous)],
         panels: Vec::new(),
+        ..Layout::default()
     };
     for (sx, sy) in [(false, false), (true, false), (true, true)] {
         let plain = Mesh::new(2.0, 1.0, [8, 6], sx, sy);

@@ -96,7 +96,7 @@ fn contact_picture<'a>(
     };
     let mut cells = Vec::with_capacity(field.nx * field.ny);
     for j in 0..field.ny {
-        for i in 0..field.nx {
+        for i in (0..field.nx).filter(|&i| field.is_plate(i, j)) {
             let c = cell_nodes(field, i, j);
             let mean = c.iter().map(|&k| values[k]).sum::<f64>() / 4.0;
             let lifted = mean.is_nan() || mean <= 0.0 || c.iter().all(|&k| !field.contact[k]);
@@ -226,7 +226,7 @@ pub fn write_field_map(
     let shown = map.scale;
     let mut cells = Vec::with_capacity(elements);
     for j in 0..field.ny {
-        for i in 0..field.nx {
+        for i in (0..field.nx).filter(|&i| field.is_plate(i, j)) {
             let c = cell_nodes(field, i, j);
             let value = if nodal {
                 c.iter().map(|&k| map.values[k]).sum::<f64>() / 4.0

@@ -100,6 +100,55 @@ pub(super) fn boundary<DB: DrawingBackend>(
     Ok(())
 }
 
+/// Draw the edges of a shaped plate (its outline and its openings): every side of a plate
+/// cell that borders a cell outside the plate or the box, as the plate's own edge (a thicker
+/// line than the box's). Nothing on a plate that is its whole rectangle.
+pub(super) fn shape<DB: DrawingBackend>(
+    chart: &mut Plan<'_, DB>,
+    field: &FullField,
+) -> DrawResult<()> {
+    if field.plate.is_empty() {
+        return Ok(());
+    }
+    let (nx, ny) = (field.nx, field.ny);
+    let n1 = nx + 1;
+    let x = |i: usize| field.x[i];
+    let y = |j: usize| field.y[j * n1];
+    let plate = |i: isize, j: isize| {
+        i >= 0
+            && j >= 0
+            && (i as usize) < nx
+            && (j as usize) < ny
+            && field.is_plate(i as usize, j as usize)
+    };
+    let mut edges: Vec<[(f64, f64); 2]> = Vec::new();
+    for j in 0..ny {
+        for i in (0..nx).filter(|&i| field.is_plate(i, j)) {
+            let (ii, jj) = (i as isize, j as isize);
+            if !plate(ii, jj - 1) {
+                edges.push([(x(i), y(j)), (x(i + 1), y(j))]);
+            }
+            if !plate(ii + 1, jj) {
+                edges.push([(x(i + 1), y(j)), (x(i + 1), y(j + 1))]);
+            }
+            if !plate(ii, jj + 1) {
+                edges.push([(x(i), y(j + 1)), (x(i + 1), y(j + 1))]);
+            }
+            if !plate(ii - 1, jj) {
+                edges.push([(x(i), y(j)), (x(i), y(j + 1))]);
+            }
+        }
+    }
+    chart
+        .draw_series(
+            edges
+                .into_iter()
+                .map(|e| PathElement::new(e, style::OUTLINE.stroke_width(2))),
+        )
+        .map_err(txt)?;
+    Ok(())
+}
+
 /// Corner node copies of whole-plate element (i, j), counter-clockwise from (i, j): on a
 /// jointed plate the element's own side of each joint.
 pub(super) fn cell_nodes(field: &FullField, i: usize, j: usize) -> [usize; 4] {
@@ -115,27 +164,90 @@ pub(super) fn joints<DB: DrawingBackend>(
     (y0, y1): (f64, f64),
 ) -> DrawResult<()> {
     for j in &field.joints {
-        let line = match j.axis {
-            Axis::X => [(j.at, y0), (j.at, y1)],
-            Axis::Y => [(x0, j.at), (x1, j.at)],
-        };
         let ((dash, gap), colour) = style::joint(j.kind);
-        chart
-            .draw_series(std::iter::once(PathElement::new(
-                line,
-                style::HALO.stroke_width(4),
-            )))
-            .map_err(txt)?;
-        chart
-            .draw_series(DashedLineSeries::new(
-                line,
-                dash,
-                gap,
-                colour.stroke_width(2),
-            ))
-            .map_err(txt)?;
+        for line in joint_pieces(field, j, (x0, x1), (y0, y1)) {
+            chart
+                .draw_series(std::iter::once(PathElement::new(
+                    line,
+                    style::HALO.stroke_width(4),
+                )))
+                .map_err(txt)?;
+            chart
+                .draw_series(DashedLineSeries::new(
+                    line,
+                    dash,
+                    gap,
+                    colour.stroke_width(2),
+                ))
+                .map_err(txt)?;
+        }
     }
     Ok(())
+}
+
+/// The pieces of a joint line that run over the plate: the whole line across the box, or on a
+/// shaped plate its runs of cell edges with plate on at least one side.
+fn joint_pieces(
+    field: &FullField,
+    j: &crate::post::JointLine,
+    (x0, x1): (f64, f64),
+    (y0, y1): (f64, f64),
+) -> Vec<[(f64, f64); 2]> {
+    let whole = match j.axis {
+        Axis::X => [(j.at, y0), (j.at, y1)],
+        Axis::Y => [(x0, j.at), (x1, j.at)],
+    };
+    if field.plate.is_empty() {
+        return vec![whole];
+    }
+    let (nx, ny) = (field.nx, field.ny);
+    let n1 = nx + 1;
+    // The grid line of the joint, and the cells on its two sides along it.
+    let (count, coords, at): (usize, Vec<f64>, usize) = match j.axis {
+        Axis::X => {
+            let xs: Vec<f64> = (0..=nx).map(|i| field.x[i]).collect();
+            let i = nearest(&xs, j.at);
+            (ny, (0..=ny).map(|r| field.y[r * n1]).collect(), i)
+        }
+        Axis::Y => {
+            let ys: Vec<f64> = (0..=ny).map(|r| field.y[r * n1]).collect();
+            let r = nearest(&ys, j.at);
+            (nx, (0..=nx).map(|i| field.x[i]).collect(), r)
+        }
+    };
+    let on = |k: usize| {
+        let (a, b) = match j.axis {
+            Axis::X => ((at.wrapping_sub(1), k), (at, k)),
+            Axis::Y => ((k, at.wrapping_sub(1)), (k, at)),
+        };
+        let cell = |(i, r): (usize, usize)| i < nx && r < ny && field.is_plate(i, r);
+        cell(a) || cell(b)
+    };
+    let mut out = Vec::new();
+    let mut k = 0;
+    while k < count {
+        if !on(k) {
+            k += 1;
+            continue;
+        }
+        let start = k;
+        while k < count && on(k) {
+            k += 1;
+        }
+        let (s, e) = (coords[start], coords[k]);
+        out.push(match j.axis {
+            Axis::X => [(j.at, s), (j.at, e)],
+            Axis::Y => [(s, j.at), (e, j.at)],
+        });
+    }
+    out
+}
+
+/// The index of the value in `v` nearest `x`.
+fn nearest(v: &[f64], x: f64) -> usize {
+    (0..v.len())
+        .min_by(|&a, &b| (v[a] - x).abs().total_cmp(&(v[b] - x).abs()))
+        .unwrap_or(0)
 }
 
 /// Which colour table a [`ColourScale`] runs along.
@@ -405,6 +517,7 @@ impl Picture for ColourMap<'_> {
         }
         joints(&mut chart, field, xr, yr)?;
         outline(&mut chart, xr, yr)?;
+        shape(&mut chart, field)?;
         draw_marks(&mut chart, self.overlay)?;
 
         // Colour bar, its ends level with the map's (up to a quarter of the height).

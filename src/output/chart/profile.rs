@@ -26,6 +26,27 @@ use super::{titled, txt, write_svg, DrawResult, Picture, FONT};
 use crate::error::Result;
 use crate::post::{Profile, ProfilePoint};
 
+/// The runs of a profile's points between its gaps: a step along the line more than 1.5 times
+/// the median step (a shaped plate's profile has no points over an opening).
+fn runs(pts: Vec<(f64, f64)>) -> Vec<Vec<(f64, f64)>> {
+    let mut steps: Vec<f64> = pts.windows(2).map(|w| (w[1].0 - w[0].0).abs()).collect();
+    steps.sort_by(f64::total_cmp);
+    let Some(&median) = steps.get(steps.len() / 2) else {
+        return vec![pts];
+    };
+    let mut out: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
+    for p in pts {
+        let last = out.last().and_then(|r| r.last()).copied();
+        if last.is_some_and(|q| (p.0 - q.0).abs() > 1.5 * median) {
+            out.push(Vec::new());
+        }
+        if let Some(run) = out.last_mut() {
+            run.push(p);
+        }
+    }
+    out
+}
+
 /// Legend text of a profile line on a whole-line chart: where it runs, in s and t or in m.
 fn line_label(line: &str, units: &Units) -> String {
     if let Some(ph) = units.physical() {
@@ -264,14 +285,33 @@ impl Picture for ProfileChart<'_> {
                 for line in &column.lines {
                     let pts = self.points(line, sigma);
                     let stroke = line.colour.stroke_width(LINE_WIDTH);
+                    // A profile across an opening is drawn in runs, broken where it has no
+                    // points; the first run, drawn last, carries the legend's label.
+                    let mut runs = runs(pts);
+                    let first = if runs.is_empty() {
+                        Vec::new()
+                    } else {
+                        runs.remove(0)
+                    };
+                    let (dash, gap) = style::DASH;
+                    for rest in runs {
+                        if line.dashed {
+                            chart
+                                .draw_series(DashedLineSeries::new(rest, dash, gap, stroke))
+                                .map_err(txt)?;
+                        } else {
+                            chart
+                                .draw_series(LineSeries::new(rest, stroke))
+                                .map_err(txt)?;
+                        }
+                    }
                     let drawn = if line.dashed {
-                        let (dash, gap) = style::DASH;
                         chart
-                            .draw_series(DashedLineSeries::new(pts, dash, gap, stroke))
+                            .draw_series(DashedLineSeries::new(first, dash, gap, stroke))
                             .map_err(txt)?
                     } else {
                         chart
-                            .draw_series(LineSeries::new(pts, stroke))
+                            .draw_series(LineSeries::new(first, stroke))
                             .map_err(txt)?
                     };
                     if legend {

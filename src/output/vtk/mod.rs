@@ -259,7 +259,10 @@ fn write_xml<W: Write>(
 ) -> io::Result<()> {
     let mut xml = Writer::new_with_indent(out, b' ', 2);
     xml.write_event(Event::Decl(BytesDecl::new("1.0", None, None)))?;
-    let (nodes, cells) = (sizes.nodes.to_string(), sizes.cells.to_string());
+    let (nodes, cells) = (
+        sizes.nodes.to_string(),
+        plate_cells(field, sizes).to_string(),
+    );
     xml.create_element("VTKFile")
         .with_attributes([
             ("type", "UnstructuredGrid"),
@@ -283,6 +286,23 @@ fn write_xml<W: Write>(
         .map(drop)
 }
 
+/// The cells written: the grid's, less those outside a shaped plate.
+fn plate_cells(field: &FullField, sizes: &Sizes) -> usize {
+    match field.plate.is_empty() {
+        true => sizes.cells,
+        false => field.plate.iter().filter(|&&p| p).count(),
+    }
+}
+
+/// The entries of a per-element array that belong to plate cells.
+fn on_plate<'a, T>(field: &'a FullField, values: &'a [T]) -> impl Iterator<Item = &'a T> + 'a {
+    values
+        .iter()
+        .enumerate()
+        .filter(|(k, _)| field.plate.get(*k).copied().unwrap_or(true))
+        .map(|(_, v)| v)
+}
+
 /// The content of the one `Piece`: point data, cell data, points and cells.
 fn piece<W: Write>(
     xml: &mut Writer<W>,
@@ -299,14 +319,12 @@ fn piece<W: Write>(
             .with_attribute(("Scalars", active))
             .write_inner_content(|xml| {
                 for (name, values) in &content.cells {
-                    data_array(xml, Some(name), 1, values.iter().copied())?;
+                    data_array(xml, Some(name), 1, on_plate(field, values).copied())?;
                 }
                 if !field.panel.is_empty() {
                     // Panel ids are below the element count: they fit in i32 for any grid
                     // that fits in memory; saturate rather than wrap otherwise.
-                    let panel = field
-                        .panel
-                        .iter()
+                    let panel = on_plate(field, &field.panel)
                         .map(|&p| i32::try_from(p).unwrap_or(i32::MAX));
                     data_array(xml, Some("panel"), 1, panel)?;
                 }
@@ -324,13 +342,18 @@ fn piece<W: Write>(
     })?;
 
     // Node and offset numbers fit in i64: they are below the length of an allocated array.
-    let quads = (0..field.ny)
-        .flat_map(|je| (0..field.nx).map(move |ie| field.element_nodes(ie, je).map(|n| n as i64)));
+    // A shaped plate's cells outside it are not written (its points are, unused).
+    let quads = (0..field.ny).flat_map(|je| {
+        (0..field.nx)
+            .filter(move |&ie| field.is_plate(ie, je))
+            .map(move |ie| field.element_nodes(ie, je).map(|n| n as i64))
+    });
+    let n_cells = plate_cells(field, sizes);
     xml.create_element("Cells").write_inner_content(|xml| {
         data_array(xml, Some("connectivity"), 1, quads.flatten())?;
-        let offsets = (1..=sizes.cells as i64).map(|k| 4 * k);
+        let offsets = (1..=n_cells as i64).map(|k| 4 * k);
         data_array(xml, Some("offsets"), 1, offsets)?;
-        let types = std::iter::repeat_n(VTK_QUAD, sizes.cells);
+        let types = std::iter::repeat_n(VTK_QUAD, n_cells);
         data_array(xml, Some("types"), 1, types)
     })?;
     Ok(())

@@ -1,0 +1,168 @@
+//! `[plate] outline` and `[[opening]]`: the plate's shape on the structured grid, validated
+//! into the [`Layout`] in the unit system (E79), and the loads that would fall off the plate
+//! (E80).
+//!
+//! The polygons are checked in the scene's own coordinates ([`check_polygon`]: corners on grid
+//! lines, edges along them, a simple polygon inside the box); the shape as a whole on the
+//! scene's grid ([`CellMask`]): an opening that removes no plate, a plate left with no cell or
+//! in more than one piece are refused.
+
+use super::joints::Frame;
+use super::spec::{OpeningSpec, SceneFile};
+use crate::error::{Error, Result};
+use crate::layout::{Layout, Polygon};
+use crate::mesh::outline::{check_polygon, CellMask};
+use crate::model::Load;
+
+/// E79: the outline and the openings of the scene into `layout` (unit system).
+pub(super) fn shapes(file: &SceneFile, layout: &mut Layout, frame: &Frame) -> Result<()> {
+    let outline = file.plate.as_ref().and_then(|p| p.outline.as_ref());
+    if outline.is_none() && file.opening.is_empty() {
+        return Ok(());
+    }
+    // The box in scene coordinates.
+    let size = [
+        2.0 * frame.half[0] / frame.scale_xy[0],
+        2.0 * frame.half[1] / frame.scale_xy[1],
+    ];
+    let [nx, ny] = frame.elements;
+    let mut mask = CellMask::full(nx, ny);
+    if let Some(vertices) = outline {
+        let corners = check_polygon(vertices, size, frame.elements, "plate.outline")?;
+        mask = CellMask::inside(nx, ny, &corners);
+        layout.outline = Some(to_units(vertices, frame));
+    }
+    for (k, spec) in file.opening.iter().enumerate() {
+        let (vertices, field) = opening_polygon(k, spec)?;
+        let corners = check_polygon(&vertices, size, frame.elements, &field)?;
+        let hole = CellMask::inside(nx, ny, &corners);
+        let removed = mask.plate.iter().zip(&hole.plate).filter(|(&p, &h)| p && h);
+        if removed.count() == 0 {
+            return Err(Error::invalid(
+                format!("opening[{k}]"),
+                "removes no plate: it lies outside the outline or inside another opening — move it onto the plate or leave it out",
+            ));
+        }
+        mask = mask.without(&hole);
+        layout.openings.push(to_units(&vertices, frame));
+    }
+    let pieces = mask.pieces();
+    if pieces.len() > 1 {
+        let [hx, hy] = [size[0] / nx as f64, size[1] / ny as f64];
+        let centre = |c: usize| {
+            let (i, j) = (c % nx, c / nx);
+            (
+                -size[0] / 2.0 + (i as f64 + 0.5) * hx,
+                -size[1] / 2.0 + (j as f64 + 0.5) * hy,
+            )
+        };
+        let list: Vec<String> = pieces
+            .iter()
+            .map(|p| {
+                let (x, y) = centre(p[0]);
+                format!("{} cells from ({x:.3}, {y:.3})", p.len())
+            })
+            .collect();
+        return Err(Error::invalid(
+            if file.opening.is_empty() { "plate.outline" } else { "opening" },
+            format!(
+                "the outline and openings leave the plate in {} pieces that share no edge ({}): one scene is one plate — model each piece as its own scene, or join them",
+                pieces.len(),
+                list.join("; ")
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// The polygon of `[[opening]]` k (scene coordinates) and the field its errors name.
+fn opening_polygon(k: usize, spec: &OpeningSpec) -> Result<(Vec<[f64; 2]>, String)> {
+    match (&spec.outline, spec.x, spec.y) {
+        (Some(p), None, None) => Ok((p.clone(), format!("opening[{k}].outline"))),
+        (None, Some(x), Some(y)) => {
+            for (name, [a, b]) in [("x", x), ("y", y)] {
+                if !(a.is_finite() && b.is_finite() && a < b) {
+                    return Err(Error::invalid(
+                        format!("opening[{k}].{name}"),
+                        format!("[{a}, {b}] is not an interval: give [low, high] with low < high"),
+                    ));
+                }
+            }
+            let corners = vec![[x[0], y[0]], [x[1], y[0]], [x[1], y[1]], [x[0], y[1]]];
+            Ok((corners, format!("opening[{k}]")))
+        }
+        _ => Err(Error::invalid(
+            format!("opening[{k}]"),
+            "give a rectangle (`x = [x0, x1]` and `y = [y0, y1]`) or a polygon (`outline = [[x, y], …]`), not both",
+        )),
+    }
+}
+
+/// Scene coordinates to the unit system.
+fn to_units(vertices: &[[f64; 2]], frame: &Frame) -> Polygon {
+    vertices
+        .iter()
+        .map(|p| [p[0] * frame.scale_xy[0], p[1] * frame.scale_xy[1]])
+        .collect()
+}
+
+/// E80: a load wholly or partly off the plate's shape (on an opening, or outside the outline
+/// in the box). `loads` are in the unit system, in scene order.
+pub(super) fn loads_on_plate(layout: &Layout, loads: &[Load], frame: &Frame) -> Result<()> {
+    if !layout.is_shaped() {
+        return Ok(());
+    }
+    let mask = CellMask::of_layout(layout, frame.elements, frame.half[1]);
+    for (k, load) in loads.iter().enumerate() {
+        if let Some(what) = off_plate(&mask, load, frame) {
+            return Err(Error::invalid(format!("load[{k}]"), what));
+        }
+    }
+    Ok(())
+}
+
+/// Why `load` (unit system) is not wholly on the plate of `mask` (the whole plate's cells), or
+/// `None` when it is.
+pub(super) fn off_plate(mask: &CellMask, load: &Load, frame: &Frame) -> Option<String> {
+    let [hx, hy] = [
+        2.0 * frame.half[0] / mask.nx as f64,
+        2.0 * frame.half[1] / mask.ny as f64,
+    ];
+    let cell = |p: [f64; 2]| [(p[0] + frame.half[0]) / hx, (p[1] + frame.half[1]) / hy];
+    let scene = |p: [f64; 2]| [p[0] / frame.scale_xy[0], p[1] / frame.scale_xy[1]];
+    let unit = frame.unit(crate::layout::Axis::X);
+    match *load {
+        Load::Point { x, y, .. } => {
+            let [fx, fy] = cell([x, y]);
+            (!mask.holds_point(fx, fy)).then(|| {
+                let [sx, sy] = scene([x, y]);
+                format!(
+                    "the point ({sx}, {sy}) {unit} lies on an opening or outside the plate's outline: move it onto the plate"
+                )
+            })
+        }
+        Load::Patch { x, y, .. } => {
+            let [fx0, fy0] = cell([x[0], y[0]]);
+            let [fx1, fy1] = cell([x[1], y[1]]);
+            (!mask.covers([fx0, fx1], [fy0, fy1])).then(|| {
+                let ([a, c], [b, d]) = (scene([x[0], y[0]]), scene([x[1], y[1]]));
+                format!(
+                    "the loaded area [{a}, {b}] × [{c}, {d}] {unit} lies wholly or partly on an opening or outside the plate's outline: a load that falls through the slab is not carried — move it onto the plate"
+                )
+            })
+        }
+        Load::Line { from, to, .. } => {
+            // The segment at 64 points per cell it crosses: every one on the plate.
+            let [f0, f1] = [cell(from), cell(to)];
+            let n = (64.0 * ((f1[0] - f0[0]).abs() + (f1[1] - f0[1]).abs())).ceil() as usize + 1;
+            let off = (0..=n).map(|s| s as f64 / n as f64).any(|t| {
+                !mask.holds_point(f0[0] + t * (f1[0] - f0[0]), f0[1] + t * (f1[1] - f0[1]))
+            });
+            off.then(|| {
+                "the line load runs over an opening or outside the plate's outline: move it onto the plate"
+                    .to_string()
+            })
+        }
+        Load::Temperature { .. } | Load::FaceStress { .. } => None,
+    }
+}

@@ -1,0 +1,383 @@
+//! Plates of any outline (issue 35): an L posed three ways is one discrete problem; the masked
+//! mesh against OpenSees on the same masked mesh; a small opening far from the loads vanishes
+//! as it shrinks; the re-entrant corner's moment grows under refinement at the rate plate
+//! theory gives.
+
+use liftoff::entry::Outcome;
+use liftoff::method::{MethodKind, Route};
+use liftoff::scene::Overrides;
+use liftoff::{Analysis, Monitor, Source};
+
+/// A scene's analysis with `overrides`; panics naming the scene on any error.
+fn analyse(scene: &str, overrides: &Overrides) -> Analysis {
+    let problem = liftoff::load(&Source::Toml(scene), overrides).expect("scene");
+    match liftoff::run(&problem, &Monitor::NONE).expect("solve") {
+        Outcome::Single(a) => *a,
+        Outcome::Combinations(_) => panic!("one load set"),
+    }
+}
+
+fn method(kind: MethodKind) -> Overrides {
+    Overrides {
+        method: Some(kind),
+        ..Overrides::default()
+    }
+}
+
+const WINKLER: &str = "model = \"winkler\"\nmodulus = 5e7";
+const HALF_SPACE: &str = "model = \"half-space\"\nyoungs_modulus = 1e8\npoissons_ratio = 0.3";
+
+/// A 4 × 4 m box on 16 × 16 elements, 0.2 m thick, with `shape` (plate keys or tables) and
+/// unbonded contact: 120 kN on a 0.5 m square near the end of the L's lower leg, which lifts
+/// the far leg.
+fn l_scene(foundation: &str, plate_extra: &str, tables: &str) -> String {
+    format!(
+        r#"
+[plate]
+length = 4.0
+width = 4.0
+thickness = 0.2
+youngs_modulus = 30e9
+poissons_ratio = 0.2
+{plate_extra}
+[foundation]
+{foundation}
+{tables}
+[[load]]
+kind = "patch"
+x = [1.0, 1.5]
+y = [-1.5, -1.0]
+pressure = 480000.0
+[mesh]
+elements = [16, 16]
+[solver]
+contact = "unbonded"
+"#
+    )
+}
+
+const L_OUTLINE: &str =
+    "outline = [[-2.0, -2.0], [2.0, -2.0], [2.0, 0.0], [0.0, 0.0], [0.0, 2.0], [-2.0, 2.0]]";
+const L_OPENING: &str = "[[opening]]\nx = [0.0, 2.0]\ny = [0.0, 2.0]";
+const L_JOINT: &str = "[[joint]]\nx = -1.0\nkind = \"continuous\"";
+
+fn max_diff(a: &[f64], b: &[f64]) -> f64 {
+    assert_eq!(a.len(), b.len());
+    a.iter().zip(b).fold(0.0, |m, (x, y)| m.max((x - y).abs()))
+}
+
+fn max_abs(v: &[f64]) -> f64 {
+    v.iter().fold(0.0, |m, x| m.max(x.abs()))
+}
+
+/// The L as an outline, as the box less an opening, and as an outline crossed by a
+/// continuous joint (two panels of one plate) are one discrete problem: every nodal
+/// deflection and pressure agrees to round-off (1e-9 of the peak: the three assemble the same
+/// matrices in the same order, so only the solvers' own round-off differs), on Winkler and on
+/// the half-space, with the QP and the penalty, on the dense and the FFT route.
+#[test]
+fn an_l_is_the_same_problem_posed_three_ways() {
+    for foundation in [WINKLER, HALF_SPACE] {
+        for (kind, route) in [
+            (MethodKind::Qp, Route::Auto),
+            (MethodKind::Penalty, Route::Auto),
+            (MethodKind::Penalty, Route::Iterative),
+        ] {
+            if foundation == WINKLER && route == Route::Iterative {
+                continue; // Winkler has no dense or FFT T
+            }
+            let o = Overrides {
+                solver: Some(route),
+                ..method(kind)
+            };
+            let outline = analyse(&l_scene(foundation, L_OUTLINE, ""), &o);
+            let opening = analyse(&l_scene(foundation, "", L_OPENING), &o);
+            let joint = analyse(&l_scene(foundation, L_OUTLINE, L_JOINT), &o);
+            let f = &outline.report.field;
+            let scale_w = max_abs(&f.w);
+            let scale_p = max_abs(&f.pressure);
+            for (name, other) in [("opening", &opening), ("continuous joint", &joint)] {
+                let g = &other.report.field;
+                let dw = max_diff(&f.w, &g.w) / scale_w;
+                let dp = max_diff(&f.pressure, &g.pressure) / scale_p;
+                assert!(
+                    dw < 1e-9 && dp < 1e-9,
+                    "{foundation} {kind:?} {route:?}: the L as {name} differs by {dw:.2e} in w, {dp:.2e} in pressure"
+                );
+            }
+            // The plate's cells only: 3/4 of the box's 256, and its nodes 17² − 8².
+            assert_eq!(f.plate.iter().filter(|&&p| p).count(), 192);
+            assert_eq!(outline.ops.mesh.n_nodes(), 289 - 64);
+            // Unbonded and loaded at one end: the far leg lifts, so the contact is partial.
+            let c = outline.report.contact_fraction;
+            assert!(c > 0.2 && c < 0.95, "{foundation} {kind:?}: contact {c}");
+        }
+    }
+}
+
+/// OpenSees (ShellMITC4 and compression-only springs on the same masked grid,
+/// `tests/references/outline_opensees.py`, OpenSees 3.7.1) on the two scenes of
+/// `tests/scenes/`: the QP's nodal constraints are its springs, so the peak deflection, the
+/// lifted nodes and the deflection at named points agree to the solvers' tolerance — 1e-8 of
+/// the peak (OpenSees stops at a displacement increment of 1e-12; the active set's last face
+/// solve is exact to round-off).
+#[test]
+fn the_masked_mesh_matches_opensees() {
+    // (scene, live nodes, lifted nodes, w_max, [(x, y, w)]): the script's output, m.
+    type Case<'a> = (&'a str, usize, usize, f64, &'a [(f64, f64, f64)]);
+    let cases: [Case; 2] = [
+        (
+            "tests/scenes/outline-l-raft.toml",
+            481,
+            203,
+            2.7801109126667236e-3,
+            &[
+                (2.0, -2.0, 2.039955151e-3),
+                (-2.5, 2.5, 1.417422874e-3),
+                (-3.0, -3.0, -7.463858956e-4),
+                (3.0, 0.0, 5.695284810e-4),
+                (0.0, 0.0, -2.589937285e-4),
+                (0.0, 3.0, 7.942847764e-5),
+            ],
+        ),
+        (
+            "tests/scenes/outline-opening.toml",
+            410,
+            113,
+            1.583136575827516e-3,
+            &[
+                (-1.0, 0.0, 8.724524689e-4),
+                (-3.0, -2.0, -2.716374464e-4),
+                (3.0, -2.0, -6.973536269e-4),
+                (0.5, -0.5, 1.982144773e-4),
+                (2.0, -0.5, -9.010300285e-5),
+                (2.0, 0.5, 2.907638880e-4),
+            ],
+        ),
+    ];
+    for (path, live, lifted, w_max, points) in cases {
+        let problem = liftoff::load(
+            &Source::Path(std::path::Path::new(path)),
+            &method(MethodKind::Qp),
+        )
+        .expect("scene");
+        let a = match liftoff::run(&problem, &Monitor::NONE).expect("solve") {
+            Outcome::Single(a) => a,
+            Outcome::Combinations(_) => panic!("one load set"),
+        };
+        let f = &a.report.field;
+        let on = f.node_on_plate();
+        assert_eq!(
+            on.iter().filter(|&&o| o).count(),
+            live,
+            "{path}: live nodes"
+        );
+        assert_eq!(a.ops.mesh.n_nodes(), live, "{path}: the model's nodes");
+        let n_lifted = (0..f.w.len()).filter(|&k| on[k] && !f.contact[k]).count();
+        assert_eq!(n_lifted, lifted, "{path}: lifted nodes");
+        let rel = (a.summary.w_max - w_max).abs() / w_max;
+        assert!(
+            rel < 1e-8,
+            "{path}: w_max {} vs OpenSees {w_max}",
+            a.summary.w_max
+        );
+        for &(x, y, w) in points {
+            let k = (0..f.w.len())
+                .find(|&k| on[k] && (f.x[k] - x).abs() < 1e-9 && (f.y[k] - y).abs() < 1e-9)
+                .expect("a node at the point");
+            // The script prints 10 significant digits.
+            let d = (f.w[k] - w).abs();
+            assert!(
+                d < 1e-8 * w_max + 1e-9 * w.abs(),
+                "{path}: w({x}, {y}) = {} vs OpenSees {w}",
+                f.w[k]
+            );
+        }
+    }
+}
+
+/// A square opening of side s centred at (−1.5, −1.5) m in an 8 m bonded slab loaded at
+/// (−3.25, −3.25) m, 2.5 m (3 ℓ, ℓ = 0.8 m) away: the deflection under the load converges to
+/// the slab without the opening as s shrinks. A small hole acts on the far field as a
+/// disturbance of strength proportional to its area, so the change falls like s² — by 4 per
+/// halving (measured 4.07 and 4.00: the bounds [3.5, 4.5] take the next order's drift) — and is
+/// below 1e-3 of the deflection at s = 0.25 m (measured 3.8e-4; 6.2e-3 at s = 1 m).
+#[test]
+fn a_small_far_opening_vanishes_as_it_shrinks() {
+    let scene = |opening: &str| {
+        format!(
+            r#"
+[plate]
+length = 8.0
+width = 8.0
+thickness = 0.2
+youngs_modulus = 30e9
+poissons_ratio = 0.2
+{opening}
+[foundation]
+model = "winkler"
+modulus = 5e7
+[[load]]
+kind = "patch"
+x = [-3.5, -3.0]
+y = [-3.5, -3.0]
+pressure = 400000.0
+[mesh]
+elements = [64, 64]
+[solver]
+contact = "bonded"
+"#
+        )
+    };
+    let at_load = |a: &Analysis| {
+        let f = &a.report.field;
+        let k = (0..f.w.len())
+            .find(|&k| (f.x[k] + 3.25).abs() < 1e-9 && (f.y[k] + 3.25).abs() < 1e-9)
+            .expect("node");
+        f.w[k]
+    };
+    let plain = at_load(&analyse(&scene(""), &Overrides::default()));
+    let mut changes = Vec::new();
+    for s in [1.0, 0.5, 0.25] {
+        let c = -1.5;
+        let opening = format!(
+            "[[opening]]\nx = [{}, {}]\ny = [{}, {}]",
+            c - s / 2.0,
+            c + s / 2.0,
+            c - s / 2.0,
+            c + s / 2.0
+        );
+        changes.push(
+            (at_load(&analyse(&scene(&opening), &Overrides::default())) - plain).abs() / plain,
+        );
+    }
+    for pair in changes.windows(2) {
+        let ratio = pair[0] / pair[1];
+        assert!(
+            (3.5..4.5).contains(&ratio),
+            "changes {changes:?}: halving s divides the change by {ratio}, expected about 4 (s²)"
+        );
+    }
+    assert!(changes[2] < 1e-3, "changes {changes:?}");
+}
+
+/// The smallest root in (lo, hi) of f by bisection (f changes sign there).
+fn root(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
+    assert!(f(lo) * f(hi) < 0.0, "no sign change in ({lo}, {hi})");
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if f(lo) * f(mid) <= 0.0 {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// The moment m_x at the centre of the element in the corner's bisecting quadrant, next to the
+/// re-entrant corner (0, 0) of an L of side `box_m` (the box less its upper-right quarter) on
+/// `n` × `n` elements, thickness `t`, bonded on Winkler springs `k`, two equal point loads
+/// symmetric about the corner's bisector y = x.
+fn corner_moment(box_m: f64, t: f64, k: f64, n: usize) -> f64 {
+    let a = box_m / 2.0;
+    let (p, q) = (2.0 * a / 3.0, -2.0 * a / 3.0);
+    let scene = format!(
+        r#"
+[plate]
+length = {box_m}
+width = {box_m}
+thickness = {t}
+youngs_modulus = 30e9
+poissons_ratio = 0.2
+outline = [[{}, {}], [{a}, {}], [{a}, 0.0], [0.0, 0.0], [0.0, {a}], [{}, {a}]]
+[foundation]
+model = "winkler"
+modulus = {k}
+[[load]]
+kind = "point"
+x = {p}
+y = {q}
+force = 1.0e4
+[[load]]
+kind = "point"
+x = {q}
+y = {p}
+force = 1.0e4
+[mesh]
+elements = [{n}, {n}]
+symmetry = "none"
+[solver]
+contact = "bonded"
+"#,
+        -a, -a, -a, -a
+    );
+    let r = analyse(&scene, &Overrides::default()).report;
+    let h = box_m / n as f64;
+    let e = &r.elements;
+    let k = (0..e.x.len())
+        .find(|&k| (e.x[k] + h / 2.0).abs() < 1e-9 && (e.y[k] + h / 2.0).abs() < 1e-9)
+        .expect("the corner's element");
+    e.mx[k]
+}
+
+/// At the L's re-entrant corner (a free–free 270° wedge) the bending moment is singular, and
+/// the element next to the corner reads it at r ∝ h: halving the mesh multiplies its moment by
+/// 2^(1−λ), with λ the wedge's leading eigenvalue for loads symmetric about the bisector
+/// (`tests/references/williams_corner.py` derives both characteristic equations and checks
+/// them against the 4 × 4 determinant; Williams 1952). Two regimes of the Mindlin plate:
+///
+/// * elements much larger than the thickness (t = 5 mm, h from 250 to 31 mm): Kirchhoff's
+///   free edges, (3 + ν) sin λα = (1 − ν) λ sin α, α = 3π/2; λ = 0.7042 at ν = 0.2, factor
+///   1.2275 per halving;
+/// * elements much smaller than the thickness (t = 0.4 m, h from 62 to 8 mm): within a
+///   thickness of the corner the rotations carry plane-stress energy with traction-free
+///   edges, sin λα = −λ sin α, independent of ν; λ = 0.5445, factor 1.3713.
+///
+/// The finest pair's ratio is within 1 % of each (measured 1.2250 and 1.3721; the regular part
+/// of the moment and, for the thin plate, the approach of h to t are what remains), and each
+/// regime is far from the other's factor and from the antisymmetric family's (1.2897), so the
+/// test tells the three apart. This is why the report does not present the corner value as a
+/// design number.
+#[test]
+fn the_re_entrant_corner_moment_grows_at_the_wedge_rate() {
+    let nu: f64 = 0.2;
+    let alpha = 1.5 * std::f64::consts::PI;
+    let kirchhoff = root(
+        |l| (3.0 + nu) * (l * alpha).sin() - (1.0 - nu) * l * alpha.sin(),
+        0.66,
+        0.8,
+    );
+    let mindlin = root(|l| (l * alpha).sin() + l * alpha.sin(), 0.5, 0.6);
+    assert!((kirchhoff - 0.70422).abs() < 1e-4 && (mindlin - 0.54448).abs() < 1e-4);
+    for (name, lambda, box_m, t, k, meshes) in [
+        (
+            "Kirchhoff (h ≫ t)",
+            kirchhoff,
+            6.0,
+            0.005,
+            30.0,
+            [24, 48, 96, 192],
+        ),
+        (
+            "Mindlin (h ≪ t)",
+            mindlin,
+            2.0,
+            0.4,
+            3e7,
+            [32, 64, 128, 256],
+        ),
+    ] {
+        let m: Vec<f64> = meshes
+            .iter()
+            .map(|&n| corner_moment(box_m, t, k, n))
+            .collect();
+        let ratios: Vec<f64> = m.windows(2).map(|w| w[1] / w[0]).collect();
+        let expected = 2f64.powf(1.0 - lambda);
+        let last = ratios[ratios.len() - 1];
+        assert!(
+            (last / expected - 1.0).abs() < 0.01,
+            "{name}: corner moments {m:?}, ratios {ratios:?}, expected 2^(1 − {lambda:.4}) = {expected:.4}"
+        );
+    }
+}
