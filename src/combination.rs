@@ -244,7 +244,8 @@ pub struct QuantityEnvelope {
     pub min: Extreme,
 }
 
-/// Per node or element: largest and smallest over the combinations and which governs each.
+/// Per node or element: largest and smallest over the combinations and which governs each (NaN
+/// at the nodes and elements outside a shaped plate).
 #[derive(Debug, Clone, Default)]
 pub struct PointEnvelope {
     /// Largest value.
@@ -378,7 +379,12 @@ pub fn envelope(runs: &[CombinationRun]) -> Option<Envelope> {
         ("s1_bottom", "Pa", "F/L²", |o| &o.report.elements.bottom.s1),
         ("s1_top", "Pa", "F/L²", |o| &o.report.elements.top.s1),
     ];
-    let point = |get: Getter| -> PointEnvelope {
+    // A shaped plate's nodes and elements outside it: NaN in every envelope, no extreme.
+    let node_on = field.node_on_plate();
+    let element_on: Vec<bool> = (0..el.x.len())
+        .map(|e| field.plate.get(e).copied().unwrap_or(true))
+        .collect();
+    let point = |get: Getter, on: &[bool]| -> PointEnvelope {
         let n = get(first_o).len();
         let mut e = PointEnvelope {
             max: vec![f64::NEG_INFINITY; n],
@@ -399,6 +405,10 @@ pub fn envelope(runs: &[CombinationRun]) -> Option<Envelope> {
                     e.min_by[i] = k;
                 }
             }
+        }
+        for (i, _) in on.iter().enumerate().filter(|(_, &o)| !o).take(n) {
+            e.max[i] = f64::NAN;
+            e.min[i] = f64::NAN;
         }
         e
     };
@@ -427,11 +437,11 @@ pub fn envelope(runs: &[CombinationRun]) -> Option<Envelope> {
     };
     let nodes: Vec<_> = node_fields
         .iter()
-        .map(|&(n, si, dl, g)| (n, units(si, dl), point(g)))
+        .map(|&(n, si, dl, g)| (n, units(si, dl), point(g, &node_on)))
         .collect();
     let elements: Vec<_> = element_fields
         .iter()
-        .map(|&(n, si, dl, g)| (n, units(si, dl), point(g)))
+        .map(|&(n, si, dl, g)| (n, units(si, dl), point(g, &element_on)))
         .collect();
     for (n, u, e) in &nodes {
         summarise(*n, *u, e, &node_xy);
@@ -450,10 +460,16 @@ pub fn envelope(runs: &[CombinationRun]) -> Option<Envelope> {
     })
 }
 
+/// The index of the largest value, NaN (off a shaped plate) skipped.
 fn argmax(v: &[f64]) -> Option<usize> {
-    (0..v.len()).max_by(|&a, &b| v[a].total_cmp(&v[b]))
+    (0..v.len())
+        .filter(|&a| !v[a].is_nan())
+        .max_by(|&a, &b| v[a].total_cmp(&v[b]))
 }
 
+/// The index of the smallest value, NaN skipped.
 fn argmin(v: &[f64]) -> Option<usize> {
-    (0..v.len()).min_by(|&a, &b| v[a].total_cmp(&v[b]))
+    (0..v.len())
+        .filter(|&a| !v[a].is_nan())
+        .min_by(|&a, &b| v[a].total_cmp(&v[b]))
 }

@@ -53,6 +53,11 @@ pub const SCENES: &[(&str, &str, &str)] = &[
         include_str!("../examples/fwd-joint.toml"),
     ),
     (
+        "l-raft",
+        "an L-shaped 24 m × 18 m raft with a lift pit on a half-space: six columns and self-weight; the re-entrant corner's singular moment is reported as such",
+        include_str!("../examples/l-raft.toml"),
+    ),
+    (
         "warehouse-bay",
         "warehouse floor: 3 × 3 sawn panels of 6 m on a clay layer, drying-shrinkage curl, a 60 kN rack post at a joint crossing",
         include_str!("../examples/warehouse-bay.toml"),

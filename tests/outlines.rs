@@ -381,3 +381,146 @@ fn the_re_entrant_corner_moment_grows_at_the_wedge_rate() {
         );
     }
 }
+
+/// A `uniform` load on a shaped plate acts on the plate's own area: on the L (three quarters of
+/// its 4 × 4 m box) 6 kPa is 72 kN, which the soil carries (load and reaction to 1e-9: the sum of the patches over the L), and
+/// the report's contact fraction is of the L (full contact, bonded: exactly 1).
+#[test]
+fn a_uniform_load_acts_on_the_plate_not_its_box() {
+    let scene = l_scene(WINKLER, L_OUTLINE, "")
+        .replace("pressure = 480000.0", "pressure = 0.0")
+        .replace("contact = \"unbonded\"", "contact = \"bonded\"")
+        .replace(
+            "[mesh]",
+            "[[load]]\nkind = \"uniform\"\npressure = 6000.0\n[mesh]",
+        );
+    let a = analyse(&scene, &Overrides::default());
+    let r = &a.report.resultant;
+    let load = 6000.0 * 12.0;
+    assert!(
+        (r.load - load).abs() < 1e-9 * load,
+        "load {} vs {load}",
+        r.load
+    );
+    assert!(
+        (r.reaction - load).abs() < 1e-9 * load,
+        "reaction {}",
+        r.reaction
+    );
+    assert!((a.report.contact_fraction - 1.0).abs() < 1e-12);
+    assert!((a.report.plate_fraction - 0.75).abs() < 1e-15);
+}
+
+/// Symmetry follows the shape: a plate with a central opening and a symmetric load is solved as
+/// a quarter and gives the whole model's answer (1e-9 of the peak: the quarter's operators are
+/// the whole's folded, so only round-off differs); the L with loads symmetric about x = 0 and
+/// y = 0 is not symmetric itself and is modelled whole.
+#[test]
+fn symmetry_needs_a_symmetric_shape() {
+    let centred = r#"
+[plate]
+length = 6.0
+width = 4.0
+thickness = 0.25
+youngs_modulus = 30e9
+poissons_ratio = 0.2
+[[opening]]
+x = [-0.75, 0.75]
+y = [-0.5, 0.5]
+[foundation]
+model = "winkler"
+modulus = 5e7
+[[load]]
+kind = "patch"
+x = [-2.5, 2.5]
+y = [-1.5, -1.0]
+pressure = 40000.0
+[[load]]
+kind = "patch"
+x = [-2.5, 2.5]
+y = [1.0, 1.5]
+pressure = 40000.0
+[[load]]
+kind = "uniform"
+pressure = 6000.0
+[mesh]
+elements = [24, 16]
+[solver]
+contact = "unbonded"
+"#;
+    let whole = Overrides {
+        symmetry: Some(liftoff::model::SymmetryMode::None),
+        ..Overrides::default()
+    };
+    let quarter = analyse(centred, &Overrides::default());
+    let full = analyse(centred, &whole);
+    assert!(
+        quarter.ops.mesh.sym_x && quarter.ops.mesh.sym_y,
+        "a quarter model"
+    );
+    assert!(!full.ops.mesh.sym_x && !full.ops.mesh.sym_y);
+    let (a, b) = (&quarter.report.field, &full.report.field);
+    let dw = max_diff(&a.w, &b.w) / max_abs(&b.w);
+    assert!(dw < 1e-9, "quarter vs whole: {dw:.2e}");
+    // The L (not symmetric) with a load symmetric about both axes: a point load on its
+    // re-entrant corner (0, 0), which is on the plate's edge.
+    let l = l_scene(WINKLER, L_OUTLINE, "").replace(
+        "kind = \"patch\"\nx = [1.0, 1.5]\ny = [-1.5, -1.0]\npressure = 480000.0",
+        "kind = \"point\"\nx = 0.0\ny = 0.0\nforce = 1.0e5",
+    );
+    assert!(l.contains("force = 1.0e5"));
+    let a = analyse(&l, &Overrides::default());
+    assert!(
+        !a.ops.mesh.sym_x && !a.ops.mesh.sym_y,
+        "the L is modelled whole"
+    );
+}
+
+/// Combinations on a shaped plate (an L with an opening, a zone and a void, self-weight and an
+/// axle): every extreme of the envelope lies on the plate, the envelope is NaN exactly off it,
+/// and each combination balances its load.
+#[test]
+fn the_envelope_of_a_shaped_plate_lies_on_the_plate() {
+    let problem = liftoff::load(
+        &Source::Path(std::path::Path::new(
+            "tests/scenes/outline-combinations.toml",
+        )),
+        &Overrides::default(),
+    )
+    .expect("scene");
+    let Outcome::Combinations(c) = liftoff::run(&problem, &Monitor::NONE).expect("solve") else {
+        panic!("two combinations");
+    };
+    let env = c.envelope.as_ref().expect("every combination converged");
+    // Off the plate: the L's cut-away quarter (x > 0, y > 0) and the opening [−3, −2] × [−2, −1].
+    let off = |x: f64, y: f64| {
+        let inside = |v: f64, lo: f64, hi: f64| v > lo + 1e-9 && v < hi - 1e-9;
+        (x > 1e-9 && y > 1e-9) || (inside(x, -3.0, -2.0) && inside(y, -2.0, -1.0))
+    };
+    for q in &env.quantities {
+        for e in [&q.max, &q.min] {
+            assert!(
+                !off(e.x, e.y),
+                "{}: extreme at ({}, {}) off the plate",
+                q.quantity,
+                e.x,
+                e.y
+            );
+        }
+    }
+    for (name, _, e) in &env.nodes {
+        for (k, &(x, y)) in env.node_xy.iter().enumerate() {
+            // A node is off the plate when every cell around it is: strictly inside the cut.
+            assert_eq!(e.max[k].is_nan(), off(x, y), "{name} at ({x}, {y})");
+        }
+    }
+    for run in &c.runs {
+        let r = &run.outcome.as_ref().expect("converged").report.resultant;
+        assert!(
+            r.relative_error < 1e-9,
+            "{}: {}",
+            run.name,
+            r.relative_error
+        );
+    }
+}

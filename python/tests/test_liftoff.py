@@ -1022,3 +1022,27 @@ def test_backcalc_fits_a_joint_and_reports_its_load_transfer():
         assert row["joint_low"] < row["joint"] < row["joint_high"]
         assert row["bending"] > 1 and abs(row["lte_model"] / row["lte"] - 1) < 0.01, row
         assert row["lte_corrected"] == pytest.approx(row["lte"] * row["bending"])
+
+
+L_RAFT = pathlib.Path(__file__).resolve().parents[2] / "tests" / "scenes" / "outline-l-raft.toml"
+
+
+def test_a_shaped_plate_has_its_masks_and_nan_off_the_plate(tmp_path):
+    """An L-shaped raft (issue 35): the arrays keep the box's shape, NaN off the plate with the
+    masks ``plate_nodes`` and ``plate_cells``; on the plate they are nodes.csv's rows, which
+    list the plate's nodes only."""
+    s = liftoff.solve(L_RAFT, method="qp")
+    r = cli("solve", str(L_RAFT), "--method", "qp", "--out", str(tmp_path))
+    assert r.returncode == 0, r.stderr
+    ny1, nx1 = s.w.shape
+    # The 6 m box on 24 × 24 cells less its upper-right quarter: 432 cells, 625 − 144 nodes.
+    assert s.plate_cells.shape == (ny1 - 1, nx1 - 1) and s.plate_cells.sum() == 432
+    assert s.plate_nodes.sum() == 481
+    assert np.isnan(s.w[~s.plate_nodes]).all() and not np.isnan(s.w[s.plate_nodes]).any()
+    assert np.isnan(s.mx[~s.plate_cells]).all() and not np.isnan(s.mx[s.plate_cells]).any()
+    assert not s.contact[~s.plate_nodes].any()
+    nodes = read_csv(tmp_path / "nodes.csv")
+    assert len(nodes["w"]) == 481
+    assert np.allclose(s.w[s.plate_nodes], nodes["w"], rtol=1e-9, atol=1e-15)
+    assert np.nanmax(s.w) == s.w_max
+    assert s.V_corner is None  # the box's corner (+L, +μL) is cut away

@@ -126,6 +126,44 @@ impl CellMask {
         self.covers([fx(x[0]), fx(x[1])], [fy(y[0]), fy(y[1])])
     }
 
+    /// The plate's cells as rectangles [i0, i1) × [j0, j1) of cells: runs along each row,
+    /// a run extended upwards while the next row has the same run (so a rectangle is one).
+    pub fn rectangles(&self) -> Vec<[usize; 4]> {
+        let mut done: Vec<[usize; 4]> = Vec::new();
+        let mut open: Vec<[usize; 4]> = Vec::new();
+        for j in 0..self.ny {
+            let mut runs = Vec::new();
+            let mut i = 0;
+            while i < self.nx {
+                if !self.plate[i + j * self.nx] {
+                    i += 1;
+                    continue;
+                }
+                let start = i;
+                while i < self.nx && self.plate[i + j * self.nx] {
+                    i += 1;
+                }
+                runs.push((start, i));
+            }
+            let mut next = Vec::with_capacity(runs.len());
+            for (i0, i1) in runs {
+                match open.iter().position(|r| r[0] == i0 && r[1] == i1) {
+                    Some(k) => {
+                        let mut r = open.swap_remove(k);
+                        r[3] = j + 1;
+                        next.push(r);
+                    }
+                    None => next.push([i0, i1, j, j + 1]),
+                }
+            }
+            done.append(&mut open);
+            open = next;
+        }
+        done.append(&mut open);
+        done.sort_unstable_by_key(|r| (r[2], r[0]));
+        done
+    }
+
     /// This mask without the cells of `opening` (a mask of the same grid).
     pub fn without(&self, opening: &CellMask) -> Self {
         Self {
@@ -381,6 +419,16 @@ mod tests {
             CellMask::full(8, 8).without(&CellMask::inside(8, 8, &hole)),
             m
         );
+    }
+
+    /// The L's cells are two rectangles: the lower half and the upper-left quarter, which
+    /// cover each cell once.
+    #[test]
+    fn an_l_is_two_rectangles() {
+        let corners = check_polygon(&L, [4.0, 4.0], [8, 8], "plate.outline").expect("L");
+        let m = CellMask::inside(8, 8, &corners);
+        assert_eq!(m.rectangles(), vec![[0, 8, 0, 4], [0, 4, 4, 8]]);
+        assert_eq!(CellMask::full(3, 2).rectangles(), vec![[0, 3, 0, 2]]);
     }
 
     #[test]

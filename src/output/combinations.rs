@@ -259,6 +259,10 @@ fn write_points(
     }
     w.write_record(&header).map_err(csv_err(p))?;
     for (i, &(x, y)) in xy.iter().enumerate() {
+        // Rows only on the plate: off a shaped plate every envelope is NaN.
+        if fields.first().is_some_and(|(_, _, e)| e.max[i].is_nan()) {
+            continue;
+        }
         let mut row = vec![format!("{x}"), format!("{y}")];
         for (_, _, e) in fields {
             row.push(format!("{:e}", e.max[i]));

@@ -130,13 +130,14 @@ fn largest(values: impl Iterator<Item = f64>) -> Option<f64> {
 }
 
 /// The reports of every cutting joint of the whole plate `whole` (its layout, the physical
-/// `field` and `elements` of [`super::whole::fields`], the unit-system dofs `u` of every copy,
-/// the scales `ph`); empty for a plate without joints.
+/// `field` and `elements` of [`super::whole::fields`], the unit-system dofs `u` of every copy of
+/// `whole` and the field's index of each, the scales `ph`); empty for a plate without joints.
 pub(super) fn reports(
     whole: &Mesh,
     field: &FullField,
     elements: &ElementField,
     u: &[[f64; 3]],
+    to_field: &[usize],
     ph: &Physical,
     physical: bool,
 ) -> Vec<JointReport> {
@@ -172,18 +173,19 @@ pub(super) fn reports(
                 if nodes.last().is_some_and(|p| p.minus == a && p.plus == b) {
                     continue;
                 }
+                let (fa, fb) = (to_field[a], to_field[b]);
                 nodes.push(JointNode {
-                    x: field.x[a],
-                    y: field.y[a],
+                    x: field.x[fa],
+                    y: field.y[fa],
                     minus: a,
                     plus: b,
-                    w_minus: field.w[a],
-                    w_plus: field.w[b],
+                    w_minus: field.w[fa],
+                    w_plus: field.w[fb],
                     jump: jump(a, b) * ph.deflection(),
                     shear_per_length: spring(c, jump(a, b)) * ph.shear(),
                     moment_per_length: spring(c_r, u[a][normal] - u[b][normal]) * ph.moment(),
-                    pressure_minus: field.pressure[a],
-                    pressure_plus: field.pressure[b],
+                    pressure_minus: field.pressure[fa],
+                    pressure_plus: field.pressure[fb],
                 });
             }
         }
@@ -212,7 +214,7 @@ pub(super) fn reports(
             let j = (1.0 - t) * jump(seg.a[0], seg.b[0]) + t * jump(seg.a[1], seg.b[1]);
             let force = d.k * j * ph.force;
             transferred += force;
-            let (a0, a1) = (seg.a[0], seg.a[1]);
+            let (a0, a1) = (to_field[seg.a[0]], to_field[seg.a[1]]);
             dowels.push(DowelForce {
                 bar: d.bar,
                 x: field.x[a0] + t * (field.x[a1] - field.x[a0]),
@@ -268,6 +270,11 @@ pub(super) fn reports(
             if sl != 0.0 && sl.is_finite() {
                 lte_stress = so / sl;
             }
+        }
+        // The copies by the field's numbering (nodes.csv's order, the Python arrays').
+        for n in &mut nodes {
+            n.minus = to_field[n.minus];
+            n.plus = to_field[n.plus];
         }
         let distributed = matches!(joint.kind.kind(), JointType::Aggregate | JointType::Tied);
         let tied = joint.kind.kind() == JointType::Tied;

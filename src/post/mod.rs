@@ -215,7 +215,7 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
     // Every node copy of the whole plate, and the elements, each from its own corners.
     let whole = whole::whole_plate(mesh, mu);
     let gap_per_sigma = boundary::self_compliance(ops) * ph.deflection() / mu;
-    let (field, elements, full_u) = whole::fields(
+    let (field, elements, full_u, to_field) = whole::fields(
         model,
         ops,
         sol,
@@ -229,6 +229,7 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
         &field,
         &elements,
         &full_u,
+        &to_field,
         &ph,
         model.physical.is_some(),
     );

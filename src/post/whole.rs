@@ -105,7 +105,9 @@ pub(super) fn whole_plate(mesh: &Mesh, mu: f64) -> WholePlate {
 /// The fields of a solution over the whole plate: nodal values over every copy (physical, see
 /// [`FullField`]), element resultants and stresses (each element from its own corners, its
 /// panel's D_p, S_p and thickness H_p, σ = ±6m/H_p²), and the unit-system nodal dofs
-/// (w, ψx, ψy) of every copy. `phi` is the model's would-be gap, `threshold` the contact
+/// (w, ψx, ψy) of every copy of the whole mesh, with the field's index of each (the same on a
+/// plate that is its whole rectangle; a shaped plate's field keeps every grid node, the mesh
+/// only the plate's). `phi` is the model's would-be gap, `threshold` the contact
 /// threshold on σ, `gap_per_sigma` the field's [`FullField::gap_per_sigma`].
 pub(super) fn fields(
     model: &Model,
@@ -115,7 +117,7 @@ pub(super) fn fields(
     phi: &[f64],
     (threshold, gap_per_sigma): (f64, f64),
     ph: &Physical,
-) -> (FullField, ElementField, Vec<[f64; 3]>) {
+) -> (FullField, ElementField, Vec<[f64; 3]>, Vec<usize>) {
     let mesh = &ops.mesh;
     let mu = model.groups.mu;
     let wm = &whole.mesh;
@@ -317,5 +319,6 @@ pub(super) fn fields(
     };
     field.s1_bottom = in_field(stress::recover_principal(wm, &elements.bottom));
     field.s1_top = in_field(stress::recover_principal(wm, &elements.top));
-    (field, elements, full_u)
+    let to_field = (0..n).map(index).collect();
+    (field, elements, full_u, to_field)
 }

@@ -8,6 +8,8 @@
 //! in more than one piece are refused.
 
 use super::joints::Frame;
+use super::load_spec::LoadKind;
+use super::loads::RawLoad;
 use super::spec::{OpeningSpec, SceneFile};
 use crate::error::{Error, Result};
 use crate::layout::{Layout, Polygon};
@@ -104,6 +106,123 @@ fn to_units(vertices: &[[f64; 2]], frame: &Frame) -> Polygon {
         .iter()
         .map(|p| [p[0] * frame.scale_xy[0], p[1] * frame.scale_xy[1]])
         .collect()
+}
+
+/// E57 on a shaped plate: a dowel bar sits where its joint has plate on both sides. Bars given
+/// by `positions` elsewhere are refused naming the bar; bars laid out by `spacing` along the
+/// whole line keep only those on the plate (a joint line ends at an opening or the outline).
+pub(super) fn bars_on_plate(file: &SceneFile, layout: &mut Layout, frame: &Frame) -> Result<()> {
+    if !layout.is_shaped() {
+        return Ok(());
+    }
+    let mask = CellMask::of_layout(layout, frame.elements, frame.half[1]);
+    let [nx, ny] = frame.elements;
+    let (hx, hy) = (
+        2.0 * frame.half[0] / nx as f64,
+        2.0 * frame.half[1] / ny as f64,
+    );
+    let cell = |i: isize, j: isize| {
+        i >= 0
+            && j >= 0
+            && (i as usize) < nx
+            && (j as usize) < ny
+            && mask.plate[i as usize + j as usize * nx]
+    };
+    for (k, joint) in layout.joints.iter_mut().enumerate() {
+        let (axis, at) = (joint.axis, joint.at);
+        let crate::layout::JointKind::Dowels { positions, .. } = &mut joint.kind else {
+            continue;
+        };
+        // Both cells beside the bar: across the line, at the bar's cell along it.
+        let on = |p: f64| match axis {
+            crate::layout::Axis::X => {
+                let i = ((at + frame.half[0]) / hx).round() as isize;
+                let j = (((p + frame.half[1]) / hy).floor() as isize).min(ny as isize - 1);
+                cell(i - 1, j) && cell(i, j)
+            }
+            crate::layout::Axis::Y => {
+                let j = ((at + frame.half[1]) / hy).round() as isize;
+                let i = (((p + frame.half[0]) / hx).floor() as isize).min(nx as isize - 1);
+                cell(i, j - 1) && cell(i, j)
+            }
+        };
+        let explicit = file.joint.get(k).is_some_and(|j| j.positions.is_some());
+        if explicit {
+            if let Some(b) = positions.iter().position(|&p| !on(p)) {
+                let i = Frame::index(match axis {
+                    crate::layout::Axis::X => crate::layout::Axis::Y,
+                    crate::layout::Axis::Y => crate::layout::Axis::X,
+                });
+                return Err(Error::invalid(
+                    format!("joint[{k}].positions[{b}]"),
+                    format!(
+                        "the bar at {:.6} {} lies where the joint has no plate on both sides (an opening or outside the outline): move it onto the joint",
+                        positions[b] / frame.scale_xy[i],
+                        frame.unit(crate::layout::Axis::X)
+                    ),
+                ));
+            }
+        } else {
+            positions.retain(|&p| on(p));
+            if positions.is_empty() {
+                return Err(Error::invalid(
+                    format!("joint[{k}].spacing"),
+                    "puts no bar where the joint has plate on both sides: check the spacing and offset",
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// A `uniform` load on a shaped plate acts on the plate, not on its bounding box: each one
+/// becomes the rectangles of plate cells (runs along x, merged across rows where they match),
+/// of the same case and entry, so that its resultant is the pressure times the plate's area.
+/// Every other load is kept as it is.
+pub(super) fn uniform_on_plate(
+    file: &SceneFile,
+    raw: Vec<RawLoad>,
+    layout: &Layout,
+    frame: &Frame,
+) -> Vec<RawLoad> {
+    if !layout.is_shaped() {
+        return raw;
+    }
+    let mask = CellMask::of_layout(layout, frame.elements, frame.half[1]);
+    let rects = mask.rectangles();
+    let [nx, ny] = frame.elements;
+    let (hx, hy) = (
+        2.0 * frame.half[0] / nx as f64,
+        2.0 * frame.half[1] / ny as f64,
+    );
+    let mut out = Vec::with_capacity(raw.len() + rects.len());
+    for r in raw {
+        let uniform = file
+            .load
+            .get(r.source)
+            .is_some_and(|l| l.kind == LoadKind::Uniform);
+        match (uniform, r.load) {
+            (true, Load::Patch { pressure, .. }) => {
+                out.extend(rects.iter().map(|&[i0, i1, j0, j1]| RawLoad {
+                    load: Load::Patch {
+                        x: [
+                            -frame.half[0] + i0 as f64 * hx,
+                            -frame.half[0] + i1 as f64 * hx,
+                        ],
+                        y: [
+                            -frame.half[1] + j0 as f64 * hy,
+                            -frame.half[1] + j1 as f64 * hy,
+                        ],
+                        pressure,
+                    },
+                    case: r.case.clone(),
+                    source: r.source,
+                }))
+            }
+            _ => out.push(r),
+        }
+    }
+    out
 }
 
 /// E80: a load wholly or partly off the plate's shape (on an opening, or outside the outline
