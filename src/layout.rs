@@ -163,7 +163,8 @@ impl DowelBar {
     }
 }
 
-/// One joint line across the whole plate.
+/// One joint: a line across the whole plate, or a segment of one that ends at another joint
+/// or at the plate's edge (a T-intersection, a mismatched joint).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Joint {
     /// Name for reports (J1, J2 … unless given).
@@ -172,8 +173,21 @@ pub struct Joint {
     pub axis: Axis,
     /// Position of the line: x / L (Axis::X) or y / L (Axis::Y), from the plate centre.
     pub at: f64,
+    /// The segment's extent along the line ([y0, y1] / L on a line x = const, [x0, x1] / L on
+    /// y = const), `None` for a line across the whole plate. A segment does not delimit panels
+    /// (their grid is the whole lines'); it cuts the plate along its extent only.
+    pub span: Option<[f64; 2]>,
     /// Transfer and its constants.
     pub kind: JointKind,
+}
+
+impl Joint {
+    /// True when the point `along` the line (y / L on x = const, x / L on y = const) lies on the
+    /// joint, its ends included.
+    pub fn covers(&self, along: f64) -> bool {
+        self.span
+            .is_none_or(|[a, b]| along >= a - TOL && along <= b + TOL)
+    }
 }
 
 /// Section of one panel relative to the reference plate (same ν and χ).
@@ -270,12 +284,13 @@ impl Layout {
             .all(|p| on(p[0], 1.0, elements[0]) && on(p[1], mu, elements[1]))
     }
 
-    /// Positions of the joint lines of one family, every kind, sorted.
+    /// Positions of the joint lines of one family across the whole plate (segments excluded:
+    /// they delimit no panels), every kind, sorted.
     pub fn lines(&self, axis: Axis) -> Vec<f64> {
         let mut v: Vec<f64> = self
             .joints
             .iter()
-            .filter(|j| j.axis == axis)
+            .filter(|j| j.axis == axis && j.span.is_none())
             .map(|j| j.at)
             .collect();
         v.sort_by(f64::total_cmp);
@@ -314,13 +329,18 @@ impl Layout {
     /// True when every joint line of the plate [−1, 1] × [−μ, μ] lies on an element edge of a
     /// grid of `elements` (to 1e-6 of an element).
     pub fn fits(&self, elements: [usize; 2], mu: f64) -> bool {
-        self.joints.iter().all(|j| {
-            let (half, n) = match j.axis {
-                Axis::X => (1.0, elements[0]),
-                Axis::Y => (mu, elements[1]),
-            };
-            let f = (j.at + half) / (2.0 * half) * n as f64;
+        let on = |v: f64, half: f64, n: usize| {
+            let f = (v + half) / (2.0 * half) * n as f64;
             (f - f.round()).abs() <= 1e-6
+        };
+        self.joints.iter().all(|j| {
+            let (across, along) = match j.axis {
+                Axis::X => ((1.0, elements[0]), (mu, elements[1])),
+                Axis::Y => ((mu, elements[1]), (1.0, elements[0])),
+            };
+            on(j.at, across.0, across.1)
+                && j.span
+                    .is_none_or(|[a, b]| on(a, along.0, along.1) && on(b, along.0, along.1))
         })
     }
 
@@ -348,15 +368,23 @@ impl Layout {
             let mut m = j.clone();
             if j.axis == across {
                 m.at = -j.at;
-            } else if let JointKind::Dowels { positions, .. } = &mut m.kind {
-                for p in positions.iter_mut() {
-                    *p = -*p;
+            } else {
+                m.span = j.span.map(|[a, b]| [-b, -a]);
+                if let JointKind::Dowels { positions, .. } = &mut m.kind {
+                    for p in positions.iter_mut() {
+                        *p = -*p;
+                    }
                 }
             }
             m
         };
         let same = |a: &Joint, b: &Joint| -> bool {
-            if a.axis != b.axis || (a.at - b.at).abs() > TOL {
+            let spans = match (a.span, b.span) {
+                (None, None) => true,
+                (Some(p), Some(q)) => (p[0] - q[0]).abs() <= TOL && (p[1] - q[1]).abs() <= TOL,
+                _ => false,
+            };
+            if a.axis != b.axis || (a.at - b.at).abs() > TOL || !spans {
                 return false;
             }
             match (&a.kind, &b.kind) {
@@ -435,6 +463,7 @@ mod tests {
             name: String::new(),
             axis,
             at,
+            span: None,
             kind: JointKind::Free,
         };
         let layout = Layout {
@@ -496,6 +525,7 @@ mod tests {
             name: "J".into(),
             axis,
             at,
+            span: None,
             kind,
         }
     }

@@ -19,6 +19,7 @@ fn joint(axis: Axis, at: f64, kind: JointKind) -> Joint {
         name: format!("{}{at}", axis.name()),
         axis,
         at,
+        span: None,
         kind,
     }
 }

@@ -133,6 +133,7 @@ impl Mesh {
         let mu = 0.5 * b;
         let fits = even(&topo.lines_x)
             && even(&topo.lines_y)
+            && topo.layout.fits([full[0] / 2, full[1] / 2], mu)
             && topo.layout.shapes_fit([full[0] / 2, full[1] / 2], mu);
         if !fits {
             return None;

@@ -107,6 +107,7 @@ mod jointed {
             name: "J".into(),
             axis,
             at,
+            span: None,
             kind,
         }
     }
@@ -350,6 +351,7 @@ mod dowels {
                     name: "D".into(),
                     axis: Axis::X,
                     at: 0.5,
+                    span: None,
                     kind: JointKind::Dowels {
                         k: 4.0,
                         positions: vec![-0.6, 0.0, 0.3, 0.75],
@@ -360,6 +362,7 @@ mod dowels {
                     name: "F".into(),
                     axis: Axis::Y,
                     at: 0.0,
+                    span: None,
                     kind: JointKind::Free,
                 },
             ],
@@ -411,6 +414,7 @@ mod dowels {
                 name: "D".into(),
                 axis: Axis::X,
                 at: 0.5,
+                span: None,
                 kind: JointKind::Dowels {
                     k: 4.0,
                     positions: vec![-1.0, 1.0],

@@ -76,8 +76,8 @@ pub struct DowelSpring {
 pub struct Topology {
     /// The whole-plate layout the topology was built from.
     pub layout: Arc<Layout>,
-    /// Grid columns that carry a joint line inside the model, with the joint's index (every
-    /// kind), sorted by column.
+    /// Grid columns that carry a joint line or segment inside the model, with the joint's
+    /// index (every kind), sorted by column (a column may carry several segments).
     pub lines_x: Vec<(usize, usize)>,
     /// Grid rows that carry a joint line inside the model, with the joint's index.
     pub lines_y: Vec<(usize, usize)>,
@@ -143,23 +143,47 @@ impl Topology {
                 Axis::Y => (&mut lines_y, line(j.at, grid.y0, grid.hy, ny)),
             };
             if let Some(i) = at {
-                // Two joints on one line: the first one counts (validation refuses it).
-                if !list.iter().any(|&(c, _)| c == i) {
-                    list.push((i, k));
-                }
+                list.push((i, k));
             }
         }
         lines_x.sort_unstable();
         lines_y.sort_unstable();
-        let cut = |lines: &[(usize, usize)], n: usize| -> Vec<bool> {
-            let mut v = vec![false; n + 1];
-            for &(i, k) in lines {
-                v[i] = layout.joints[k].kind.doubles();
+        // The cells along a joint's line that its extent covers, in the model: all of them for
+        // a line across the plate, a segment's own (possibly none: on a mirrored half).
+        let extent = |k: usize| -> std::ops::Range<usize> {
+            let j = &layout.joints[k];
+            let (origin, h, n) = match j.axis {
+                Axis::X => (grid.y0, grid.hy, ny),
+                Axis::Y => (grid.x0, grid.hx, nx),
+            };
+            match j.span {
+                None => 0..n,
+                Some([a, b]) => {
+                    let at = |v: f64| ((v - origin) / h).round().clamp(0.0, n as f64) as usize;
+                    at(a)..at(b)
+                }
             }
-            v
         };
-        let cut_x = cut(&lines_x, nx);
-        let cut_y = cut(&lines_y, ny);
+        // Which element edges a cutting joint runs along: the vertical edge (column i, row j)
+        // at i + j (nx + 1), the horizontal edge (column i, row j) at i + j nx.
+        let mut cut_v = vec![false; (nx + 1) * ny];
+        let mut cut_h = vec![false; nx * (ny + 1)];
+        for &(i, k) in &lines_x {
+            if layout.joints[k].kind.doubles() {
+                for j in extent(k) {
+                    cut_v[i + j * (nx + 1)] = true;
+                }
+            }
+        }
+        for &(j, k) in &lines_y {
+            if layout.joints[k].kind.doubles() {
+                for i in extent(k) {
+                    cut_h[i + j * nx] = true;
+                }
+            }
+        }
+        let vertical = |i: usize, j: usize| cut_v[i + j * (nx + 1)];
+        let horizontal = |i: usize, j: usize| cut_h[i + j * nx];
 
         // The plate's cells: every one of a rectangle, those inside the outline and outside
         // every opening of a shaped plate (each cell by its centre).
@@ -217,12 +241,18 @@ impl Topology {
                         parent[ra.max(rb)] = ra.min(rb);
                     }
                 };
-                if !cut_x[i] {
+                // LL–LR share the vertical edge below the node, UL–UR the one above; LL–UL the
+                // horizontal edge left of it, LR–UR the one right (join checks both exist).
+                if j > 0 && i <= nx && !vertical(i, j - 1) {
                     join(0, 1);
+                }
+                if j < ny && !vertical(i, j) {
                     join(2, 3);
                 }
-                if !cut_y[j] {
+                if i > 0 && !horizontal(i - 1, j) {
                     join(0, 2);
+                }
+                if i < nx && !horizontal(i, j) {
                     join(1, 3);
                 }
                 let mut id_of_root = [usize::MAX; 4];
@@ -289,8 +319,8 @@ impl Topology {
                     continue;
                 }
                 for (ok, n) in [
-                    (ie + 1 < nx && !cut_x[ie + 1], e + 1),
-                    (je + 1 < ny && !cut_y[je + 1], e + nx),
+                    (ie + 1 < nx && !vertical(ie + 1, je), e + 1),
+                    (je + 1 < ny && !horizontal(ie, je + 1), e + nx),
                 ] {
                     if ok && live[n] {
                         let (ra, rb) = (root(&mut parent, e), root(&mut parent, n));
@@ -317,12 +347,15 @@ impl Topology {
         let mut segments = Vec::new();
         let mut along: Vec<(usize, Vec<Option<usize>>)> = Vec::new();
         for &(i, k) in &lines_x {
-            if !cut_x[i] {
+            if !layout.joints[k].kind.doubles() {
                 continue;
             }
             let mut cells = vec![None; ny];
             for (je, cell) in cells.iter_mut().enumerate() {
                 let (m, p) = ((i - 1) + je * nx, i + je * nx);
+                if !extent(k).contains(&je) {
+                    continue;
+                }
                 if !(live[m] && live[p]) {
                     continue;
                 }
@@ -340,12 +373,15 @@ impl Topology {
             along.push((k, cells));
         }
         for &(j, k) in &lines_y {
-            if !cut_y[j] {
+            if !layout.joints[k].kind.doubles() {
                 continue;
             }
             let mut cells = vec![None; nx];
             for (ie, cell) in cells.iter_mut().enumerate() {
                 let (m, p) = (ie + (j - 1) * nx, ie + j * nx);
+                if !extent(k).contains(&ie) {
+                    continue;
+                }
                 if !(live[m] && live[p]) {
                     continue;
                 }

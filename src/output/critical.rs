@@ -107,6 +107,8 @@ pub fn write_critical(dir: &Path, c: &Critical, title: &str) -> Result<Vec<PathB
             kind: j.kind,
             axis: if j.axis == "x" { Axis::X } else { Axis::Y },
             at: j.at,
+            // The influence maps draw every joint across the plate.
+            span: None,
         })
         .collect();
     type Pick = fn(&Position) -> f64;

@@ -24,6 +24,8 @@ pub struct JointLine {
     pub axis: Axis,
     /// The line's coordinate, in the units of [`FullField::x`] / [`FullField::y`].
     pub at: f64,
+    /// A segment's extent along the line, in the same units; `None` across the whole plate.
+    pub span: Option<[f64; 2]>,
 }
 
 /// Nodal fields over the whole plate: the (nx + 1) × (ny + 1) grid nodes (index i + j (nx + 1))
@@ -245,6 +247,7 @@ impl FullField {
                 .iter()
                 .map(|j| JointLine {
                     at: l.from_si(system, j.at),
+                    span: j.span.map(|s| s.map(|v| l.from_si(system, v))),
                     ..j.clone()
                 })
                 .collect(),

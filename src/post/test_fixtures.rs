@@ -110,6 +110,7 @@ pub(crate) fn jointed() -> (FullField, ElementField) {
         kind: crate::layout::JointType::Aggregate,
         axis: crate::layout::Axis::X,
         at: 0.0,
+        span: None,
     }];
     (f, e)
 }

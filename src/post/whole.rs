@@ -161,6 +161,7 @@ pub(super) fn fields(
                     kind: j.kind.kind(),
                     axis: j.axis,
                     at: j.at * ph.half_length,
+                    span: j.span.map(|s| s.map(|v| v * ph.half_length)),
                 })
                 .collect()
         }),

@@ -63,7 +63,7 @@ impl Frame {
 pub(super) fn layout(file: &SceneFile, frame: &Frame) -> Result<Layout> {
     let mut joints = Vec::with_capacity(file.joint.len());
     for (k, spec) in file.joint.iter().enumerate() {
-        let (axis, at) = line(k, spec, frame)?;
+        let (axis, at, span) = line(k, spec, frame)?;
         let name = spec.name.clone().unwrap_or_else(|| format!("J{}", k + 1));
         let name = name.trim().to_string();
         if name.is_empty() {
@@ -78,11 +78,19 @@ pub(super) fn layout(file: &SceneFile, frame: &Frame) -> Result<Layout> {
                 format!("`{name}` is already the name of joint[{prev}]: names must be unique"),
             ));
         }
+        let kind = kind(k, spec, frame)?;
+        if span.is_some() && kind == JointKind::Continuous {
+            return Err(Error::invalid(
+                format!("joint[{k}].kind"),
+                "a continuous joint only delimits panels, across the whole plate: give it as a line (x = … or y = …)",
+            ));
+        }
         joints.push(Joint {
             name,
             axis,
             at,
-            kind: kind(k, spec, frame)?,
+            span,
+            kind,
         });
     }
     for axis in [Axis::X, Axis::Y] {
@@ -100,8 +108,71 @@ pub(super) fn layout(file: &SceneFile, frame: &Frame) -> Result<Layout> {
     })
 }
 
-/// E53: the joint's line, x = … or y = …, strictly inside the plate.
-fn line(k: usize, spec: &JointSpec, frame: &Frame) -> Result<(Axis, f64)> {
+/// E53: a segment's line and extent (`from`, `to`: along x or y, inside the plate's box), in
+/// the unit system.
+fn segment(k: usize, spec: &JointSpec, frame: &Frame) -> Result<(Axis, f64, [f64; 2])> {
+    let field = |n: &str| format!("joint[{k}].{n}");
+    let (Some(a), Some(b)) = (spec.from, spec.to) else {
+        let missing = if spec.from.is_none() { "from" } else { "to" };
+        return Err(Error::invalid(
+            field(missing),
+            "missing: a joint segment runs from `from = [x, y]` to `to = [x, y]`",
+        ));
+    };
+    if spec.x.is_some() || spec.y.is_some() {
+        return Err(Error::invalid(
+            format!("joint[{k}]"),
+            "gives both a line (x or y) and a segment (from, to): one or the other",
+        ));
+    }
+    if let Some(v) = a.iter().chain(&b).find(|v| !v.is_finite()) {
+        return Err(Error::invalid(
+            field("from"),
+            format!("must be finite, got {v}"),
+        ));
+    }
+    let (axis, at, ends) = if (a[0] - b[0]).abs() <= TOL && (a[1] - b[1]).abs() > TOL {
+        (Axis::X, a[0], [a[1], b[1]])
+    } else if (a[1] - b[1]).abs() <= TOL && (a[0] - b[0]).abs() > TOL {
+        (Axis::Y, a[1], [a[0], b[0]])
+    } else {
+        return Err(Error::invalid(
+            field("to"),
+            format!(
+                "the segment from ({}, {}) to ({}, {}) runs along neither x nor y (or has no length): a joint on the structured grid runs along one of its lines",
+                a[0], a[1], b[0], b[1]
+            ),
+        ));
+    };
+    let (i, o) = (Frame::index(axis), Frame::index(Frame::along(axis)));
+    let u = at * frame.scale_xy[i];
+    let span = [
+        ends[0].min(ends[1]) * frame.scale_xy[o],
+        ends[0].max(ends[1]) * frame.scale_xy[o],
+    ];
+    let (half, half_o) = (frame.half[i], frame.half[o]);
+    if u.abs() >= half * (1.0 - TOL)
+        || span[0] < -half_o * (1.0 + TOL)
+        || span[1] > half_o * (1.0 + TOL)
+    {
+        return Err(Error::invalid(
+            format!("joint[{k}]"),
+            format!(
+                "the segment at {} = {at} {} lies on or outside the plate's box: a joint runs inside the plate",
+                axis.name(),
+                frame.unit(axis)
+            ),
+        ));
+    }
+    Ok((axis, u, span))
+}
+
+/// E53: the joint's line, x = … or y = …, strictly inside the plate, or its segment
+/// ([`segment`]) with its extent along the line.
+fn line(k: usize, spec: &JointSpec, frame: &Frame) -> Result<(Axis, f64, Option<[f64; 2]>)> {
+    if spec.from.is_some() || spec.to.is_some() {
+        return segment(k, spec, frame).map(|(a, u, s)| (a, u, Some(s)));
+    }
     let (axis, v) = match (spec.x, spec.y) {
         (Some(x), None) => (Axis::X, x),
         (None, Some(y)) => (Axis::Y, y),
@@ -114,7 +185,7 @@ fn line(k: usize, spec: &JointSpec, frame: &Frame) -> Result<(Axis, f64)> {
         (None, None) => {
             return Err(Error::invalid(
                 format!("joint[{k}]"),
-                "missing: the line's position, x = … (a line across the width) or y = …",
+                "missing: the line's position, x = … (a line across the width) or y = …, or a segment from = [x, y], to = [x, y]",
             ))
         }
     };
@@ -136,7 +207,7 @@ fn line(k: usize, spec: &JointSpec, frame: &Frame) -> Result<(Axis, f64)> {
             ),
         ));
     }
-    Ok((axis, u))
+    Ok((axis, u, None))
 }
 
 /// E56: the kind's constants, in the unit system (bars placed later by [`bars`]).
@@ -296,7 +367,8 @@ fn kind(k: usize, spec: &JointSpec, frame: &Frame) -> Result<JointKind> {
     })
 }
 
-/// E55: one joint per line, and lines (and the plate's edges) at least one element apart.
+/// E55: one joint per line (segments on one line that do not overlap excepted), and lines
+/// whose extents overlap (and the plate's edges) at least one element apart.
 fn spacing(joints: &[Joint], axis: Axis, frame: &Frame) -> Result<()> {
     let i = Frame::index(axis);
     let half = frame.half[i];
@@ -310,15 +382,22 @@ fn spacing(joints: &[Joint], axis: Axis, frame: &Frame) -> Result<()> {
     lines.sort_by(|a, b| a.0.total_cmp(&b.0));
     let show = |u: f64| u / frame.scale_xy[i];
     let unit = frame.unit(axis);
-    let mut prev: Option<(f64, usize)> = None;
-    for &(u, k) in &lines {
+    // Extents along the line that share more than a point (a whole line shares with all).
+    let overlap = |a: Option<[f64; 2]>, b: Option<[f64; 2]>| match (a, b) {
+        (Some(p), Some(q)) => p[1].min(q[1]) - p[0].max(q[0]) > TOL,
+        _ => true,
+    };
+    for (n, &(u, k)) in lines.iter().enumerate() {
         let field = format!("joint[{k}].{}", axis.name());
-        if let Some((p, j)) = prev {
+        for &(p, j) in &lines[..n] {
+            if !overlap(joints[j].span, joints[k].span) {
+                continue;
+            }
             if u - p <= TOL {
                 return Err(Error::invalid(
                     field,
                     format!(
-                        "lies on the same line as joint[{j}] ({} = {}): one joint per line",
+                        "lies on the same line as joint[{j}] ({} = {}): one joint per line (segments on one line must not overlap)",
                         axis.name(),
                         show(p)
                     ),
@@ -346,7 +425,6 @@ fn spacing(joints: &[Joint], axis: Axis, frame: &Frame) -> Result<()> {
                 ),
             ));
         }
-        prev = Some((u, k));
     }
     Ok(())
 }
@@ -392,6 +470,43 @@ fn on_grid(joints: &mut [Joint], axis: Axis, frame: &Frame) -> Result<()> {
         let f = ((j.at + half) / (2.0 * half) * n as f64).round();
         j.at = -half + f * 2.0 * half / n as f64;
     }
+    // A segment's ends on element edges along the line too.
+    let o = Frame::index(Frame::along(axis));
+    let (half_o, n_o) = (frame.half[o], frame.elements[o]);
+    let ends: Vec<f64> = joints
+        .iter()
+        .filter(|j| j.axis == axis)
+        .filter_map(|j| j.span)
+        .flatten()
+        .collect();
+    if let Some(k) = joints
+        .iter()
+        .position(|j| j.axis == axis && j.span.is_some_and(|s| !fits(&s, half_o, n_o)))
+    {
+        let along = Frame::along(axis);
+        let limit = frame.max_elements;
+        let hint = match (n_o..=limit).find(|&m| fits(&ends, half_o, m)) {
+            Some(m) => format!("mesh.elements[{o}] = {m} puts every segment's end on an element edge"),
+            None => format!("no element count up to {limit} puts every segment's end on an element edge: move the ends onto a common grid"),
+        };
+        return Err(Error::invalid(
+            format!("joint[{k}].from"),
+            format!(
+                "the segment's ends are not on element edges of the mesh's {n_o} elements along {} (edges every {:.6} {}): {hint}",
+                along.name(),
+                2.0 * half_o / n_o as f64 / frame.scale_xy[o],
+                frame.unit(along)
+            ),
+        ));
+    }
+    for j in joints.iter_mut().filter(|j| j.axis == axis) {
+        if let Some(span) = &mut j.span {
+            for v in span.iter_mut() {
+                let f = ((*v + half_o) / (2.0 * half_o) * n_o as f64).round();
+                *v = -half_o + f * 2.0 * half_o / n_o as f64;
+            }
+        }
+    }
     Ok(())
 }
 
@@ -408,6 +523,8 @@ fn bars(k: usize, spec: &JointSpec, joints: &mut [Joint], frame: &Frame) -> Resu
         .filter(|j| j.axis == along && j.kind.doubles())
         .map(|j| j.at)
         .collect();
+    // The joint's extent along its line: the plate's width, or a segment's.
+    let (lo, hi) = joints[k].span.map_or((-half, half), |s| (s[0], s[1]));
     let JointKind::Dowels { positions, .. } = &mut joints[k].kind else {
         return Ok(());
     };
@@ -434,7 +551,7 @@ fn bars(k: usize, spec: &JointSpec, joints: &mut [Joint], frame: &Frame) -> Resu
             }
             None => 0.5 * s,
         };
-        let length = 2.0 * half / scale;
+        let length = (hi - lo) / scale;
         if (length - offset) / s > MAX_BARS as f64 {
             return Err(Error::invalid(
                 field("spacing"),
@@ -444,10 +561,10 @@ fn bars(k: usize, spec: &JointSpec, joints: &mut [Joint], frame: &Frame) -> Resu
         let mut b = 0;
         loop {
             let v = offset + b as f64 * s;
-            if v * scale >= 2.0 * half * (1.0 - TOL) {
+            if v * scale >= (hi - lo) * (1.0 - TOL) {
                 break;
             }
-            list.push((-half + v * scale, format!("spacing (bar {})", b + 1)));
+            list.push((lo + v * scale, format!("spacing (bar {})", b + 1)));
             b += 1;
         }
     }
@@ -460,7 +577,7 @@ fn bars(k: usize, spec: &JointSpec, joints: &mut [Joint], frame: &Frame) -> Resu
             }),
             format!(
                 "puts no bar on the joint (its length is {:.6} {unit})",
-                2.0 * half / scale
+                (hi - lo) / scale
             ),
         ));
     }
@@ -471,14 +588,15 @@ fn bars(k: usize, spec: &JointSpec, joints: &mut [Joint], frame: &Frame) -> Resu
         ));
     }
     for (u, name) in &list {
-        if u.abs() >= half * (1.0 - TOL) {
+        if *u <= lo + TOL * half || *u >= hi - TOL * half {
             return Err(Error::invalid(
                 field(name),
                 format!(
-                    "the bar at {:.6} {unit} lies outside the joint or on the plate's edge (|{}| < {:.6})",
+                    "the bar at {:.6} {unit} lies outside the joint or on the plate's edge ({:.6} < {} < {:.6})",
                     u / scale,
+                    lo / scale,
                     along.name(),
-                    half / scale
+                    hi / scale
                 ),
             ));
         }
@@ -506,5 +624,75 @@ fn bars(k: usize, spec: &JointSpec, joints: &mut [Joint], frame: &Frame) -> Resu
         ));
     }
     *positions = list.into_iter().map(|b| b.0).collect();
+    Ok(())
+}
+
+/// E81: each end of a segment joint (one that cuts the plate) lies at the plate's box, at the
+/// edge of the plate's shape (the cells beyond the end are not both plate), or on another
+/// cutting joint (a line, or a segment whose extent holds the point: a T, an L, a joint that
+/// continues on the same line). A joint that stops inside a panel would be a crack tip, not a
+/// joint between slabs.
+pub(super) fn segment_ends(layout: &Layout, frame: &Frame) -> Result<()> {
+    let mask = crate::mesh::outline::CellMask::of_layout(layout, frame.elements, frame.half[1]);
+    let [nx, ny] = frame.elements;
+    let plate = |i: isize, j: isize| {
+        i >= 0
+            && j >= 0
+            && (i as usize) < nx
+            && (j as usize) < ny
+            && mask.plate[i as usize + j as usize * nx]
+    };
+    for (k, joint) in layout.joints.iter().enumerate() {
+        let (Some(span), true) = (joint.span, joint.kind.doubles()) else {
+            continue;
+        };
+        let (a, o) = (
+            Frame::index(joint.axis),
+            Frame::index(Frame::along(joint.axis)),
+        );
+        let cells =
+            |half: f64, n: usize, v: f64| ((v + half) / (2.0 * half) * n as f64).round() as isize;
+        let line = cells(frame.half[a], frame.elements[a], joint.at);
+        let n_along = frame.elements[o] as isize;
+        for (end, step) in [(span[0], -1), (span[1], 1)] {
+            let g = cells(frame.half[o], frame.elements[o], end);
+            if g <= 0 || g >= n_along {
+                continue; // at the box's edge
+            }
+            // The two cells beside the edge beyond the end.
+            let beyond = if step > 0 { g } else { g - 1 };
+            let (c1, c2) = match joint.axis {
+                Axis::X => ((line - 1, beyond), (line, beyond)),
+                Axis::Y => ((beyond, line - 1), (beyond, line)),
+            };
+            if !(plate(c1.0, c1.1) && plate(c2.0, c2.1)) {
+                continue; // at the edge of the plate's shape
+            }
+            let on_other = layout.joints.iter().enumerate().any(|(m, other)| {
+                m != k
+                    && other.kind.doubles()
+                    && if other.axis == joint.axis {
+                        (other.at - joint.at).abs() <= TOL && other.covers(end)
+                    } else {
+                        (other.at - end).abs() <= TOL && other.covers(joint.at)
+                    }
+            });
+            if !on_other {
+                let (x, y) = match joint.axis {
+                    Axis::X => (joint.at, end),
+                    Axis::Y => (end, joint.at),
+                };
+                return Err(Error::invalid(
+                    format!("joint[{k}]"),
+                    format!(
+                        "ends at ({:.6}, {:.6}) {} inside the plate: a joint that stops in the middle of a panel would be a crack tip — end it on another joint or at the plate's edge",
+                        x / frame.scale_xy[0],
+                        y / frame.scale_xy[1],
+                        frame.unit(Axis::X)
+                    ),
+                ));
+            }
+        }
+    }
     Ok(())
 }

@@ -51,7 +51,7 @@ fn panel(k: usize, spec: &PanelSpec, layout: &Layout, frame: &Frame) -> Result<P
         if let Some(j) = layout
             .joints
             .iter()
-            .find(|j| j.axis == axis && (j.at - u).abs() <= TOL)
+            .find(|j| j.axis == axis && j.span.is_none() && (j.at - u).abs() <= TOL)
         {
             return Err(Error::invalid(
                 field("at"),
@@ -147,9 +147,13 @@ fn panel(k: usize, spec: &PanelSpec, layout: &Layout, frame: &Frame) -> Result<P
 /// E59: a point load or a line load lying on a line that cuts the plate (which side carries it
 /// is ambiguous). `loads` are in the unit system, in scene order.
 pub(super) fn loads_off_cuts(layout: &Layout, loads: &[Load], frame: &Frame) -> Result<()> {
+    // On a joint: on its line and within its extent (a segment's).
     let on = |axis: Axis, p: [f64; 2]| {
         layout.joints.iter().find(|j| {
-            j.kind.doubles() && j.axis == axis && (p[Frame::index(axis)] - j.at).abs() <= TOL
+            j.kind.doubles()
+                && j.axis == axis
+                && (p[Frame::index(axis)] - j.at).abs() <= TOL
+                && j.covers(p[1 - Frame::index(axis)])
         })
     };
     for (k, load) in loads.iter().enumerate() {

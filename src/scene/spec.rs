@@ -235,6 +235,13 @@ pub struct JointSpec {
     /// The line y = this (m, or t).
     #[serde(default)]
     pub y: Option<f64>,
+    /// A segment's first end [x, y] (m, or s, t), instead of `x` or `y`: a joint along x or y
+    /// from `from` to `to` that ends at another joint or at the plate's edge.
+    #[serde(default)]
+    pub from: Option<[f64; 2]>,
+    /// A segment's other end [x, y].
+    #[serde(default)]
+    pub to: Option<[f64; 2]>,
     /// free | continuous | aggregate | tied | dowels.
     pub kind: JointType,
     /// Name for reports (default J1, J2 … in file order).
@@ -284,6 +291,8 @@ impl JointSpec {
         Self {
             x: (axis == Axis::X).then_some(at),
             y: (axis == Axis::Y).then_some(at),
+            from: None,
+            to: None,
             kind,
             name: None,
             stiffness: None,

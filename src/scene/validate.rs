@@ -279,6 +279,7 @@ fn shared(file: &SceneFile) -> Result<Shared> {
     let mut layout = super::joints::layout(file, &frame)?;
     super::outline::shapes(file, &mut layout, &frame)?;
     super::outline::bars_on_plate(file, &mut layout, &frame)?;
+    super::joints::segment_ends(&layout, &frame)?;
     let raw = super::outline::uniform_on_plate(file, raw, &layout, &frame);
     super::panels::panels(file, &mut layout, &frame)?;
     let unit_loads: Vec<Load> = raw.iter().map(|r| r.load).collect();

@@ -131,6 +131,7 @@ fn joint(axis: Axis, at: f64, kind: JointKind) -> Joint {
         name: "J".into(),
         axis,
         at,
+        span: None,
         kind,
     }
 }

@@ -193,13 +193,19 @@ fn joint_pieces(
     (x0, x1): (f64, f64),
     (y0, y1): (f64, f64),
 ) -> Vec<[(f64, f64); 2]> {
-    let whole = match j.axis {
-        Axis::X => [(j.at, y0), (j.at, y1)],
-        Axis::Y => [(x0, j.at), (x1, j.at)],
+    let whole = match (j.axis, j.span) {
+        (Axis::X, None) => [(j.at, y0), (j.at, y1)],
+        (Axis::Y, None) => [(x0, j.at), (x1, j.at)],
+        (Axis::X, Some([a, b])) => [(j.at, a), (j.at, b)],
+        (Axis::Y, Some([a, b])) => [(a, j.at), (b, j.at)],
     };
     if field.plate.is_empty() {
         return vec![whole];
     }
+    // A segment's extent along the line (the whole line's otherwise).
+    let (lo, hi) = j
+        .span
+        .map_or((f64::NEG_INFINITY, f64::INFINITY), |[a, b]| (a, b));
     let (nx, ny) = (field.nx, field.ny);
     let n1 = nx + 1;
     // The grid line of the joint, and the cells on its two sides along it.
@@ -216,6 +222,10 @@ fn joint_pieces(
         }
     };
     let on = |k: usize| {
+        let mid = 0.5 * (coords[k] + coords[k + 1]);
+        if mid < lo || mid > hi {
+            return false;
+        }
         let (a, b) = match j.axis {
             Axis::X => ((at.wrapping_sub(1), k), (at, k)),
             Axis::Y => ((k, at.wrapping_sub(1)), (k, at)),
