@@ -246,6 +246,18 @@ pub struct Layout {
     pub outline: Option<Polygon>,
     /// Holes through the slab (`[[opening]]`): no plate and no soil contact inside.
     pub openings: Vec<Polygon>,
+    /// Panels with their own outline (`[[panel]]` with `outline`, or `x` and `y`): a blockout,
+    /// a pit's floor. Their cells are plate (inside an opening too) of their own section.
+    pub regions: Vec<Region>,
+}
+
+/// A panel of its own outline and section (panel id: the grid panels', then the regions').
+#[derive(Debug, Clone, PartialEq)]
+pub struct Region {
+    /// Its outline, edges along the grid's lines.
+    pub polygon: Polygon,
+    /// Its section relative to the reference plate.
+    pub section: PanelSection,
 }
 
 /// Tolerance on positions in the unit system (lines at equal positions are one line).
@@ -254,7 +266,10 @@ const TOL: f64 = 1e-9;
 impl Layout {
     /// True without joints, overrides, outline and openings: the plain rectangular plate.
     pub fn is_empty(&self) -> bool {
-        self.joints.is_empty() && self.panels.is_empty() && !self.is_shaped()
+        self.joints.is_empty()
+            && self.panels.is_empty()
+            && self.regions.is_empty()
+            && !self.is_shaped()
     }
 
     /// True when the plate is not its whole bounding rectangle (an outline or openings).
@@ -266,8 +281,36 @@ impl Layout {
     /// one) and inside no opening. Meant for cell centres, which never lie on an edge of a
     /// polygon whose edges run along grid lines.
     pub fn is_plate(&self, x: f64, y: f64) -> bool {
-        self.outline.as_ref().is_none_or(|p| inside(p, x, y))
-            && !self.openings.iter().any(|p| inside(p, x, y))
+        (self.outline.as_ref().is_none_or(|p| inside(p, x, y))
+            && !self.openings.iter().any(|p| inside(p, x, y)))
+            || self.region_at(x, y).is_some()
+    }
+
+    /// The region panel holding the point (x, y) (the first one listed), if any.
+    pub fn region_at(&self, x: f64, y: f64) -> Option<usize> {
+        self.regions.iter().position(|r| inside(&r.polygon, x, y))
+    }
+
+    /// The panel id of the point (x, y): a region's (after the grid's panels), else its grid
+    /// panel's, column + row · columns.
+    pub fn panel_id(&self, x: f64, y: f64) -> usize {
+        let [nc, nr] = self.panel_counts();
+        match self.region_at(x, y) {
+            Some(r) => nc * nr + r,
+            None => {
+                let [c, r] = self.panel_at(x, y);
+                c + r * nc
+            }
+        }
+    }
+
+    /// A panel's name for messages: "(column, row)", 1-based, or "region k" (1-based).
+    pub fn panel_name(&self, id: usize) -> String {
+        let [nc, nr] = self.panel_counts();
+        match id.checked_sub(nc * nr) {
+            Some(r) => format!("region {}", r + 1),
+            None => format!("({}, {})", id % nc + 1, id / nc + 1),
+        }
     }
 
     /// True when every corner of the outline and the openings lies on a grid line of the
@@ -280,6 +323,7 @@ impl Layout {
         self.outline
             .iter()
             .chain(&self.openings)
+            .chain(self.regions.iter().map(|r| &r.polygon))
             .flatten()
             .all(|p| on(p[0], 1.0, elements[0]) && on(p[1], mu, elements[1]))
     }
@@ -318,11 +362,13 @@ impl Layout {
             .map_or(PanelSection::REFERENCE, |p| p.section)
     }
 
-    /// Every panel's section, indexed column + row · columns.
+    /// Every panel's section, indexed as [`Self::panel_id`]: the grid's, column + row ·
+    /// columns, then the regions'.
     pub fn sections(&self) -> Vec<PanelSection> {
         let [nc, nr] = self.panel_counts();
         (0..nc * nr)
             .map(|id| self.section(id % nc, id / nc))
+            .chain(self.regions.iter().map(|r| r.section))
             .collect()
     }
 
@@ -426,7 +472,34 @@ impl Layout {
                 self.section(c, r) == self.section(mc, mr)
             })
         });
-        joints_ok && panels_ok
+        // Each region has a mirror region of the same section (the same corners mirrored).
+        let mirrored = |p: &Polygon| -> Vec<[i64; 2]> {
+            let key = |v: f64| (v / TOL).round() as i64;
+            let mut c: Vec<[i64; 2]> = p
+                .iter()
+                .map(|&[x, y]| {
+                    if about_x {
+                        [key(-x), key(y)]
+                    } else {
+                        [key(x), key(-y)]
+                    }
+                })
+                .collect();
+            c.sort_unstable();
+            c
+        };
+        let corners = |p: &Polygon| -> Vec<[i64; 2]> {
+            let key = |v: f64| (v / TOL).round() as i64;
+            let mut c: Vec<[i64; 2]> = p.iter().map(|&[x, y]| [key(x), key(y)]).collect();
+            c.sort_unstable();
+            c
+        };
+        let regions_ok = self.regions.iter().all(|r| {
+            self.regions
+                .iter()
+                .any(|o| o.section == r.section && corners(&o.polygon) == mirrored(&r.polygon))
+        });
+        joints_ok && panels_ok && regions_ok
     }
 }
 

@@ -524,3 +524,78 @@ fn the_envelope_of_a_shaped_plate_lies_on_the_plate() {
         );
     }
 }
+
+/// A panel of its own outline (`[[panel]] x, y`) is the same plate as the middle panel of a
+/// grid of continuous joints around the same rectangle given its own section by `at`: every
+/// deflection agrees to round-off (1e-12 of the peak). Inside an opening the panel fills it
+/// back: the opening and the panel together are the panel alone. With a ring of free joint
+/// segments around it, it is a blockout: cut from the slab on all four sides, it carries its
+/// column alone and the slab around it only what the soil passes on (Winkler: nothing), so the
+/// slab away from it sits flat under its self-weight at p/k.
+#[test]
+fn a_panel_of_its_own_outline_is_a_panel() {
+    let base = |extra: &str| {
+        format!(
+            r#"
+[plate]
+length = 6.0
+width = 6.0
+thickness = 0.2
+youngs_modulus = 30e9
+poissons_ratio = 0.2
+{extra}
+[foundation]
+model = "winkler"
+modulus = 5e7
+[[load]]
+kind = "uniform"
+pressure = 6000.0
+[[load]]
+kind = "patch"
+x = [-0.25, 0.25]
+y = [-0.25, 0.25]
+pressure = 1.6e6
+[mesh]
+elements = [24, 24]
+[solver]
+contact = "unbonded"
+"#
+        )
+    };
+    let region = "[[panel]]\nx = [-1.0, 1.0]\ny = [-1.0, 1.0]\nthickness = 0.4";
+    let grid = "[[joint]]\nx = -1.0\nkind = \"continuous\"\n[[joint]]\nx = 1.0\nkind = \"continuous\"\n[[joint]]\ny = -1.0\nkind = \"continuous\"\n[[joint]]\ny = 1.0\nkind = \"continuous\"\n[[panel]]\nat = [0.0, 0.0]\nthickness = 0.4";
+    let filled = "[[opening]]\nx = [-1.0, 1.0]\ny = [-1.0, 1.0]\n[[panel]]\nx = [-1.0, 1.0]\ny = [-1.0, 1.0]\nthickness = 0.4";
+    let a = analyse(&base(region), &Overrides::default());
+    let peak = max_abs(&a.report.field.w);
+    for (name, other) in [("a grid panel", grid), ("an opening filled", filled)] {
+        let b = analyse(&base(other), &Overrides::default());
+        let d = max_diff(&a.report.field.w, &b.report.field.w) / peak;
+        assert!(d < 1e-12, "the region panel vs {name}: {d:.2e}");
+    }
+    // The thicker panel is stiffer than the plain slab: a smaller deflection under the column.
+    let plain = analyse(&base(""), &Overrides::default());
+    assert!(max_abs(&plain.report.field.w) > 1.05 * peak);
+    // A blockout: the same panel ringed by free joint segments.
+    let ring = "[[joint]]\nfrom = [-1.0, -1.0]\nto = [1.0, -1.0]\nkind = \"free\"\n[[joint]]\nfrom = [1.0, -1.0]\nto = [1.0, 1.0]\nkind = \"free\"\n[[joint]]\nfrom = [1.0, 1.0]\nto = [-1.0, 1.0]\nkind = \"free\"\n[[joint]]\nfrom = [-1.0, 1.0]\nto = [-1.0, -1.0]\nkind = \"free\"";
+    let blockout = analyse(&base(&format!("{region}\n{ring}")), &Overrides::default());
+    let f = &blockout.report.field;
+    let flat = 6000.0 / 5e7;
+    for j in 0..24 {
+        for i in 0..24 {
+            let outside = !(8..16).contains(&i) || !(8..16).contains(&j);
+            if outside {
+                for n in f.element_nodes(i, j) {
+                    assert!(
+                        (f.w[n] - flat).abs() < 1e-9 * flat,
+                        "({i}, {j}): {}",
+                        f.w[n]
+                    );
+                }
+            }
+        }
+    }
+    assert!(
+        max_abs(&f.w) > 2.0 * flat,
+        "the blockout carries its column"
+    );
+}

@@ -85,7 +85,8 @@ pub struct Topology {
     pub extra_grid: Vec<usize>,
     /// The node copy at each corner of each element (counter-clockwise from the lower left).
     pub corners: Vec<[usize; 4]>,
-    /// The whole-plate panel (column + row · columns) of each model element.
+    /// The whole-plate panel of each model element ([`Layout::panel_id`]: column + row ·
+    /// columns, then the regions).
     pub panel: Vec<u32>,
     /// The rigid piece of each model element: elements joined through edges that no joint cuts.
     pub piece: Vec<u32>,
@@ -301,14 +302,12 @@ impl Topology {
 
         // Panels by every line of the whole plate; pieces: plate cells joined through edges
         // that no cutting joint runs along (numbered by their first cell).
-        let [pcols, _] = layout.panel_counts();
         let mut panel = Vec::with_capacity(nx * ny);
         for je in 0..ny {
             for ie in 0..nx {
                 let xc = grid.x0 + (ie as f64 + 0.5) * grid.hx;
                 let yc = grid.y0 + (je as f64 + 0.5) * grid.hy;
-                let [c, r] = layout.panel_at(xc, yc);
-                panel.push((c + r * pcols) as u32);
+                panel.push(layout.panel_id(xc, yc) as u32);
             }
         }
         let mut parent: Vec<usize> = (0..nx * ny).collect();

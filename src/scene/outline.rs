@@ -19,7 +19,7 @@ use crate::model::Load;
 /// E79: the outline and the openings of the scene into `layout` (unit system).
 pub(super) fn shapes(file: &SceneFile, layout: &mut Layout, frame: &Frame) -> Result<()> {
     let outline = file.plate.as_ref().and_then(|p| p.outline.as_ref());
-    if outline.is_none() && file.opening.is_empty() {
+    if outline.is_none() && file.opening.is_empty() && layout.regions.is_empty() {
         return Ok(());
     }
     // The box in scene coordinates.
@@ -48,6 +48,8 @@ pub(super) fn shapes(file: &SceneFile, layout: &mut Layout, frame: &Frame) -> Re
         mask = mask.without(&hole);
         layout.openings.push(to_units(&vertices, frame));
     }
+    // The plate's cells with the region panels (which may fill an opening) in them.
+    let mask = CellMask::of_layout(layout, frame.elements, frame.half[1]);
     let pieces = mask.pieces();
     if pieces.len() > 1 {
         let [hx, hy] = [size[0] / nx as f64, size[1] / ny as f64];
@@ -79,29 +81,53 @@ pub(super) fn shapes(file: &SceneFile, layout: &mut Layout, frame: &Frame) -> Re
 
 /// The polygon of `[[opening]]` k (scene coordinates) and the field its errors name.
 fn opening_polygon(k: usize, spec: &OpeningSpec) -> Result<(Vec<[f64; 2]>, String)> {
-    match (&spec.outline, spec.x, spec.y) {
-        (Some(p), None, None) => Ok((p.clone(), format!("opening[{k}].outline"))),
+    polygon(
+        &format!("opening[{k}]"),
+        spec.x,
+        spec.y,
+        spec.outline.as_ref(),
+    )
+}
+
+/// A polygon given as a rectangle (`x`, `y`) or by its corners (`outline`), in scene
+/// coordinates, with the field its errors name (`entry`, or `entry.outline`).
+pub(super) fn polygon(
+    entry: &str,
+    x: Option<[f64; 2]>,
+    y: Option<[f64; 2]>,
+    outline: Option<&Vec<[f64; 2]>>,
+) -> Result<(Vec<[f64; 2]>, String)> {
+    match (outline, x, y) {
+        (Some(p), None, None) => Ok((p.clone(), format!("{entry}.outline"))),
         (None, Some(x), Some(y)) => {
             for (name, [a, b]) in [("x", x), ("y", y)] {
                 if !(a.is_finite() && b.is_finite() && a < b) {
                     return Err(Error::invalid(
-                        format!("opening[{k}].{name}"),
+                        format!("{entry}.{name}"),
                         format!("[{a}, {b}] is not an interval: give [low, high] with low < high"),
                     ));
                 }
             }
             let corners = vec![[x[0], y[0]], [x[1], y[0]], [x[1], y[1]], [x[0], y[1]]];
-            Ok((corners, format!("opening[{k}]")))
+            Ok((corners, entry.to_string()))
         }
         _ => Err(Error::invalid(
-            format!("opening[{k}]"),
+            entry,
             "give a rectangle (`x = [x0, x1]` and `y = [y0, y1]`) or a polygon (`outline = [[x, y], …]`), not both",
         )),
     }
 }
 
+/// The box of the scene in its own coordinates, [a, b].
+pub(super) fn box_size(frame: &Frame) -> [f64; 2] {
+    [
+        2.0 * frame.half[0] / frame.scale_xy[0],
+        2.0 * frame.half[1] / frame.scale_xy[1],
+    ]
+}
+
 /// Scene coordinates to the unit system.
-fn to_units(vertices: &[[f64; 2]], frame: &Frame) -> Polygon {
+pub(super) fn to_units(vertices: &[[f64; 2]], frame: &Frame) -> Polygon {
     vertices
         .iter()
         .map(|p| [p[0] * frame.scale_xy[0], p[1] * frame.scale_xy[1]])

@@ -346,8 +346,19 @@ impl JointSpec {
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PanelSpec {
-    /// Any point inside the panel, [x, y] (m, or (s, t)).
-    pub at: [f64; 2],
+    /// Any point inside a panel of the joints' grid, [x, y] (m, or (s, t)); or, instead, the
+    /// panel's own outline by `x` and `y` or `outline` (a blockout, a pit's floor).
+    #[serde(default)]
+    pub at: Option<[f64; 2]>,
+    /// A panel of its own outline: [x0, x1] (m, or s).
+    #[serde(default)]
+    pub x: Option<[f64; 2]>,
+    /// … and [y0, y1] (m, or t).
+    #[serde(default)]
+    pub y: Option<[f64; 2]>,
+    /// A panel of its own outline as a polygon [[x, y], …] (edges along the grid's lines).
+    #[serde(default)]
+    pub outline: Option<Vec<[f64; 2]>>,
     /// The panel's thickness, m (SI scenes).
     #[serde(default)]
     pub thickness: Option<f64>,
@@ -366,7 +377,10 @@ impl PanelSpec {
     /// The panel holding (x, y), with nothing changed yet.
     pub fn at(x: f64, y: f64) -> Self {
         Self {
-            at: [x, y],
+            at: Some([x, y]),
+            x: None,
+            y: None,
+            outline: None,
             thickness: None,
             youngs_modulus: None,
             thickness_ratio: None,

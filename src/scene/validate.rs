@@ -277,11 +277,11 @@ fn shared(file: &SceneFile) -> Result<Shared> {
         max_elements: MAX_ELEMENTS_PER_SIDE as usize,
     };
     let mut layout = super::joints::layout(file, &frame)?;
+    super::panels::panels(file, &mut layout, &frame)?;
     super::outline::shapes(file, &mut layout, &frame)?;
     super::outline::bars_on_plate(file, &mut layout, &frame)?;
     super::joints::segment_ends(&layout, &frame)?;
     let raw = super::outline::uniform_on_plate(file, raw, &layout, &frame);
-    super::panels::panels(file, &mut layout, &frame)?;
     let unit_loads: Vec<Load> = raw.iter().map(|r| r.load).collect();
     super::panels::loads_off_cuts(&layout, &unit_loads, &frame)?;
     super::outline::loads_on_plate(&layout, &unit_loads, &frame)?;

@@ -110,7 +110,6 @@ pub fn check_feasible_jointed(ops: &Operators) -> Result<()> {
             .map_or(0, |&(e, _)| topo.cluster[topo.piece[e] as usize] as usize)
     };
     let n_clusters = topo.n_clusters();
-    let columns = topo.layout.panel_counts()[0];
     let panels = |c: usize| -> String {
         let mut ids: Vec<u32> = ops
             .mesh
@@ -122,13 +121,7 @@ pub fn check_feasible_jointed(ops: &Operators) -> Result<()> {
         ids.dedup();
         let names: Vec<String> = ids
             .iter()
-            .map(|&p| {
-                format!(
-                    "({}, {})",
-                    p as usize % columns + 1,
-                    p as usize / columns + 1
-                )
-            })
+            .map(|&p| topo.layout.panel_name(p as usize))
             .collect();
         format!(
             "panel{} {}",
