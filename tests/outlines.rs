@@ -26,6 +26,10 @@ fn method(kind: MethodKind) -> Overrides {
 
 const WINKLER: &str = "model = \"winkler\"\nmodulus = 5e7";
 const HALF_SPACE: &str = "model = \"half-space\"\nyoungs_modulus = 1e8\npoissons_ratio = 0.3";
+const PASTERNAK: &str = "model = \"pasternak\"\nmodulus = 5e7\nshear_modulus = 1e6";
+const KERR: &str = "model = \"kerr\"\nmodulus = 5e7\nshear_modulus = 1e6\nupper_modulus = 1e8";
+const LAYER: &str =
+    "model = \"elastic-layer\"\nyoungs_modulus = 3e7\npoissons_ratio = 0.3\ndepth = 3.0";
 
 /// A 4 × 4 m box on 16 × 16 elements, 0.2 m thick, with `shape` (plate keys or tables) and
 /// unbonded contact: 120 kN on a 0.5 m square near the end of the L's lower leg, which lifts
@@ -73,18 +77,19 @@ fn max_abs(v: &[f64]) -> f64 {
 /// The L as an outline, as the box less an opening, and as an outline crossed by a
 /// continuous joint (two panels of one plate) are one discrete problem: every nodal
 /// deflection and pressure agrees to round-off (1e-9 of the peak: the three assemble the same
-/// matrices in the same order, so only the solvers' own round-off differs), on Winkler and on
-/// the half-space, with the QP and the penalty, on the dense and the FFT route.
+/// matrices in the same order, so only the solvers' own round-off differs), on every soil
+/// (Winkler, half-space, Pasternak, Kerr, elastic layer), with the QP and the penalty, on the
+/// half-space on the dense and the FFT route.
 #[test]
 fn an_l_is_the_same_problem_posed_three_ways() {
-    for foundation in [WINKLER, HALF_SPACE] {
+    for foundation in [WINKLER, HALF_SPACE, PASTERNAK, KERR, LAYER] {
         for (kind, route) in [
             (MethodKind::Qp, Route::Auto),
             (MethodKind::Penalty, Route::Auto),
             (MethodKind::Penalty, Route::Iterative),
         ] {
-            if foundation == WINKLER && route == Route::Iterative {
-                continue; // Winkler has no dense or FFT T
+            if foundation != HALF_SPACE && route == Route::Iterative {
+                continue; // the FFT route once, on the half-space
             }
             let o = Overrides {
                 solver: Some(route),
@@ -598,4 +603,47 @@ contact = "unbonded"
         max_abs(&f.w) > 2.0 * flat,
         "the blockout carries its column"
     );
+}
+
+/// `critical` on a shaped plate moves the axle only where every print lies on the plate: of a
+/// 9 × 7 grid over the box, the positions with a print on the opening or in the L's cut-away
+/// quarter are skipped, every kept one has its prints on the plate, and each converges.
+#[test]
+fn critical_moves_the_load_over_the_plate_only() {
+    use liftoff::study::{critical, CriticalOptions, RunOutcome};
+    let problem = liftoff::load(
+        &Source::Path(std::path::Path::new(
+            "tests/scenes/outline-combinations.toml",
+        )),
+        &Overrides::default(),
+    )
+    .expect("scene");
+    let options = CriticalOptions {
+        load: "truck".into(),
+        grid: [9, 7],
+        ..CriticalOptions::default()
+    };
+    let c = critical(&problem, &options, &Monitor::NONE).expect("search");
+    assert!(
+        !c.positions.is_empty() && c.positions.len() < 63,
+        "{} positions",
+        c.positions.len()
+    );
+    let model = &problem.combinations[0].model;
+    let truck = model
+        .vehicles
+        .iter()
+        .position(|v| v.name.as_deref() == Some("truck"))
+        .expect("the axle");
+    for p in &c.positions {
+        assert!(
+            model
+                .prints_on_plate(truck, [p.x, p.y, p.heading])
+                .expect("place"),
+            "a print off the plate at ({}, {})",
+            p.x,
+            p.y
+        );
+        assert_eq!(p.outcome, RunOutcome::CONVERGED);
+    }
 }

@@ -259,10 +259,8 @@ fn write_xml<W: Write>(
 ) -> io::Result<()> {
     let mut xml = Writer::new_with_indent(out, b' ', 2);
     xml.write_event(Event::Decl(BytesDecl::new("1.0", None, None)))?;
-    let (nodes, cells) = (
-        sizes.nodes.to_string(),
-        plate_cells(field, sizes).to_string(),
-    );
+    let kept = plate_points(field).map_or(sizes.nodes, |(_, n)| n);
+    let (nodes, cells) = (kept.to_string(), plate_cells(field, sizes).to_string());
     xml.create_element("VTKFile")
         .with_attributes([
             ("type", "UnstructuredGrid"),
@@ -284,6 +282,27 @@ fn write_xml<W: Write>(
                 .map(drop)
         })
         .map(drop)
+}
+
+/// A shaped plate's points: each node's number among the plate's (−1 off it) and their
+/// count; `None` on a plate that is its whole rectangle (every point written).
+fn plate_points(field: &FullField) -> Option<(Vec<i64>, usize)> {
+    if field.plate.is_empty() {
+        return None;
+    }
+    let mut next = 0;
+    let number = field
+        .node_on_plate()
+        .into_iter()
+        .map(|on| match on {
+            true => {
+                next += 1;
+                next - 1
+            }
+            false => -1,
+        })
+        .collect();
+    Some((number, next as usize))
 }
 
 /// The cells written: the grid's, less those outside a shaped plate.
@@ -332,21 +351,27 @@ fn piece<W: Write>(
             })?;
     }
 
+    // A shaped plate's points are its own nodes only, renumbered in order, and its cells
+    // outside it are not written.
+    let kept = plate_points(field);
+    let keep = |k: usize| kept.as_ref().is_none_or(|(number, _)| number[k] >= 0);
     xml.create_element("Points").write_inner_content(|xml| {
         let points = field
             .x
             .iter()
             .zip(&field.y)
-            .flat_map(|(&x, &y)| [x, y, 0.0]);
+            .enumerate()
+            .filter(|(k, _)| keep(*k))
+            .flat_map(|(_, (&x, &y))| [x, y, 0.0]);
         data_array(xml, None, 3, points)
     })?;
 
     // Node and offset numbers fit in i64: they are below the length of an allocated array.
-    // A shaped plate's cells outside it are not written (its points are, unused).
+    let number = |n: usize| kept.as_ref().map_or(n as i64, |(number, _)| number[n]);
     let quads = (0..field.ny).flat_map(|je| {
         (0..field.nx)
             .filter(move |&ie| field.is_plate(ie, je))
-            .map(move |ie| field.element_nodes(ie, je).map(|n| n as i64))
+            .map(move |ie| field.element_nodes(ie, je).map(number))
     });
     let n_cells = plate_cells(field, sizes);
     xml.create_element("Cells").write_inner_content(|xml| {
@@ -376,12 +401,26 @@ fn point_data<W: Write>(xml: &mut Writer<W>, field: &FullField) -> io::Result<()
     xml.create_element("PointData")
         .with_attributes([("Scalars", "sigma"), ("Vectors", "displacement")])
         .write_inner_content(|xml| {
+            // A shaped plate's own nodes only (as its points).
+            let on = field.node_on_plate();
+            let kept = |v: &'_ [f64]| -> Vec<f64> {
+                v.iter()
+                    .zip(&on)
+                    .filter(|(_, &o)| o)
+                    .map(|(&x, _)| x)
+                    .collect()
+            };
             for (name, values) in nodal {
-                data_array(xml, Some(name), 1, values.iter().copied())?;
+                data_array(xml, Some(name), 1, kept(values))?;
             }
-            let contact = field.contact.iter().map(|&c| i32::from(c));
+            let contact = field
+                .contact
+                .iter()
+                .zip(&on)
+                .filter(|(_, &o)| o)
+                .map(|(&c, _)| i32::from(c));
             data_array(xml, Some("contact"), 1, contact)?;
-            let displacement = field.w.iter().flat_map(|&w| [0.0, 0.0, -w]);
+            let displacement = kept(&field.w).into_iter().flat_map(|w| [0.0, 0.0, -w]);
             data_array(xml, Some("displacement"), 3, displacement)
         })?;
 
