@@ -647,3 +647,41 @@ fn critical_moves_the_load_over_the_plate_only() {
         assert_eq!(p.outcome, RunOutcome::CONVERGED);
     }
 }
+
+/// A deflectometer's sensor over an opening of a shaped template reads no plate: the drop is
+/// refused naming the sensor (E77), exit 2, nothing written.
+#[test]
+fn a_sensor_over_an_opening_is_refused() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let template = std::fs::read_to_string("examples/fwd-panel.toml")
+        .expect("template")
+        .replace(
+            "[foundation]",
+            "[[opening]]\nx = [1.15, 1.725]\ny = [-0.4625, 0.4625]\n[foundation]",
+        );
+    let scene = dir.path().join("template.toml");
+    std::fs::write(&scene, template).expect("write");
+    let basins = dir.path().join("basins.csv");
+    std::fs::write(
+        &basins,
+        "station,load_kN,d0mm_um,d305mm_um,d610mm_um,d914mm_um,d1219mm_um,d1524mm_um\n1+000,40,200,180,150,120,95,70\n",
+    )
+    .expect("write");
+    let out = dir.path().join("out");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_liftoff"))
+        .arg("backcalc")
+        .arg(&basins)
+        .arg("--scene")
+        .arg(&scene)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .expect("run");
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("sensor at 1219 mm`: falls at (1.219, 0.000) m, on an opening"),
+        "{err}"
+    );
+    assert!(!out.exists());
+}

@@ -416,6 +416,53 @@ fn place(plate: &crate::scene::PlateSpec, drop: &Drop) -> Result<([f64; 2], Vec<
     Ok((at, sensors))
 }
 
+/// On a template of another outline (`[plate] outline`, `[[opening]]`, region panels), every
+/// sensor on the plate: one over an opening would read a deflection that is not there. (The
+/// load plate on an opening is refused with the drop's scene, E80.)
+fn on_shape(template: &SceneFile, drop: &Drop, sensors: &[[f64; 2]]) -> Result<()> {
+    let rect = |x: Option<[f64; 2]>, y: Option<[f64; 2]>, outline: Option<&Vec<[f64; 2]>>| match (
+        outline, x, y,
+    ) {
+        (Some(p), _, _) => p.clone(),
+        (None, Some(x), Some(y)) => vec![[x[0], y[0]], [x[1], y[0]], [x[1], y[1]], [x[0], y[1]]],
+        _ => Vec::new(),
+    };
+    // The shape in the scene's own coordinates (metres): only its point tests are used.
+    let shape = crate::layout::Layout {
+        outline: template.plate.as_ref().and_then(|p| p.outline.clone()),
+        openings: template
+            .opening
+            .iter()
+            .map(|o| rect(o.x, o.y, o.outline.as_ref()))
+            .collect(),
+        regions: template
+            .panel
+            .iter()
+            .filter(|p| p.x.is_some() || p.outline.is_some())
+            .map(|p| crate::layout::Region {
+                polygon: rect(p.x, p.y, p.outline.as_ref()),
+                section: crate::layout::PanelSection::REFERENCE,
+            })
+            .collect(),
+        ..crate::layout::Layout::default()
+    };
+    if !shape.is_shaped() {
+        return Ok(());
+    }
+    for (o, p) in drop.basin.offsets.iter().zip(sensors) {
+        if !shape.is_plate(p[0], p[1]) {
+            return Err(Error::invalid(
+                format!("{}: sensor at {:.0} mm", drop.label(), 1e3 * o),
+                format!(
+                    "falls at ({:.3}, {:.3}) m, on an opening or outside the template's outline: check the drop's place and direction",
+                    p[0], p[1]
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// The unknowns as the scene keys they write, with the template's values as their starts.
 fn targets(
     template: &SceneFile,
@@ -615,6 +662,7 @@ fn prepare<'m>(
         )
     })?;
     let (at, sensors) = place(plate, drop)?;
+    on_shape(template, drop, &sensors)?;
     let (targets, start) = targets(template, plate, soil, at, &options.unknowns)?;
     let (scene, background) = drop_scene(template, plate, drop, at, options)?;
     Ok(Forward {
