@@ -313,7 +313,7 @@ impl Mesh {
         // on a grid line (to the tolerance above).
         let near = |f: f64, i: usize| {
             let back = i > 0 && (f - i as f64).abs() <= tol;
-            let fwd = i + 1 < usize::MAX && (f - (i + 1) as f64).abs() <= tol;
+            let fwd = (f - (i + 1) as f64).abs() <= tol;
             [Some(i), back.then(|| i - 1), fwd.then_some(i + 1)]
         };
         let (ie, je) = if self.is_live(ie + je * self.nx) {
