@@ -113,3 +113,38 @@ fn a_segment_across_the_plate_is_the_line() {
     assert!(worst < 1e-12 * peak, "{worst:.3e}");
     assert_eq!(a.ops.mesh.n_nodes(), b.ops.mesh.n_nodes());
 }
+
+/// `critical --along joint:NAME` on a segment moves the load along the segment only: every
+/// position's reference point lies within its extent along the line (y ∈ [0, 2] m here), across
+/// it before, on and after the joint.
+#[test]
+fn critical_along_a_segment_stays_on_it() {
+    use liftoff::study::{critical, Along, CriticalOptions};
+    let joints = "[[joint]]\ny = 0.0\nkind = \"aggregate\"\nstiffness = 1e8\n[[joint]]\nname = \"T\"\nfrom = [0.0, 0.0]\nto = [0.0, 2.0]\nkind = \"aggregate\"\nstiffness = 1e8";
+    let scene = slab(6.0, 4.0, joints, [-2.0, -1.5]).replace(
+        "[mesh]",
+        "[[load]]\nkind = \"axle\"\nname = \"truck\"\nstandard = \"esal-single-dual\"\nx = 1.5\ny = -1.0\nheading = 90.0\n[mesh]",
+    );
+    let problem = liftoff::load(&Source::Toml(&scene), &Overrides::default()).expect("scene");
+    let options = CriticalOptions {
+        load: "truck".into(),
+        grid: [7, 9],
+        along: vec![Along::Joint("T".into())],
+        ..CriticalOptions::default()
+    };
+    let c = critical(&problem, &options, &Monitor::NONE).expect("search");
+    assert!(!c.positions.is_empty());
+    for p in &c.positions {
+        assert!(
+            (-1e-9..=2.0 + 1e-9).contains(&p.y),
+            "a position at y = {} off the segment",
+            p.y
+        );
+    }
+    let xs: std::collections::BTreeSet<i64> = c
+        .positions
+        .iter()
+        .map(|p| (p.x * 1e6).round() as i64)
+        .collect();
+    assert_eq!(xs.len(), 3, "before, on and after the joint: {xs:?}");
+}

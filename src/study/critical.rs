@@ -493,8 +493,16 @@ struct Grid {
 /// either a joint's coordinate (m) or which edge (false: the lower one).
 #[derive(Debug, Clone, Copy)]
 enum Line {
-    Joint { across: usize, at: f64 },
-    Edge { across: usize, high: bool },
+    /// A joint: the axis it lies across, its coordinate and a segment's extent along it (m).
+    Joint {
+        across: usize,
+        at: f64,
+        span: Option<[f64; 2]>,
+    },
+    Edge {
+        across: usize,
+        high: bool,
+    },
 }
 
 /// `n` points across the panel [w0, w1], its sides included (the middle alone for n = 1);
@@ -555,9 +563,13 @@ fn grid(model: &Model, k: usize, options: &CriticalOptions) -> Result<Grid> {
                 .joints
                 .iter()
                 .find(|j| &j.name == name)
-                .map(|j| Line::Joint {
-                    across: usize::from(j.axis == Axis::Y),
-                    at: to_m(j.axis, j.at),
+                .map(|j| {
+                    let along = if j.axis == Axis::X { Axis::Y } else { Axis::X };
+                    Line::Joint {
+                        across: usize::from(j.axis == Axis::Y),
+                        at: to_m(j.axis, j.at),
+                        span: j.span.map(|s| s.map(|v| to_m(along, v))),
+                    }
                 })
                 .ok_or_else(|| {
                     let names: Vec<&str> = joints.iter().map(|j| j.name.as_str()).collect();
@@ -682,14 +694,23 @@ fn grid(model: &Model, k: usize, options: &CriticalOptions) -> Result<Grid> {
         let first = points.len();
         for &line in &lines {
             // Across the line: before it, on it and after it (a joint), or the edge's own.
-            let (across, at) = match line {
-                Line::Joint { across, at } => (
+            let (across, at, span) = match line {
+                Line::Joint { across, at, span } => (
                     across,
                     on_plate(across, vec![at - hi(across), at, at - lo(across)]),
+                    span,
                 ),
-                Line::Edge { across, high } => (across, vec![r[across][usize::from(high)]]),
+                Line::Edge { across, high } => (across, vec![r[across][usize::from(high)]], None),
             };
-            let length = along(1 - across, own_at[1 - across]);
+            // Along a segment: the grid's points on it, or its middle where the grid has none.
+            let mut length = along(1 - across, own_at[1 - across]);
+            if let Some([a, b]) = span {
+                length.retain(|&c| c >= a - tol && c <= b + tol);
+                if length.is_empty() {
+                    let [lo_r, hi_r] = r[1 - across];
+                    length.push((0.5 * (a + b)).clamp(lo_r, hi_r));
+                }
+            }
             let (xs, ys) = if across == 0 {
                 (at, length)
             } else {
