@@ -1,9 +1,13 @@
-//! The layout of a jointed slab: joint lines across the whole plate, each with its load
-//! transfer, and per-panel overrides of thickness and Young's modulus — in the unit system of
-//! [`crate::model`] (lengths / L, D of the reference plate = 1).
+//! The layout of a jointed slab: joint lines across the whole plate and joint segments that
+//! end at another joint or at the edge, each with its load transfer; per-panel overrides of
+//! thickness and Young's modulus; and the plate's shape — an outline, openings, panels of their
+//! own outline — in the unit system of [`crate::model`] (lengths / L, D of the reference
+//! plate = 1).
 //!
 //! Joint lines run across the whole plate, so they cut it into a grid of rectangular *panels*,
-//! numbered by (column, row) from the lower-left (0-based here, 1-based in messages). A joint
+//! numbered by (column, row) from the lower-left (0-based here, 1-based in messages); segments
+//! cut it along their extent only and delimit no panel, and the panels of their own outline
+//! (`regions`) are numbered after the grid's. A joint
 //! stores energy per unit length ½ c (w⁺ − w⁻)² (+ ½ c_r (ψn⁺ − ψn⁻)² for a tied joint), a dowel
 //! ½ k_d (w⁺ − w⁻)² at its bar. In the unit system (energy unit P² L²/D, the plate's
 //! D w²/L² · L²) the constants are c̄ = c L³/D, c̄_r = c_r L/D and k̄_d = k_d L²/D.
