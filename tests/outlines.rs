@@ -685,3 +685,24 @@ fn a_sensor_over_an_opening_is_refused() {
     );
     assert!(!out.exists());
 }
+
+/// A dimensionless scene takes its outline in (s, t) under `[dimensionless]`: the L there is the
+/// box less its upper-right quarter as an opening, to 1e-12 of the peak V (the same cells).
+#[test]
+fn a_dimensionless_scene_has_its_outline_too() {
+    let scene = |shape: &str, tables: &str| {
+        format!(
+            "[dimensionless]\nfoundation = \"winkler\"\ngamma = 1e-2\ndelta = 0.003\nmu = 1.0\nnu = 0.2\n{shape}\n{tables}\n[[load]]\nkind = \"point\"\nx = 0.5\ny = -0.5\nforce = 1.0\n[mesh]\nelements = [16, 16]\n[solver]\ncontact = \"unbonded\"\n"
+        )
+    };
+    let outline =
+        "outline = [[-1.0, -1.0], [1.0, -1.0], [1.0, 0.0], [0.0, 0.0], [0.0, 1.0], [-1.0, 1.0]]";
+    let opening = "[[opening]]\nx = [0.0, 1.0]\ny = [0.0, 1.0]";
+    let a = analyse(&scene(outline, ""), &Overrides::default());
+    let b = analyse(&scene("", opening), &Overrides::default());
+    let (f, g) = (&a.report.field, &b.report.field);
+    let d = max_diff(&f.v, &g.v) / max_abs(&f.v);
+    assert!(d < 1e-12, "{d:.2e}");
+    assert_eq!(a.ops.mesh.n_nodes(), 289 - 64);
+    assert!(a.summary.V_corner.is_nan());
+}

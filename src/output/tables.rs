@@ -368,9 +368,16 @@ pub fn solve_table(s: &Summary, files: Option<(usize, &Path)>) -> String {
             "  resultant  : load {:.6} P, reaction {:.6} P (relative error {:.1e})",
             r.load, r.reaction, r.relative_error
         ));
+        // A shaped plate may have no plate at the centre or the corner (NaN in summary.json).
+        let at = |v: f64| match v.is_finite() {
+            true => format!("{v:.5e}"),
+            false => "off the plate".to_string(),
+        };
         l.push(format!(
-            "  V          : max {:.5e}, centre {:.5e}, corner {:.5e}  (V = D w / (P L²))",
-            s.V_max, s.V_center, s.V_corner
+            "  V          : max {:.5e}, centre {}, corner {}  (V = D w / (P L²))",
+            s.V_max,
+            at(s.V_center),
+            at(s.V_corner)
         ));
         l.push(stress_line(s, &units));
         l.push(format!(

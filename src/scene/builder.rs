@@ -93,6 +93,7 @@ impl ModelBuilder {
             allowable_pressure: None,
             bearing_length: None,
             zone: Vec::new(),
+            outline: None,
             soil: Default::default(),
         });
         self

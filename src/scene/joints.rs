@@ -518,9 +518,11 @@ fn bars(k: usize, spec: &JointSpec, joints: &mut [Joint], frame: &Frame) -> Resu
     let (half, scale) = (frame.half[i], frame.scale_xy[i]);
     let unit = frame.unit(along);
     let field = |n: &str| format!("joint[{k}].{n}");
+    // The cutting joints that cross this one (a segment only where it reaches it).
+    let at_k = joints[k].at;
     let crossings: Vec<f64> = joints
         .iter()
-        .filter(|j| j.axis == along && j.kind.doubles())
+        .filter(|j| j.axis == along && j.kind.doubles() && j.covers(at_k))
         .map(|j| j.at)
         .collect();
     // The joint's extent along its line: the plate's width, or a segment's.

@@ -18,7 +18,12 @@ use crate::model::Load;
 
 /// E79: the outline and the openings of the scene into `layout` (unit system).
 pub(super) fn shapes(file: &SceneFile, layout: &mut Layout, frame: &Frame) -> Result<()> {
-    let outline = file.plate.as_ref().and_then(|p| p.outline.as_ref());
+    let outline = (file.plate.as_ref().and_then(|p| p.outline.as_ref()))
+        .or(file.dimensionless.as_ref().and_then(|d| d.outline.as_ref()));
+    let field = match file.plate.as_ref().and_then(|p| p.outline.as_ref()) {
+        Some(_) => "plate.outline",
+        None => "dimensionless.outline",
+    };
     if outline.is_none() && file.opening.is_empty() && layout.regions.is_empty() {
         return Ok(());
     }
@@ -30,7 +35,7 @@ pub(super) fn shapes(file: &SceneFile, layout: &mut Layout, frame: &Frame) -> Re
     let [nx, ny] = frame.elements;
     let mut mask = CellMask::full(nx, ny);
     if let Some(vertices) = outline {
-        let corners = check_polygon(vertices, size, frame.elements, "plate.outline")?;
+        let corners = check_polygon(vertices, size, frame.elements, field)?;
         mask = CellMask::inside(nx, ny, &corners);
         layout.outline = Some(to_units(vertices, frame));
     }
@@ -68,7 +73,7 @@ pub(super) fn shapes(file: &SceneFile, layout: &mut Layout, frame: &Frame) -> Re
             })
             .collect();
         return Err(Error::invalid(
-            if file.opening.is_empty() { "plate.outline" } else { "opening" },
+            if file.opening.is_empty() { field } else { "opening" },
             format!(
                 "the outline and openings leave the plate in {} pieces that share no edge ({}): one scene is one plate — model each piece as its own scene, or join them",
                 pieces.len(),

@@ -219,6 +219,9 @@ pub struct DimensionlessSpec {
     /// Patches with another Γ_w (Winkler only).
     #[serde(default)]
     pub zone: Vec<ZoneSpec>,
+    /// The plate's outline in (s, t) ∈ [−1, 1]² (as `[plate] outline` of an SI scene).
+    #[serde(default)]
+    pub outline: Option<Vec<[f64; 2]>>,
     /// The soil's own groups: every other key of the section.
     #[serde(flatten)]
     pub soil: KeyMap,
