@@ -488,9 +488,10 @@ impl Model {
         }
         let missing = || Error::invalid("load", format!("the model has no vehicle {vehicle}"));
         let v = self.vehicles.get(vehicle).ok_or_else(missing)?;
-        let mu = self.groups.mu;
-        let mask = crate::mesh::outline::CellMask::of_layout(&self.layout, self.elements, mu);
-        Ok(v.prints(at)?.iter().all(|p| mask.covers_unit(p.x, p.y, mu)))
+        let (layout, mu) = (&self.layout, self.groups.mu);
+        Ok(v.prints(at)?.iter().all(|p| {
+            crate::mesh::outline::CellMask::layout_covers(layout, self.elements, mu, p.x, p.y)
+        }))
     }
 
     /// Move the vehicle `vehicle` (an index into [`Model::vehicles`]) to `at` = (x, y, heading),

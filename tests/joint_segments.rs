@@ -2,17 +2,11 @@
 //! Winkler springs is three separate plates, and a segment that runs the plate's whole width
 //! is the line across it.
 
-use liftoff::entry::Outcome;
-use liftoff::scene::Overrides;
-use liftoff::{Analysis, Monitor, Source};
+mod common;
 
-fn analyse(scene: &str) -> Analysis {
-    let problem = liftoff::load(&Source::Toml(scene), &Overrides::default()).expect("scene");
-    match liftoff::run(&problem, &Monitor::NONE).expect("solve") {
-        Outcome::Single(a) => *a,
-        Outcome::Combinations(_) => panic!("one load set"),
-    }
-}
+use common::run_toml;
+use liftoff::scene::Overrides;
+use liftoff::{Monitor, Source};
 
 /// A slab `a` × `b` m on 0.25 m elements with `extra` tables (joints), 6 kPa self-weight and a
 /// 0.5 m square of 400 kPa at `patch` (its lower-left corner), unbonded on Winkler springs.
@@ -61,9 +55,9 @@ contact = "unbonded"
 #[test]
 fn a_t_of_free_joints_is_three_slabs() {
     let joints = "[[joint]]\ny = 0.0\nkind = \"free\"\n[[joint]]\nfrom = [0.0, 0.0]\nto = [0.0, 2.0]\nkind = \"free\"";
-    let t = analyse(&slab(6.0, 4.0, joints, [-2.0, 1.0]));
+    let t = run_toml(&slab(6.0, 4.0, joints, [-2.0, 1.0]), &Overrides::default());
     // The piece alone: 3 × 2 m centred at the origin, the wheel moved with it.
-    let piece = analyse(&slab(3.0, 2.0, "", [-0.5, 0.0]));
+    let piece = run_toml(&slab(3.0, 2.0, "", [-0.5, 0.0]), &Overrides::default());
     let (f, g) = (&t.report.field, &piece.report.field);
     let peak = g.w.iter().cloned().fold(0.0, f64::max);
     let mut worst: f64 = 0.0;
@@ -102,8 +96,8 @@ fn a_segment_across_the_plate_is_the_line() {
     let line = "[[joint]]\nx = 0.5\nkind = \"aggregate\"\nstiffness = 1e8";
     let segment =
         "[[joint]]\nfrom = [0.5, -2.0]\nto = [0.5, 2.0]\nkind = \"aggregate\"\nstiffness = 1e8";
-    let a = analyse(&slab(6.0, 4.0, line, [0.0, 0.0]));
-    let b = analyse(&slab(6.0, 4.0, segment, [0.0, 0.0]));
+    let a = run_toml(&slab(6.0, 4.0, line, [0.0, 0.0]), &Overrides::default());
+    let b = run_toml(&slab(6.0, 4.0, segment, [0.0, 0.0]), &Overrides::default());
     let (f, g) = (&a.report.field, &b.report.field);
     let peak = f.w.iter().cloned().fold(0.0, f64::max);
     let worst =

@@ -3,19 +3,13 @@
 //! as it shrinks; the re-entrant corner's moment grows under refinement at the rate plate
 //! theory gives.
 
+mod common;
+
+use common::{max_abs, max_abs_diff, run_source, run_toml};
 use liftoff::entry::Outcome;
 use liftoff::method::{MethodKind, Route};
 use liftoff::scene::Overrides;
 use liftoff::{Analysis, Monitor, Source};
-
-/// A scene's analysis with `overrides`; panics naming the scene on any error.
-fn analyse(scene: &str, overrides: &Overrides) -> Analysis {
-    let problem = liftoff::load(&Source::Toml(scene), overrides).expect("scene");
-    match liftoff::run(&problem, &Monitor::NONE).expect("solve") {
-        Outcome::Single(a) => *a,
-        Outcome::Combinations(_) => panic!("one load set"),
-    }
-}
 
 fn method(kind: MethodKind) -> Overrides {
     Overrides {
@@ -65,15 +59,6 @@ const L_OUTLINE: &str =
 const L_OPENING: &str = "[[opening]]\nx = [0.0, 2.0]\ny = [0.0, 2.0]";
 const L_JOINT: &str = "[[joint]]\nx = -1.0\nkind = \"continuous\"";
 
-fn max_diff(a: &[f64], b: &[f64]) -> f64 {
-    assert_eq!(a.len(), b.len());
-    a.iter().zip(b).fold(0.0, |m, (x, y)| m.max((x - y).abs()))
-}
-
-fn max_abs(v: &[f64]) -> f64 {
-    v.iter().fold(0.0, |m, x| m.max(x.abs()))
-}
-
 /// The L as an outline, as the box less an opening, and as an outline crossed by a
 /// continuous joint (two panels of one plate) are one discrete problem: every nodal
 /// deflection and pressure agrees to round-off (1e-9 of the peak: the three assemble the same
@@ -95,16 +80,16 @@ fn an_l_is_the_same_problem_posed_three_ways() {
                 solver: Some(route),
                 ..method(kind)
             };
-            let outline = analyse(&l_scene(foundation, L_OUTLINE, ""), &o);
-            let opening = analyse(&l_scene(foundation, "", L_OPENING), &o);
-            let joint = analyse(&l_scene(foundation, L_OUTLINE, L_JOINT), &o);
+            let outline = run_toml(&l_scene(foundation, L_OUTLINE, ""), &o);
+            let opening = run_toml(&l_scene(foundation, "", L_OPENING), &o);
+            let joint = run_toml(&l_scene(foundation, L_OUTLINE, L_JOINT), &o);
             let f = &outline.report.field;
             let scale_w = max_abs(&f.w);
             let scale_p = max_abs(&f.pressure);
             for (name, other) in [("opening", &opening), ("continuous joint", &joint)] {
                 let g = &other.report.field;
-                let dw = max_diff(&f.w, &g.w) / scale_w;
-                let dp = max_diff(&f.pressure, &g.pressure) / scale_p;
+                let dw = max_abs_diff(&f.w, &g.w) / scale_w;
+                let dp = max_abs_diff(&f.pressure, &g.pressure) / scale_p;
                 assert!(
                     dw < 1e-9 && dp < 1e-9,
                     "{foundation} {kind:?} {route:?}: the L as {name} differs by {dw:.2e} in w, {dp:.2e} in pressure"
@@ -161,15 +146,10 @@ fn the_masked_mesh_matches_opensees() {
         ),
     ];
     for (path, live, lifted, w_max, points) in cases {
-        let problem = liftoff::load(
+        let a = run_source(
             &Source::Path(std::path::Path::new(path)),
             &method(MethodKind::Qp),
-        )
-        .expect("scene");
-        let a = match liftoff::run(&problem, &Monitor::NONE).expect("solve") {
-            Outcome::Single(a) => a,
-            Outcome::Combinations(_) => panic!("one load set"),
-        };
+        );
         let f = &a.report.field;
         let on = f.node_on_plate();
         assert_eq!(
@@ -241,7 +221,7 @@ contact = "bonded"
             .expect("node");
         f.w[k]
     };
-    let plain = at_load(&analyse(&scene(""), &Overrides::default()));
+    let plain = at_load(&run_toml(&scene(""), &Overrides::default()));
     let mut changes = Vec::new();
     for s in [1.0, 0.5, 0.25] {
         let c = -1.5;
@@ -253,7 +233,7 @@ contact = "bonded"
             c + s / 2.0
         );
         changes.push(
-            (at_load(&analyse(&scene(&opening), &Overrides::default())) - plain).abs() / plain,
+            (at_load(&run_toml(&scene(&opening), &Overrides::default())) - plain).abs() / plain,
         );
     }
     for pair in changes.windows(2) {
@@ -317,7 +297,7 @@ contact = "bonded"
 "#,
         -a, -a, -a, -a
     );
-    let r = analyse(&scene, &Overrides::default()).report;
+    let r = run_toml(&scene, &Overrides::default()).report;
     let h = box_m / n as f64;
     let e = &r.elements;
     let k = (0..e.x.len())
@@ -399,7 +379,7 @@ fn a_uniform_load_acts_on_the_plate_not_its_box() {
             "[mesh]",
             "[[load]]\nkind = \"uniform\"\npressure = 6000.0\n[mesh]",
         );
-    let a = analyse(&scene, &Overrides::default());
+    let a = run_toml(&scene, &Overrides::default());
     let r = &a.report.resultant;
     let load = 6000.0 * 12.0;
     assert!(
@@ -457,15 +437,15 @@ contact = "unbonded"
         symmetry: Some(liftoff::model::SymmetryMode::None),
         ..Overrides::default()
     };
-    let quarter = analyse(centred, &Overrides::default());
-    let full = analyse(centred, &whole);
+    let quarter = run_toml(centred, &Overrides::default());
+    let full = run_toml(centred, &whole);
     assert!(
         quarter.ops.mesh.sym_x && quarter.ops.mesh.sym_y,
         "a quarter model"
     );
     assert!(!full.ops.mesh.sym_x && !full.ops.mesh.sym_y);
     let (a, b) = (&quarter.report.field, &full.report.field);
-    let dw = max_diff(&a.w, &b.w) / max_abs(&b.w);
+    let dw = max_abs_diff(&a.w, &b.w) / max_abs(&b.w);
     assert!(dw < 1e-9, "quarter vs whole: {dw:.2e}");
     // The L (not symmetric) with a load symmetric about both axes: a point load on its
     // re-entrant corner (0, 0), which is on the plate's edge.
@@ -474,7 +454,7 @@ contact = "unbonded"
         "kind = \"point\"\nx = 0.0\ny = 0.0\nforce = 1.0e5",
     );
     assert!(l.contains("force = 1.0e5"));
-    let a = analyse(&l, &Overrides::default());
+    let a = run_toml(&l, &Overrides::default());
     assert!(
         !a.ops.mesh.sym_x && !a.ops.mesh.sym_y,
         "the L is modelled whole"
@@ -570,19 +550,19 @@ contact = "unbonded"
     let region = "[[panel]]\nx = [-1.0, 1.0]\ny = [-1.0, 1.0]\nthickness = 0.4";
     let grid = "[[joint]]\nx = -1.0\nkind = \"continuous\"\n[[joint]]\nx = 1.0\nkind = \"continuous\"\n[[joint]]\ny = -1.0\nkind = \"continuous\"\n[[joint]]\ny = 1.0\nkind = \"continuous\"\n[[panel]]\nat = [0.0, 0.0]\nthickness = 0.4";
     let filled = "[[opening]]\nx = [-1.0, 1.0]\ny = [-1.0, 1.0]\n[[panel]]\nx = [-1.0, 1.0]\ny = [-1.0, 1.0]\nthickness = 0.4";
-    let a = analyse(&base(region), &Overrides::default());
+    let a = run_toml(&base(region), &Overrides::default());
     let peak = max_abs(&a.report.field.w);
     for (name, other) in [("a grid panel", grid), ("an opening filled", filled)] {
-        let b = analyse(&base(other), &Overrides::default());
-        let d = max_diff(&a.report.field.w, &b.report.field.w) / peak;
+        let b = run_toml(&base(other), &Overrides::default());
+        let d = max_abs_diff(&a.report.field.w, &b.report.field.w) / peak;
         assert!(d < 1e-12, "the region panel vs {name}: {d:.2e}");
     }
     // The thicker panel is stiffer than the plain slab: a smaller deflection under the column.
-    let plain = analyse(&base(""), &Overrides::default());
+    let plain = run_toml(&base(""), &Overrides::default());
     assert!(max_abs(&plain.report.field.w) > 1.05 * peak);
     // A blockout: the same panel ringed by free joint segments.
     let ring = "[[joint]]\nfrom = [-1.0, -1.0]\nto = [1.0, -1.0]\nkind = \"free\"\n[[joint]]\nfrom = [1.0, -1.0]\nto = [1.0, 1.0]\nkind = \"free\"\n[[joint]]\nfrom = [1.0, 1.0]\nto = [-1.0, 1.0]\nkind = \"free\"\n[[joint]]\nfrom = [-1.0, 1.0]\nto = [-1.0, -1.0]\nkind = \"free\"";
-    let blockout = analyse(&base(&format!("{region}\n{ring}")), &Overrides::default());
+    let blockout = run_toml(&base(&format!("{region}\n{ring}")), &Overrides::default());
     let f = &blockout.report.field;
     let flat = 6000.0 / 5e7;
     for j in 0..24 {
@@ -607,7 +587,8 @@ contact = "unbonded"
 
 /// `critical` on a shaped plate moves the axle only where every print lies on the plate: of a
 /// 9 × 7 grid over the box, the positions with a print on the opening or in the L's cut-away
-/// quarter are skipped, every kept one has its prints on the plate, and each converges.
+/// quarter are skipped, no kept print overlaps either (checked against the scene's own
+/// rectangles), and each position converges.
 #[test]
 fn critical_moves_the_load_over_the_plate_only() {
     use liftoff::study::{critical, CriticalOptions, RunOutcome};
@@ -629,21 +610,30 @@ fn critical_moves_the_load_over_the_plate_only() {
         "{} positions",
         c.positions.len()
     );
-    let model = &problem.combinations[0].model;
-    let truck = model
-        .vehicles
-        .iter()
-        .position(|v| v.name.as_deref() == Some("truck"))
-        .expect("the axle");
+    // Off the plate, by the scene's geometry (not the library's mask): the L's cut-away
+    // quarter x, y > 0 and the opening [−3, −2] × [−2, −1]. A print overlaps a region when the
+    // two rectangles share positive area.
+    let off: [[[f64; 2]; 2]; 2] = [[[0.0, 4.0], [0.0, 3.0]], [[-3.0, -2.0], [-2.0, -1.0]]];
+    let overlap = |a: [f64; 2], b: [f64; 2]| a[1].min(b[1]) - a[0].max(b[0]) > 1e-9;
     for p in &c.positions {
-        assert!(
-            model
-                .prints_on_plate(truck, [p.x, p.y, p.heading])
-                .expect("place"),
-            "a print off the plate at ({}, {})",
-            p.x,
-            p.y
-        );
+        let prints = &c
+            .prints
+            .iter()
+            .find(|f| f.heading == p.heading)
+            .expect("the heading's prints")
+            .prints;
+        for r in prints {
+            let (x, y) = (
+                [p.x + r[0][0], p.x + r[0][1]],
+                [p.y + r[1][0], p.y + r[1][1]],
+            );
+            assert!(
+                !off.iter().any(|o| overlap(x, o[0]) && overlap(y, o[1])),
+                "a print {x:?} × {y:?} off the plate at ({}, {})",
+                p.x,
+                p.y
+            );
+        }
         assert_eq!(p.outcome, RunOutcome::CONVERGED);
     }
 }
@@ -698,10 +688,10 @@ fn a_dimensionless_scene_has_its_outline_too() {
     let outline =
         "outline = [[-1.0, -1.0], [1.0, -1.0], [1.0, 0.0], [0.0, 0.0], [0.0, 1.0], [-1.0, 1.0]]";
     let opening = "[[opening]]\nx = [0.0, 1.0]\ny = [0.0, 1.0]";
-    let a = analyse(&scene(outline, ""), &Overrides::default());
-    let b = analyse(&scene("", opening), &Overrides::default());
+    let a = run_toml(&scene(outline, ""), &Overrides::default());
+    let b = run_toml(&scene("", opening), &Overrides::default());
     let (f, g) = (&a.report.field, &b.report.field);
-    let d = max_diff(&f.v, &g.v) / max_abs(&f.v);
+    let d = max_abs_diff(&f.v, &g.v) / max_abs(&f.v);
     assert!(d < 1e-12, "{d:.2e}");
     assert_eq!(a.ops.mesh.n_nodes(), 289 - 64);
     assert!(a.summary.V_corner.is_nan());

@@ -420,32 +420,8 @@ fn place(plate: &crate::scene::PlateSpec, drop: &Drop) -> Result<([f64; 2], Vec<
 /// sensor on the plate: one over an opening would read a deflection that is not there. (The
 /// load plate on an opening is refused with the drop's scene, E80.)
 fn on_shape(template: &SceneFile, drop: &Drop, sensors: &[[f64; 2]]) -> Result<()> {
-    let rect = |x: Option<[f64; 2]>, y: Option<[f64; 2]>, outline: Option<&Vec<[f64; 2]>>| match (
-        outline, x, y,
-    ) {
-        (Some(p), _, _) => p.clone(),
-        (None, Some(x), Some(y)) => vec![[x[0], y[0]], [x[1], y[0]], [x[1], y[1]], [x[0], y[1]]],
-        _ => Vec::new(),
-    };
     // The shape in the scene's own coordinates (metres): only its point tests are used.
-    let shape = crate::layout::Layout {
-        outline: template.plate.as_ref().and_then(|p| p.outline.clone()),
-        openings: template
-            .opening
-            .iter()
-            .map(|o| rect(o.x, o.y, o.outline.as_ref()))
-            .collect(),
-        regions: template
-            .panel
-            .iter()
-            .filter(|p| p.x.is_some() || p.outline.is_some())
-            .map(|p| crate::layout::Region {
-                polygon: rect(p.x, p.y, p.outline.as_ref()),
-                section: crate::layout::PanelSection::REFERENCE,
-            })
-            .collect(),
-        ..crate::layout::Layout::default()
-    };
+    let shape = crate::scene::scene_shape(template)?;
     if !shape.is_shaped() {
         return Ok(());
     }

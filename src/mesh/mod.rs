@@ -251,11 +251,6 @@ impl Mesh {
         (0..self.n_elements()).filter(|&e| self.is_live(e))
     }
 
-    /// True when some cell of the grid is not plate (an outline, openings).
-    pub fn is_shaped(&self) -> bool {
-        self.topo.as_ref().is_some_and(|t| t.is_shaped())
-    }
-
     /// Coordinates of node n (the copies of a grid node share them).
     pub fn node_xy(&self, n: usize) -> (f64, f64) {
         let n = self.grid_of(n);

@@ -24,6 +24,15 @@ pub struct CellMask {
     pub plate: Vec<bool>,
 }
 
+/// The cells of `n` along one axis that the interval [f0, f1] (in cells) overlaps with positive
+/// length.
+fn overlapped(f: [f64; 2], n: usize) -> std::ops::Range<usize> {
+    let tol = 1e-9;
+    let lo = (f[0] + tol).floor().max(0.0) as usize;
+    let hi = ((f[1] - tol).ceil().max(1.0) as usize).min(n);
+    lo.min(n)..hi
+}
+
 /// The largest multiple of the element counts [`check_polygon`] tries when it names the mesh
 /// that would put every vertex on a grid line.
 const MAX_REFINEMENT: usize = 64;
@@ -79,6 +88,16 @@ impl CellMask {
         Self { nx, ny, plate }
     }
 
+    /// True when cell (i, j) exists and is plate (false off the grid, so that a neighbour's
+    /// index may run past an edge).
+    pub fn at(&self, i: isize, j: isize) -> bool {
+        i >= 0
+            && j >= 0
+            && (i as usize) < self.nx
+            && (j as usize) < self.ny
+            && self.plate[i as usize + j as usize * self.nx]
+    }
+
     /// True when the mask is its own mirror image about the box's middle line x = const
     /// (`about_x`) or y = const.
     pub fn symmetric(&self, about_x: bool) -> bool {
@@ -110,20 +129,30 @@ impl CellMask {
     /// True when every cell that the rectangle [fx0, fx1] × [fy0, fy1] (in cells from the box's
     /// lower-left corner) overlaps with positive area is plate.
     pub fn covers(&self, fx: [f64; 2], fy: [f64; 2]) -> bool {
-        let tol = 1e-9;
-        let span = |f: [f64; 2], n: usize| {
-            let lo = (f[0] + tol).floor().max(0.0) as usize;
-            let hi = ((f[1] - tol).ceil().max(1.0) as usize).min(n);
-            lo.min(n)..hi
-        };
-        span(fx, self.nx).all(|i| span(fy, self.ny).all(|j| self.plate[i + j * self.nx]))
+        let (xs, ys) = (overlapped(fx, self.nx), overlapped(fy, self.ny));
+        xs.into_iter()
+            .all(|i| ys.clone().all(|j| self.plate[i + j * self.nx]))
     }
 
-    /// [`Self::covers`] for a rectangle in the unit system of a whole plate [−1, 1] × [−μ, μ].
-    pub fn covers_unit(&self, x: [f64; 2], y: [f64; 2], mu: f64) -> bool {
-        let fx = |v: f64| (v + 1.0) * 0.5 * self.nx as f64;
-        let fy = |v: f64| (v + mu) / (2.0 * mu) * self.ny as f64;
-        self.covers([fx(x[0]), fx(x[1])], [fy(y[0]), fy(y[1])])
+    /// [`Self::covers`] for the rectangle x × y in the unit system of a whole plate [−1, 1] ×
+    /// [−μ, μ] of `elements` cells, read from a layout's shape cell by cell (by the cells'
+    /// centres, as [`Self::of_layout`]) without building the whole mask: the cells under a
+    /// tire print, for a load moved over many positions.
+    pub fn layout_covers(
+        layout: &Layout,
+        elements: [usize; 2],
+        mu: f64,
+        x: [f64; 2],
+        y: [f64; 2],
+    ) -> bool {
+        let [nx, ny] = elements;
+        let (hx, hy) = (2.0 / nx as f64, 2.0 * mu / ny as f64);
+        let f = |v: [f64; 2], lo: f64, h: f64| [(v[0] - lo) / h, (v[1] - lo) / h];
+        let ys = overlapped(f(y, -mu, hy), ny);
+        overlapped(f(x, -1.0, hx), nx).all(|i| {
+            ys.clone()
+                .all(|j| layout.is_plate(-1.0 + (i as f64 + 0.5) * hx, -mu + (j as f64 + 0.5) * hy))
+        })
     }
 
     /// The plate's cells as rectangles [i0, i1) × [j0, j1) of cells: runs along each row,

@@ -636,14 +636,6 @@ fn bars(k: usize, spec: &JointSpec, joints: &mut [Joint], frame: &Frame) -> Resu
 /// joint between slabs.
 pub(super) fn segment_ends(layout: &Layout, frame: &Frame) -> Result<()> {
     let mask = crate::mesh::outline::CellMask::of_layout(layout, frame.elements, frame.half[1]);
-    let [nx, ny] = frame.elements;
-    let plate = |i: isize, j: isize| {
-        i >= 0
-            && j >= 0
-            && (i as usize) < nx
-            && (j as usize) < ny
-            && mask.plate[i as usize + j as usize * nx]
-    };
     for (k, joint) in layout.joints.iter().enumerate() {
         let (Some(span), true) = (joint.span, joint.kind.doubles()) else {
             continue;
@@ -667,7 +659,7 @@ pub(super) fn segment_ends(layout: &Layout, frame: &Frame) -> Result<()> {
                 Axis::X => ((line - 1, beyond), (line, beyond)),
                 Axis::Y => ((beyond, line - 1), (beyond, line)),
             };
-            if !(plate(c1.0, c1.1) && plate(c2.0, c2.1)) {
+            if !(mask.at(c1.0, c1.1) && mask.at(c2.0, c2.1)) {
                 continue; // at the edge of the plate's shape
             }
             let on_other = layout.joints.iter().enumerate().any(|(m, other)| {

@@ -33,6 +33,7 @@ pub mod vehicles;
 
 pub use builder::ModelBuilder;
 pub use loads::{DEFAULT_CASE, MAX_VOID_DEPTH_RATIO};
+pub(crate) use outline::scene_shape;
 pub use overrides::{Overrides, OPTIONS};
 pub use spec::*;
 

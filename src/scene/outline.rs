@@ -84,6 +84,30 @@ pub(super) fn shapes(file: &SceneFile, layout: &mut Layout, frame: &Frame) -> Re
     Ok(())
 }
 
+/// The shape of a scene in its own coordinates (m, or s and t): its outline, openings and
+/// panels of their own outline as polygons — for point tests before the scene becomes a model
+/// (a backcalculation's sensors on its template).
+pub(crate) fn scene_shape(file: &SceneFile) -> Result<Layout> {
+    let mut shape = Layout {
+        outline: (file.plate.as_ref().and_then(|p| p.outline.clone()))
+            .or_else(|| file.dimensionless.as_ref().and_then(|d| d.outline.clone())),
+        ..Layout::default()
+    };
+    for (k, o) in file.opening.iter().enumerate() {
+        shape.openings.push(opening_polygon(k, o)?.0);
+    }
+    for (k, p) in file.panel.iter().enumerate() {
+        if p.x.is_some() || p.y.is_some() || p.outline.is_some() {
+            let (polygon, _) = polygon(&format!("panel[{k}]"), p.x, p.y, p.outline.as_ref())?;
+            shape.regions.push(crate::layout::Region {
+                polygon,
+                section: crate::layout::PanelSection::REFERENCE,
+            });
+        }
+    }
+    Ok(shape)
+}
+
 /// The polygon of `[[opening]]` k (scene coordinates) and the field its errors name.
 fn opening_polygon(k: usize, spec: &OpeningSpec) -> Result<(Vec<[f64; 2]>, String)> {
     polygon(
@@ -152,13 +176,6 @@ pub(super) fn bars_on_plate(file: &SceneFile, layout: &mut Layout, frame: &Frame
         2.0 * frame.half[0] / nx as f64,
         2.0 * frame.half[1] / ny as f64,
     );
-    let cell = |i: isize, j: isize| {
-        i >= 0
-            && j >= 0
-            && (i as usize) < nx
-            && (j as usize) < ny
-            && mask.plate[i as usize + j as usize * nx]
-    };
     for (k, joint) in layout.joints.iter_mut().enumerate() {
         let (axis, at) = (joint.axis, joint.at);
         let crate::layout::JointKind::Dowels { positions, .. } = &mut joint.kind else {
@@ -169,12 +186,12 @@ pub(super) fn bars_on_plate(file: &SceneFile, layout: &mut Layout, frame: &Frame
             crate::layout::Axis::X => {
                 let i = ((at + frame.half[0]) / hx).round() as isize;
                 let j = (((p + frame.half[1]) / hy).floor() as isize).min(ny as isize - 1);
-                cell(i - 1, j) && cell(i, j)
+                mask.at(i - 1, j) && mask.at(i, j)
             }
             crate::layout::Axis::Y => {
                 let j = ((at + frame.half[1]) / hy).round() as isize;
                 let i = (((p + frame.half[0]) / hx).floor() as isize).min(nx as isize - 1);
-                cell(i, j - 1) && cell(i, j)
+                mask.at(i, j - 1) && mask.at(i, j)
             }
         };
         let explicit = file.joint.get(k).is_some_and(|j| j.positions.is_some());

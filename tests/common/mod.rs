@@ -56,6 +56,29 @@ pub fn run(text: &str) -> Analysis {
     a
 }
 
+/// A scene of one load set through the front ends' seam (`liftoff::load`, `liftoff::run`) with
+/// the given options, panicking on an error or a solve that did not converge (as [`run`]).
+pub fn run_source(source: &liftoff::Source, overrides: &liftoff::scene::Overrides) -> Analysis {
+    let problem = liftoff::load(source, overrides).unwrap_or_else(|e| panic!("scene: {e}"));
+    let a = match liftoff::run(&problem, &liftoff::Monitor::NONE) {
+        Ok(liftoff::Outcome::Single(a)) => *a,
+        Ok(liftoff::Outcome::Combinations(_)) => panic!("the scene has combinations"),
+        Err(e) => panic!("solve failed: {e}"),
+    };
+    assert!(
+        a.solution.status.converged(),
+        "{} solve did not converge: {}",
+        a.solution.method.name(),
+        a.solution.status.describe()
+    );
+    a
+}
+
+/// [`run_source`] of scene text.
+pub fn run_toml(text: &str, overrides: &liftoff::scene::Overrides) -> Analysis {
+    run_source(&liftoff::Source::Toml(text), overrides)
+}
+
 /// Largest absolute difference of two equally long slices.
 pub fn max_abs_diff(a: &[f64], b: &[f64]) -> f64 {
     assert_eq!(a.len(), b.len());
