@@ -292,6 +292,11 @@ fn the_design_brackets_the_least_thickness() {
     };
     assert!(at(hi).value <= 1.0 && at(hi).passes);
     assert!(at(lo).value > 1.0 && !at(lo).passes);
+    // EB109 designs against fatigue and erosion: the value is the larger.
+    for p in &d.points {
+        let erosion = p.erosion.expect("a PCA run on Winkler soil sums erosion");
+        assert_eq!(p.value, p.bottom.max(p.top).max(erosion));
+    }
 }
 
 /// The report of a damage run's files: the governing damage of each face as damage.json has

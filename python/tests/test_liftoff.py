@@ -910,6 +910,48 @@ def test_damage_on_dask_equals_the_local_run(client):
         assert spread.cracking == local.cracking and spread.complete
 
 
+@pytest.mark.parametrize("units", ["si", "us"])
+def test_pca_erosion_equals_the_cli_files(units, tmp_path):
+    """With model = "pca" the run sums the erosion at the panel corners: ``erosion`` is
+    erosion.csv (in the scene's units: k in N/m³ or pci, deflections in m or in), the passes'
+    erosion columns are passes.csv's, and the passes' shares at the governing corner add up to
+    its damage; the SI and US runs are one run."""
+    runs = {}
+    for system in ("si", units):
+        scene = tmp_path / f"pca-{system}.toml"
+        text = DAMAGE_SLAB if system == "si" else damage_slab_us()
+        scene.write_text(text.replace('model = "mepdg"', 'model = "pca"'))
+        runs[system] = (scene, liftoff.damage(scene))
+    scene, d = runs[units]
+    r = cli("damage", str(scene), "--out", str(tmp_path / "out"))
+    assert r.returncode == 0, r.stderr
+    assert d.model == "pca" and d.erosion_note is None
+    e = d.erosion
+    assert len(e["corners"]) == 4, "one slab, four corners"
+    ref = [{k.split(" [")[0]: v for k, v in row.items()}
+           for row in read_rows(tmp_path / "out" / "erosion.csv")]
+    assert [row["panel"] for row in ref] == [c["panel"] for c in e["corners"]]
+    for key in ("x", "y", "thickness", "deflection", "damage"):
+        # Both print the shortest representation that round-trips.
+        assert [float(row[key]) for row in ref] == [c[key] for c in e["corners"]], key
+    rows = [{k.split(" [")[0]: v for k, v in row.items()}
+            for row in read_rows(tmp_path / "out" / "passes.csv")]
+    for row, ref_row in zip(d.passes, rows):
+        csv_equal(row, ref_row)
+    g = e["corners"][e["governing"]]
+    assert math.isclose(sum(p["erosion_share"] for p in d.passes), g["damage"], rel_tol=1e-12)
+    si = runs["si"][1].erosion
+    inch, lbf = 0.0254, 4.4482216152605
+    pci = lbf / inch**3
+    scale = (1.0, 1.0) if units == "si" else (inch, pci)
+    assert math.isclose(e["k"] * scale[1], si["k"], rel_tol=1e-12)
+    for a, b in zip(e["corners"], si["corners"]):
+        # The two scenes are one slab in two unit systems: equal to the solver's tolerance
+        # raised to the relation's power in the deflection (about 10).
+        assert math.isclose(a["deflection"] * scale[0], b["deflection"], rel_tol=1e-8)
+        assert math.isclose(a["damage"], b["damage"], rel_tol=1e-7)
+
+
 def test_design_equals_the_cli_and_refuses_a_bad_range(tmp_path):
     """liftoff.design is `liftoff design --json`: the same runs, thicknesses, bracket and the
     least thickness found, in the scene's unit (metres here)."""

@@ -12,5 +12,9 @@
 //! none applies an edge-stress factor or a load-transfer reduction, since liftoff models the
 //! joints and their load transfer itself.
 
+pub mod faa;
+mod keys;
+pub mod mepdg;
+pub mod pca;
 pub mod plan;
 pub mod relations;

@@ -60,6 +60,11 @@ fn csv_passes(d: &Damage) -> String {
         "top_allowed".into(),
         "bottom_share".into(),
         "top_share".into(),
+        l.header("erosion_deflection", sys),
+        l.header("erosion_x", sys),
+        l.header("erosion_y", sys),
+        "erosion_allowed".into(),
+        "erosion_share".into(),
     ]
     .join(",");
     s.push('\n');
@@ -71,9 +76,10 @@ fn csv_passes(d: &Damage) -> String {
             Some(crate::units::UnitSystem::Us) => k * 9.0 / 5.0,
             _ => k,
         });
+        let e = q.erosion;
         let _ = writeln!(
             s,
-            "{},{:e},{:e},{},{:e},{},{},{},{:e},{:e},{:e},{},{:e},{:e},{:e},{},{:e},{:e}",
+            "{},{:e},{:e},{},{:e},{},{},{},{:e},{:e},{:e},{},{:e},{:e},{:e},{},{:e},{:e},{},{},{},{},{}",
             q.group,
             c(f, q.load),
             c(l, q.offset),
@@ -92,9 +98,39 @@ fn csv_passes(d: &Damage) -> String {
             opt(q.top.allowed),
             q.bottom_share,
             q.top_share,
+            opt(e.map(|e| c(Measure::Deflection, e.deflection))),
+            opt(e.map(|e| c(l, e.x))),
+            opt(e.map(|e| c(l, e.y))),
+            opt(e.and_then(|e| e.allowed)),
+            opt(e.map(|e| e.share)),
         );
     }
     s
+}
+
+/// erosion.csv: the PCA's erosion damage at every panel corner (None: no erosion summed).
+fn csv_erosion(d: &Damage) -> Option<String> {
+    let e = d.erosion.as_ref()?.reported(d.units);
+    let sys = d.units;
+    let l = Measure::Length;
+    let mut s = [
+        "panel".to_string(),
+        l.header("x", sys),
+        l.header("y", sys),
+        l.header("thickness", sys),
+        Measure::Deflection.header("deflection", sys),
+        "damage".into(),
+    ]
+    .join(",");
+    s.push('\n');
+    for c in &e.corners {
+        let _ = writeln!(
+            s,
+            "\"{}\",{:e},{:e},{:e},{:e},{:e}",
+            c.corner.panel, c.corner.x, c.corner.y, c.corner.thickness, c.deflection, c.damage
+        );
+    }
+    Some(s)
 }
 
 /// The maps' units: the scene's system, lengths in metres of the field.
@@ -108,6 +144,9 @@ pub fn write_damage(dir: &Path, d: &Damage, title: &str) -> Result<Vec<PathBuf>>
     let mut st = Staged::new(dir)?;
     st.write_text("damage.csv", &csv_damage(d))?;
     st.write_text("passes.csv", &csv_passes(d))?;
+    if let Some(text) = csv_erosion(d) {
+        st.write_text("erosion.csv", &text)?;
+    }
     let json = serde_json::to_string_pretty(&d.reported())
         .map_err(|e| Error::numerical("damage.json", format!("cannot serialise: {e}")))?;
     st.write_text("damage.json", &json)?;
@@ -204,6 +243,31 @@ pub fn damage_table(title: &str, d: &Damage, files: Option<(usize, &Path)>) -> S
             len.unit
         );
     }
+    if let Some(e) = &d.erosion {
+        match e.governing.and_then(|g| e.corners.get(g)) {
+            Some(g) => {
+                let _ = writeln!(
+                    s,
+                    "  erosion    : C2 Σ n/N = {:.4e} at the corner ({:.2}, {:.2}) {} of panel {}, k {:.4} {} (C2 = {})",
+                    g.damage,
+                    len.apply(g.corner.x),
+                    len.apply(g.corner.y),
+                    len.unit,
+                    g.corner.panel,
+                    crate::units::Quantity::SubgradeModulus
+                        .from_si(d.units.unwrap_or_default(), e.k),
+                    crate::units::Quantity::SubgradeModulus.unit(d.units.unwrap_or_default()),
+                    e.c2
+                );
+            }
+            None => {
+                let _ = writeln!(s, "  erosion    : no panel corner on the plate");
+            }
+        }
+    }
+    if let Some(note) = &d.erosion_note {
+        let _ = writeln!(s, "  erosion    : not summed: {note}");
+    }
     if let Some(c) = d.cracking {
         let _ = writeln!(
             s,
@@ -227,8 +291,9 @@ pub fn damage_table(title: &str, d: &Damage, files: Option<(usize, &Path)>) -> S
     if let Some((k, dir)) = files {
         let _ = writeln!(
             s,
-            "  files      : {k} in {} (damage.csv, passes.csv, damage.json, damage.vtu, damage maps)",
-            dir.display()
+            "  files      : {k} in {} (damage.csv, passes.csv, {}damage.json, damage.vtu, damage maps)",
+            dir.display(),
+            if d.erosion.is_some() { "erosion.csv, " } else { "" }
         );
     }
     s
@@ -242,17 +307,18 @@ pub fn write_design(dir: &Path, d: &crate::study::Design, title: &str) -> Result
     let l = |v: f64| Measure::Length.from_si(sys, v);
     let unit = Measure::Length.unit(sys);
     let mut csv = format!(
-        "thickness [{unit}],damage_bottom [-],damage_top [-],cracking [%],{} [{}],passes,complete,curve,solves,time [s]\n",
+        "thickness [{unit}],damage_bottom [-],damage_top [-],damage_erosion [-],cracking [%],{} [{}],passes,complete,curve,solves,time [s]\n",
         d.measure,
         if d.measure == "cracking" { "%" } else { "-" }
     );
     for p in &d.points {
         let _ = writeln!(
             csv,
-            "{:.12e},{:e},{:e},{},{:e},{},{},{},{},{}",
+            "{:.12e},{:e},{:e},{},{},{:e},{},{},{},{},{}",
             l(p.thickness),
             p.bottom,
             p.top,
+            p.erosion.map_or(String::new(), |e| format!("{e:e}")),
             p.cracking.map_or(String::new(), |c| format!("{c:e}")),
             p.value,
             p.passes,
@@ -325,19 +391,26 @@ pub fn design_table(
             "(Σ n/N)"
         }
     );
+    let erosion = d.points.iter().any(|p| p.erosion.is_some());
     let _ = writeln!(
         s,
-        "  thickness ({unit})   bottom Σn/N   top Σn/N   {:<10}  meets",
+        "  thickness ({unit})   bottom Σn/N   top Σn/N{}   {:<10}  meets",
+        if erosion { "   erosion" } else { "" },
         d.measure
     );
     for p in &d.points {
         let _ = writeln!(
             s,
-            "  {:>12.4}{}  {:>11.4e}  {:>9.3e}   {:>10.4}  {}{}",
+            "  {:>12.4}{}  {:>11.4e}  {:>9.3e}{}   {:>10.4}  {}{}",
             l(p.thickness),
             if p.curve { " " } else { "*" },
             p.bottom,
             p.top,
+            match (erosion, p.erosion) {
+                (true, Some(e)) => format!("  {e:>9.3e}"),
+                (true, None) => format!("  {:>9}", "-"),
+                _ => String::new(),
+            },
             p.value,
             if p.passes { "yes" } else { "no" },
             if p.complete { "" } else { " (incomplete)" }

@@ -32,6 +32,10 @@
 //! positions, a pass at one position is one coverage of the elements it stresses, so its
 //! pass-to-coverage ratio is not applied again.
 //!
+//! **Erosion** (`model = "pca"`): each pass also keeps the largest deflection it causes at every
+//! panel corner, over the rest state of its climate bin, and EB109's erosion relation sums
+//! them ([`super::erosion`]).
+//!
 //! **Load levels** keep the group's tire prints (the scene's size) and scale their pressure:
 //! the load vector is linear in the level. **Exact interpolation between levels**: the levels
 //! of one group at one lateral position in one climate bin form a family; its lowest and
@@ -63,6 +67,7 @@ use crate::scene::Problem;
 use crate::solve::Carry;
 
 use super::damage_part::{DamagePart, PassStress};
+use super::erosion::{CornerDamage, Corners, Erosion};
 
 /// One case's pass: what it was and what it caused.
 #[derive(Debug, Clone, Serialize)]
@@ -94,6 +99,23 @@ pub struct Pass {
     pub bottom_share: f64,
     /// The same at the top face.
     pub top_share: f64,
+    /// The PCA's erosion of this pass (null: not summed).
+    pub erosion: Option<PassErosion>,
+}
+
+/// What one pass does to the corners ([`super::erosion`]).
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct PassErosion {
+    /// The largest deflection the group caused at a corner, m.
+    pub deflection: f64,
+    /// That corner's x, m.
+    pub x: f64,
+    /// That corner's y, m.
+    pub y: f64,
+    /// The erosion relation's N there (null: unlimited).
+    pub allowed: Option<f64>,
+    /// C2 n/N of this pass at the corner that governs the run's erosion.
+    pub share: f64,
 }
 
 /// A face's largest stress over a pass: value, where, allowed repetitions there.
@@ -160,6 +182,11 @@ pub struct Damage {
     pub governing_top: Governing,
     /// The MEPDG's cracking (null for the other relations).
     pub cracking: Option<Cracking>,
+    /// The PCA's erosion damage at the panels' corners (null: another relation, or a soil
+    /// without a k: `erosion_note` says why).
+    pub erosion: Option<Erosion>,
+    /// Why a PCA run has no erosion (null otherwise).
+    pub erosion_note: Option<String>,
     /// Every case's pass.
     pub passes: Vec<Pass>,
     /// The passes that did not converge (their damage is not in the sums).
@@ -224,9 +251,16 @@ impl Damage {
                     positions: p.positions.iter().map(|&[x, y]| [l(x), l(y)]).collect(),
                     bottom: peak(&p.bottom),
                     top: peak(&p.top),
+                    erosion: p.erosion.map(|e| PassErosion {
+                        deflection: crate::units::Measure::Deflection.from_si(sys, e.deflection),
+                        x: l(e.x),
+                        y: l(e.y),
+                        ..e
+                    }),
                     ..p.clone()
                 })
                 .collect(),
+            erosion: self.erosion.as_ref().map(|e| e.reported(sys)),
             ..self.clone()
         }
     }
@@ -285,6 +319,9 @@ struct Setup<'a> {
     passes: Vec<Vec<Model>>,
     /// The levels of one group at one lateral position in one climate bin, by load.
     families: Vec<Vec<usize>>,
+    /// The PCA's erosion: the corners where it is summed, or why it is not (None: another
+    /// relation).
+    erosion: Option<std::result::Result<Corners, String>>,
 }
 
 impl<'a> Setup<'a> {
@@ -321,11 +358,16 @@ impl<'a> Setup<'a> {
         for f in &mut families {
             f.sort_by(|&a, &b| level(a).total_cmp(&level(b)));
         }
+        let erosion = match plan.model {
+            DamageModel::Pca(_) => Some(Corners::of(&problem.model)),
+            _ => None,
+        };
         Ok(Self {
             plan,
             bins,
             passes,
             families,
+            erosion,
         })
     }
 }
@@ -343,7 +385,9 @@ fn solve_part(
         bins,
         passes,
         families,
+        erosion,
     } = setup;
+    let corners = erosion.as_ref().and_then(|e| e.as_ref().ok());
     let families: Vec<&Vec<usize>> = which.iter().map(|&f| &families[f]).collect();
     let all: Vec<Model> = families
         .iter()
@@ -373,6 +417,39 @@ fn solve_part(
             Ok(r) => Ok(Position::Solved(Box::new(r))),
         }
     };
+    // The erosion counts the deflection the group adds at each corner: the corners'
+    // deflections without it, in each climate bin of these families.
+    let rest: Vec<Option<Vec<f64>>> = match corners {
+        None => Vec::new(),
+        Some(c) => {
+            let mut wanted: Vec<Option<usize>> = vec![None; plan.climate.len()];
+            for f in &families {
+                wanted[bins[f[0]].climate] = Some(f[0]);
+            }
+            wanted
+                .par_iter()
+                .enumerate()
+                .map(|(climate, w)| -> Result<Option<Vec<f64>>> {
+                    let Some(i) = *w else { return Ok(None) };
+                    let mut m = passes[i][0].clone();
+                    let k = plan.groups[bins[i].group].vehicle;
+                    m.vehicles[k].factor = 0.0;
+                    let at = m.vehicles[k].at;
+                    m.place(k, at)?;
+                    match solve(&m, None, &Carry::new())? {
+                        Position::Solved(r) => Ok(Some(c.read(&r.report.field))),
+                        Position::Failed(outcome) => Err(Error::numerical(
+                            "damage",
+                            format!(
+                                "the slab without traffic in climate bin {} did not converge ({outcome}): the PCA's erosion needs the corners' deflections at rest",
+                                climate + 1
+                            ),
+                        )),
+                    }
+                })
+                .collect::<Result<_>>()?
+        }
+    };
     // Each pass: the largest σ₁ of each face over its positions, per element; the middle
     // levels of a family from its ends where their contact sets agree.
     let solved: Vec<Result<Vec<(usize, PassStress)>>> = families
@@ -395,6 +472,14 @@ fn solve_part(
                 (0..n).collect()
             };
             let anchor = |j: usize| j == 0 || (ends && j == n - 1);
+            // The corners' deflections at rest in this family's climate bin (empty: no
+            // erosion), and what a position's deflections there add to them.
+            let at_rest: &[f64] = rest
+                .get(bins[family[0]].climate)
+                .and_then(|r| r.as_deref())
+                .unwrap_or(&[]);
+            let caused =
+                |w: &[f64]| -> Vec<f64> { w.iter().zip(at_rest).map(|(a, b)| a - b).collect() };
             let mut stress: Vec<PassStress> = vec![PassStress::default(); n];
             let carries: Vec<Carry> = (0..n).map(|_| Carry::new()).collect();
             // Each level's answers at its last two solved positions, for the extrapolation.
@@ -419,7 +504,11 @@ fn solve_part(
                                 // is taken from the interpolated components.
                                 let (bottom, top) =
                                     (lo.bottom.mix(&hi.bottom, t), lo.top.mix(&hi.top, t));
-                                stress[j].take(&bottom, &top, &lo.x, &lo.y);
+                                // The deflections are linear in the load on one contact set.
+                                let w: Vec<f64> = (lo.corners.iter().zip(&hi.corners))
+                                    .map(|(a, b)| (1.0 - t) * a + t * b)
+                                    .collect();
+                                stress[j].take(&bottom, &top, &lo.x, &lo.y, &caused(&w));
                                 stress[j].interpolated += 1;
                                 last[j] = [None, None];
                                 continue;
@@ -465,9 +554,10 @@ fn solve_part(
                             if stress.iter().all(|s| s.field.is_none()) {
                                 stress[j].field = Some(r.report.field.clone());
                             }
-                            stress[j].take(&e.bottom.s1, &e.top.s1, &e.x, &e.y);
+                            let w = corners.map_or(Vec::new(), |c| c.read(&r.report.field));
+                            stress[j].take(&e.bottom.s1, &e.top.s1, &e.x, &e.y, &caused(&w));
                             if ends && anchor(j) {
-                                kept[usize::from(j != 0)] = Some(Kept::of(&r));
+                                kept[usize::from(j != 0)] = Some(Kept::of(&r, w));
                             }
                             let now = r.solution.sigma.clone();
                             let previous = last[j][0].take();
@@ -508,7 +598,11 @@ fn solve_part(
 /// The Miner sums of the parts' passes, every bin of the run in exactly one part.
 fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<Damage> {
     let Setup {
-        plan, bins, passes, ..
+        plan,
+        bins,
+        passes,
+        erosion: erosion_setup,
+        ..
     } = setup;
     let mut by_bin: Vec<Option<PassStress>> = vec![None; bins.len()];
     let (mut assemble_s, mut seconds) = (0.0, 0.0);
@@ -586,6 +680,45 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
         }
     };
     let (gb, gt) = (governing(&bottom), governing(&top));
+    // The PCA's erosion at the corners: C2 Σ n/N of the deflections the passes caused.
+    let c2 = match plan.model {
+        DamageModel::Pca(m) => m.erosion_c2,
+        _ => 1.0,
+    };
+    let erosion = match erosion_setup {
+        Some(Ok(c)) => {
+            let mut corners: Vec<CornerDamage> = c
+                .points
+                .iter()
+                .map(|p| CornerDamage {
+                    corner: p.clone(),
+                    damage: 0.0,
+                    deflection: 0.0,
+                })
+                .collect();
+            for (s, bin) in stresses.iter().zip(bins.iter()) {
+                if s.outcome != RunOutcome::CONVERGED {
+                    continue;
+                }
+                for (j, (cd, &w)) in corners.iter_mut().zip(&s.corners).enumerate() {
+                    cd.damage += c2 * bin.repetitions / c.allowed(j, w);
+                    cd.deflection = cd.deflection.max(w);
+                }
+            }
+            let governing =
+                (0..corners.len()).max_by(|&a, &b| corners[a].damage.total_cmp(&corners[b].damage));
+            Some((
+                Erosion {
+                    k: c.k,
+                    c2,
+                    corners,
+                    governing,
+                },
+                c,
+            ))
+        }
+        _ => None,
+    };
     let passes_out: Vec<Pass> = stresses
         .iter()
         .zip(bins.iter())
@@ -615,6 +748,24 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
                     0.0
                 }
             };
+            let pass_erosion = match (&erosion, s.outcome == RunOutcome::CONVERGED) {
+                (Some((e, c)), true) => s
+                    .corners
+                    .iter()
+                    .enumerate()
+                    .max_by(|a, b| a.1.total_cmp(b.1))
+                    .map(|(j, &w)| PassErosion {
+                        deflection: w,
+                        x: c.points[j].x,
+                        y: c.points[j].y,
+                        allowed: Some(c.allowed(j, w)).filter(|a| a.is_finite()),
+                        share: e
+                            .governing
+                            .and_then(|g| Some((g, *s.corners.get(g)?)))
+                            .map_or(0.0, |(g, wg)| e.c2 * bin.repetitions / c.allowed(g, wg)),
+                    }),
+                _ => None,
+            };
             Pass {
                 group: group.load.clone(),
                 load: group.levels[bin.level].load,
@@ -635,6 +786,7 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
                 top: peak(&s.top),
                 bottom_share: share(&s.bottom, gb.element),
                 top_share: share(&s.top, gt.element),
+                erosion: pass_erosion,
             }
         })
         .collect();
@@ -670,6 +822,11 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
         governing_bottom: gb,
         governing_top: gt,
         cracking,
+        erosion_note: erosion_setup
+            .as_ref()
+            .and_then(|e| e.as_ref().err())
+            .cloned(),
+        erosion: erosion.map(|(e, _)| e),
         complete: missing.is_empty(),
         missing,
         solves: stresses.iter().map(|s| s.solves).sum(),
@@ -730,10 +887,12 @@ struct Kept {
     y: Vec<f64>,
     signature: Vec<bool>,
     penalty: Option<u64>,
+    /// The deflections at the erosion's corners, m (empty: no erosion).
+    corners: Vec<f64>,
 }
 
 impl Kept {
-    fn of(r: &analysis::MethodRun) -> Self {
+    fn of(r: &analysis::MethodRun, corners: Vec<f64>) -> Self {
         let e = &r.report.elements;
         // In contact: a pressure above round-off of the largest (the QP's lifted points hold
         // zero up to its tolerance, the penalty's a small tension).
@@ -745,6 +904,7 @@ impl Kept {
             y: e.y.clone(),
             signature: r.solution.sigma.iter().map(|&v| v > 1e-9 * peak).collect(),
             penalty: r.solution.method.penalty_epsilon().map(f64::to_bits),
+            corners,
         }
     }
 }

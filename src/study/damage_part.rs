@@ -31,14 +31,17 @@ struct PartHeader {
     /// Elements per array of each pass (0: the pass has none: it did not converge at its first
     /// position).
     elements: Vec<usize>,
+    /// Erosion corners of each pass (0: none).
+    corners: Vec<usize>,
     assemble_s: f64,
     seconds: f64,
 }
 
 impl DamagePart {
     /// The part as bytes: the length of a JSON header (u64, little endian), the header (the
-    /// cases, their outcomes and counts), then each pass's σ₁ at the bottom and top faces and
-    /// the element centres x and y as little-endian f64 — exact, not rounded to text.
+    /// cases, their outcomes and counts), then each pass's σ₁ at the bottom and top faces, the
+    /// element centres x and y and the deflections it caused at the erosion's corners as
+    /// little-endian f64 — exact, not rounded to text.
     pub fn to_bytes(&self) -> Vec<u8> {
         let header = PartHeader {
             bins: self.bins.clone(),
@@ -46,6 +49,7 @@ impl DamagePart {
             solves: self.stresses.iter().map(|s| s.solves).collect(),
             interpolated: self.stresses.iter().map(|s| s.interpolated).collect(),
             elements: self.stresses.iter().map(|s| s.bottom.len()).collect(),
+            corners: self.stresses.iter().map(|s| s.corners.len()).collect(),
             assemble_s: self.assemble_s,
             seconds: self.seconds,
         };
@@ -55,7 +59,7 @@ impl DamagePart {
         out.extend_from_slice(&(json.len() as u64).to_le_bytes());
         out.extend_from_slice(&json);
         for s in &self.stresses {
-            for v in [&s.bottom, &s.top, &s.x, &s.y] {
+            for v in [&s.bottom, &s.top, &s.x, &s.y, &s.corners] {
                 for x in v {
                     out.extend_from_slice(&x.to_le_bytes());
                 }
@@ -85,7 +89,8 @@ impl DamagePart {
             header.solves.len(),
             header.interpolated.len(),
             header.elements.len(),
-        ] != [n; 4]
+            header.corners.len(),
+        ] != [n; 5]
         {
             return Err(bad("the header's lists differ in length"));
         }
@@ -93,7 +98,8 @@ impl DamagePart {
             .chunks_exact(8)
             .map(|c| f64::from_le_bytes(<[u8; 8]>::try_from(c).unwrap_or_default()));
         if !(bytes.len() - end).is_multiple_of(8)
-            || (bytes.len() - end) / 8 != 4 * header.elements.iter().sum::<usize>()
+            || (bytes.len() - end) / 8
+                != 4 * header.elements.iter().sum::<usize>() + header.corners.iter().sum::<usize>()
         {
             return Err(bad("the arrays do not match the header"));
         }
@@ -106,6 +112,7 @@ impl DamagePart {
                     top: take(k),
                     x: take(k),
                     y: take(k),
+                    corners: take(header.corners[i]),
                     outcome: header.outcomes[i],
                     solves: header.solves[i],
                     interpolated: header.interpolated[i],
@@ -129,6 +136,8 @@ pub(super) struct PassStress {
     pub(super) top: Vec<f64>,
     pub(super) x: Vec<f64>,
     pub(super) y: Vec<f64>,
+    /// The largest deflection the pass caused at each erosion corner, m (empty: no erosion).
+    pub(super) corners: Vec<f64>,
     pub(super) outcome: RunOutcome,
     pub(super) solves: usize,
     pub(super) interpolated: usize,
@@ -142,6 +151,7 @@ impl Default for PassStress {
             top: Vec::new(),
             x: Vec::new(),
             y: Vec::new(),
+            corners: Vec::new(),
             outcome: RunOutcome::CONVERGED,
             solves: 0,
             interpolated: 0,
@@ -151,14 +161,26 @@ impl Default for PassStress {
 }
 
 impl PassStress {
-    /// Take one position's element stresses into the running maxima.
-    pub(super) fn take(&mut self, bottom: &[f64], top: &[f64], x: &[f64], y: &[f64]) {
+    /// Take one position's element stresses and the deflections it caused at the erosion's
+    /// corners into the running maxima.
+    pub(super) fn take(
+        &mut self,
+        bottom: &[f64],
+        top: &[f64],
+        x: &[f64],
+        y: &[f64],
+        corners: &[f64],
+    ) {
         if self.bottom.is_empty() {
             self.bottom = bottom.to_vec();
             self.top = top.to_vec();
             self.x = x.to_vec();
             self.y = y.to_vec();
+            self.corners = corners.to_vec();
             return;
+        }
+        for (m, &v) in self.corners.iter_mut().zip(corners) {
+            *m = m.max(v);
         }
         for (m, &v) in self.bottom.iter_mut().zip(bottom) {
             *m = m.max(v);

@@ -5,7 +5,8 @@
 //!
 //! **The target** is the relation's: for `mepdg` the total cracking (% of slabs) — at the
 //! scene's `[damage] reliability` when it gives one, else the mean —, 15 % unless given; for
-//! `pca` and `faa` the larger of the bottom-up and top-down damage, 1 unless given.
+//! `faa` the larger of the bottom-up and top-down damage, for `pca` the largest of those and
+//! the erosion damage at the corners (EB109 designs against both), 1 unless given.
 //!
 //! **What follows the thickness.** The plate's thickness, and with it its rigidity, its
 //! stresses and the curvature of a temperature difference (α ΔT / H: the climate bins keep
@@ -105,6 +106,8 @@ pub struct DesignPoint {
     pub bottom: f64,
     /// Governing top-down damage.
     pub top: f64,
+    /// The PCA's governing erosion damage (null: another relation, or none summed).
+    pub erosion: Option<f64>,
     /// Total cracking, % (mepdg; at the reliability when given).
     pub cracking: Option<f64>,
     /// The value compared with the target.
@@ -207,11 +210,15 @@ pub fn design(file: &SceneFile, options: &DesignOptions, monitor: &Monitor<'_>) 
             let problem = f.validate()?;
             let t = std::time::Instant::now();
             let d = super::damage(&problem, &inner)?;
+            let erosion = d.erosion.as_ref().map(|e| e.damage());
             let (measure, value) = match d.cracking {
                 Some(c) => ("cracking", c.at_reliability.unwrap_or(c.total)),
                 None => (
                     "damage",
-                    d.governing_bottom.damage.max(d.governing_top.damage),
+                    d.governing_bottom
+                        .damage
+                        .max(d.governing_top.damage)
+                        .max(erosion.unwrap_or(0.0)),
                 ),
             };
             let target = options
@@ -223,6 +230,7 @@ pub fn design(file: &SceneFile, options: &DesignOptions, monitor: &Monitor<'_>) 
                     thickness: h,
                     bottom: d.governing_bottom.damage,
                     top: d.governing_top.damage,
+                    erosion,
                     cracking: d.cracking.map(|c| c.at_reliability.unwrap_or(c.total)),
                     value,
                     passes: value <= target,

@@ -21,6 +21,7 @@ mod damage;
 mod damage_part;
 mod design;
 mod eps_sweep;
+mod erosion;
 mod options;
 mod stability;
 mod tradeoff;
@@ -30,11 +31,13 @@ pub use critical::{
     Footprint, JointLine, Position,
 };
 pub use damage::{
-    damage, damage_families, damage_merge, damage_part, Cracking, Damage, Governing, Pass, Peak,
+    damage, damage_families, damage_merge, damage_part, Cracking, Damage, Governing, Pass,
+    PassErosion, Peak,
 };
 pub use damage_part::DamagePart;
 pub use design::{design, Design, DesignOptions, DesignPoint};
 pub use eps_sweep::{eps_sweep, Sweep, SweepRow};
+pub use erosion::{Corner, CornerDamage, Erosion};
 pub use options::{ConstraintVariants, EpsSweepOptions, TradeoffOptions};
 pub use stability::{
     stability_plan, stability_run, stability_sweep, StabilityCase, StabilityParam, StabilityRow,

@@ -348,12 +348,14 @@ def design(
     first thickness that meets the target and the one before it bracket the answer, bisected to
     ``tolerance`` (default 5 mm; 0.25 in for a US scene). The target (``target``) is the MEPDG's
     total cracking in % (at the scene's ``[damage] reliability`` when given; default 15) or, for
-    ``pca`` and ``faa``, the larger of the bottom-up and top-down damage (default 1). The
+    ``faa``, the larger of the bottom-up and top-down damage, for ``pca`` the largest of those
+    and the erosion damage at the corners (default 1). The
     self-weight (a ``uniform`` load whose case or name is ``self-weight``) follows the
     thickness.
 
     Returns :class:`Records`, one per damage run by thickness (design.csv's columns:
-    ``thickness``, ``bottom``, ``top``, ``cracking``, ``value``, ``passes``, ``complete``,
+    ``thickness``, ``bottom``, ``top``, ``erosion`` (``pca``), ``cracking``, ``value``,
+    ``passes``, ``complete``,
     ``solves``, ``seconds``, ``curve`` — False for a bisection step); ``meta`` holds the rest of
     design.json: ``thickness`` (the least thickness found; None if none in the range meets the
     target), ``bracket``, ``target``, ``measure``, ``model``, ``monotone``, ``complete``,

@@ -27,6 +27,9 @@ def _pass_row(p: Dict[str, Any]) -> Dict[str, Any]:
         row[face + "_allowed"] = peak["allowed"]
     row["bottom_share"] = p["bottom_share"]
     row["top_share"] = p["top_share"]
+    erosion = p.get("erosion") or {}
+    for key in ("deflection", "x", "y", "allowed", "share"):
+        row["erosion_" + key] = erosion.get(key)
     row["positions"] = [list(xy) for xy in p["positions"]]
     return row
 
@@ -46,14 +49,21 @@ class Damage:
       ``interpolated`` (positions filled exactly from the end levels), ``bottom``/``top``
       (the pass's largest σ₁ of that face), ``bottom_x``, ``bottom_y``,
       ``bottom_allowed`` (N there; None: unlimited), the same for ``top``, ``bottom_share``,
-      ``top_share`` (its Σ n/N at the governing element) — and ``positions`` (the group's
+      ``top_share`` (its Σ n/N at the governing element), ``erosion_deflection``,
+      ``erosion_x``, ``erosion_y``, ``erosion_allowed``, ``erosion_share`` (the PCA's erosion:
+      the largest corner deflection the pass caused, where, N there and its C2·n/N at the
+      governing corner; None for the other relations) — and ``positions`` (the group's
       reference point at each position of the pass). A pass that did not converge has None
       for its stresses and places, as damage.json's null; ``passes.meta`` is ``summary``;
     - every other key of damage.json is an attribute: ``model`` (``"pca"``, ``"mepdg"``,
       ``"faa"``), ``rupture``, ``life_factor``, ``elements`` ([nx, ny]),
       ``governing_bottom`` / ``governing_top`` (dicts: ``damage``, ``x``, ``y``,
       ``element`` = ie + je·nx), ``cracking`` (the MEPDG's, a dict of ``bottom``, ``top``,
-      ``total``, ``at_reliability`` in %; None for the other relations), ``complete``,
+      ``total``, ``at_reliability`` in %; None for the other relations), ``erosion`` (the
+      PCA's: ``k``, ``c2``, ``corners`` — each panel corner's ``panel``, ``x``, ``y``,
+      ``thickness``, ``deflection`` and ``damage`` — and ``governing``, the index of the
+      largest; None for the other relations), ``erosion_note`` (why a PCA run has none),
+      ``complete``,
       ``missing`` (the passes that did not converge, by label), ``solves``, ``interpolated``,
       ``assemble_s``,
       ``total_s``, ``units``. ``summary`` is that whole dict.

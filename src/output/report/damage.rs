@@ -71,7 +71,31 @@ pub(crate) fn read(l: &mut Listing) -> Result<Option<Part>> {
                 ),
             ]);
         }
+        // The PCA's erosion at the corners: the governing one, the note where none is summed.
+        if let Some(e) = v.get("erosion").filter(|e| !e.is_null()) {
+            let g = e
+                .get("governing")
+                .and_then(Value::as_u64)
+                .and_then(|i| e.get("corners")?.get(usize::try_from(i).ok()?));
+            let f = |k: &str| g.and_then(|g| g.get(k)).and_then(Value::as_f64);
+            rows.push(vec![
+                "erosion (PCA, C2 Σ n/N)".to_string(),
+                f("damage").map_or("—".into(), num),
+                format!(
+                    "corner ({}, {})\u{202F}{unit} of panel {}",
+                    f("x").map_or("—".into(), num),
+                    f("y").map_or("—".into(), num),
+                    esc(g
+                        .and_then(|g| g.get("panel"))
+                        .and_then(Value::as_str)
+                        .unwrap_or("—"))
+                ),
+            ]);
+        }
         html.push_str(&table(&["damage", "Σ n/N", "at the element"], &rows));
+        if let Some(note) = v.get("erosion_note").and_then(Value::as_str) {
+            let _ = writeln!(html, "<p>Erosion (PCA) not summed: {}.</p>", esc(note));
+        }
         if let Some(c) = v.get("cracking").filter(|c| !c.is_null()) {
             let _ = writeln!(
                 html,

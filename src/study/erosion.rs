@@ -1,0 +1,214 @@
+//! The PCA's erosion damage of a damage run ([`super::damage`]) with `model = "pca"`: at the
+//! corners of every panel, the corner deflection each pass causes and EB109's erosion relation
+//! ([`crate::damage::pca::Pca::erosion_repetitions`]).
+//!
+//! **Where.** Every corner of every panel of the layout's grid that lies on the plate, once
+//! per panel that meets there: a corner on a joint is read on each side of it (just inside
+//! each panel, by the element that holds the point, so each side's own deflection), because
+//! the loaded and the unloaded side of a joint deflect differently and the leave slab's
+//! corner pumps too. The plate's own corners are panel corners.
+//!
+//! **Which deflection.** The deflection the group causes at the corner: the pass's largest
+//! deflection there less the deflection of the same slab, in the same climate bin, without
+//! the group (its self-weight and curl alone) — the movement of the corner under the axle,
+//! which is what EB109 computes on a flat slab with the load alone. A corner the group lifts
+//! (a deflection below the rest state's) takes no erosion. One repetition per pass, as EB109
+//! counts an axle group.
+//!
+//! **Which k.** The Winkler modulus of the scene's soil (its zones excepted: the relation is
+//! calibrated on one k). The relation has no meaning on a continuum soil, whose surface has no
+//! k: there the run reports why erosion is absent rather than invent one.
+
+use serde::Serialize;
+
+use crate::foundation::{FoundationKind, Soil};
+use crate::model::Model;
+use crate::post::FullField;
+
+/// A corner of a panel where the erosion is summed.
+#[derive(Debug, Clone, Serialize)]
+pub struct Corner {
+    /// The corner's x, m.
+    pub x: f64,
+    /// The corner's y, m.
+    pub y: f64,
+    /// The panel it belongs to, "(column, row)" from 1 at x = −a/2, y = −b/2.
+    pub panel: String,
+    /// The panel's thickness, m.
+    pub thickness: f64,
+}
+
+/// Where and how a run sums its erosion: the corners, where each is read, and the soil's k.
+#[derive(Debug, Clone)]
+pub(super) struct Corners {
+    pub(super) points: Vec<Corner>,
+    /// Each corner's reading point, just inside its panel, m, and whether the panel lies
+    /// towards +x and +y of the corner.
+    probes: Vec<([f64; 2], [bool; 2])>,
+    /// The Winkler modulus, N/m³.
+    pub(super) k: f64,
+}
+
+impl Corners {
+    /// The corners of `model`'s panels, or why the erosion cannot be summed on its soil.
+    pub(super) fn of(model: &Model) -> Result<Corners, String> {
+        let Some(phys) = model.physical else {
+            return Err("a damage run needs a physical scene".into());
+        };
+        let g = &model.groups;
+        let k = match g.soil {
+            Soil::Winkler(_) => {
+                // Γ_w = D / (k μ L⁴).
+                let l = phys.half_length;
+                phys.rigidity / (g.gamma * g.mu * l.powi(4))
+            }
+            _ => {
+                return Err(format!(
+                    "the PCA's erosion relation is calibrated on a Winkler k; the {} soil has none, so no erosion is summed",
+                    g.foundation().name()
+                ))
+            }
+        };
+        debug_assert_eq!(g.foundation(), FoundationKind::Winkler);
+        let l = phys.half_length;
+        let layout = &model.layout;
+        let thickness = model.thickness_ratio() * l;
+        let edges = |lines: Vec<f64>, half: f64| -> Vec<f64> {
+            std::iter::once(-half)
+                .chain(lines)
+                .chain(std::iter::once(half))
+                .collect()
+        };
+        let xs = edges(layout.lines(crate::layout::Axis::X), 1.0);
+        let ys = edges(layout.lines(crate::layout::Axis::Y), g.mu);
+        // Inside the panel by a millionth of its smaller side: the element holding the probe
+        // is the panel's corner element, whose own node copy at the corner is read.
+        let mut points = Vec::new();
+        let mut probes = Vec::new();
+        for (r, yy) in ys.windows(2).enumerate() {
+            for (c, xx) in xs.windows(2).enumerate() {
+                let nudge = 1e-6 * (xx[1] - xx[0]).min(yy[1] - yy[0]);
+                for (x, y, sx, sy) in [
+                    (xx[0], yy[0], 1.0, 1.0),
+                    (xx[1], yy[0], -1.0, 1.0),
+                    (xx[1], yy[1], -1.0, -1.0),
+                    (xx[0], yy[1], 1.0, -1.0),
+                ] {
+                    let (px, py) = (x + sx * nudge, y + sy * nudge);
+                    if !layout.is_plate(px, py) {
+                        continue;
+                    }
+                    points.push(Corner {
+                        x: x * l,
+                        y: y * l,
+                        panel: format!("({}, {})", c + 1, r + 1),
+                        thickness: thickness * layout.section(c, r).thickness,
+                    });
+                    probes.push(([px * l, py * l], [sx > 0.0, sy > 0.0]));
+                }
+            }
+        }
+        Ok(Corners { points, probes, k })
+    }
+
+    /// The repetitions EB109's erosion relation allows of a deflection `w` (m) caused at
+    /// corner `j`.
+    pub(super) fn allowed(&self, j: usize, w: f64) -> f64 {
+        let h = self.points.get(j).map_or(f64::NAN, |p| p.thickness);
+        crate::damage::pca::Pca::default().erosion_repetitions(w, self.k, h)
+    }
+
+    /// The deflection at each corner in a solve's field, m: the node copy of the panel's
+    /// corner element at the corner, exactly (NaN where the field cannot be read).
+    pub(super) fn read(&self, field: &FullField) -> Vec<f64> {
+        let n = field.nodes_x();
+        let (Some(&half_x), Some(&half_y)) = (field.x.get(field.nx), field.y.get(field.ny * n))
+        else {
+            return vec![f64::NAN; self.probes.len()];
+        };
+        let cell = |v: f64, half: f64, count: usize| {
+            (((v / half + 1.0) * 0.5 * count as f64).floor().max(0.0) as usize).min(count - 1)
+        };
+        self.probes
+            .iter()
+            .map(|&([x, y], [right, up])| {
+                let (i, j) = (cell(x, half_x, field.nx), cell(y, half_y, field.ny));
+                // The element's corners in order (−,−), (+,−), (+,+), (−,+): the corner is its
+                // low side where the panel lies towards +.
+                let k = match (right, up) {
+                    (true, true) => 0,
+                    (false, true) => 1,
+                    (false, false) => 2,
+                    (true, false) => 3,
+                };
+                field
+                    .w
+                    .get(field.element_nodes(i, j)[k])
+                    .copied()
+                    .unwrap_or(f64::NAN)
+            })
+            .collect()
+    }
+}
+
+/// The erosion damage at one corner.
+#[derive(Debug, Clone, Serialize)]
+pub struct CornerDamage {
+    /// The corner.
+    #[serde(flatten)]
+    pub corner: Corner,
+    /// Σ C2 n/N over the passes.
+    pub damage: f64,
+    /// The largest deflection a pass caused there, m.
+    pub deflection: f64,
+}
+
+/// The PCA's erosion damage of a run.
+#[derive(Debug, Clone, Serialize)]
+pub struct Erosion {
+    /// The Winkler modulus the relation read, N/m³.
+    pub k: f64,
+    /// EB109's C2 applied.
+    pub c2: f64,
+    /// Every corner's damage.
+    pub corners: Vec<CornerDamage>,
+    /// The corner of the largest damage (index into `corners`; None: no corner).
+    pub governing: Option<usize>,
+}
+
+impl Erosion {
+    /// The largest erosion damage, 0 without corners.
+    pub fn damage(&self) -> f64 {
+        self.governing
+            .and_then(|i| self.corners.get(i))
+            .map_or(0.0, |c| c.damage)
+    }
+
+    /// The same in the scene's unit system (`reported`'s lengths, k and deflections).
+    pub fn reported(&self, sys: Option<crate::units::UnitSystem>) -> Erosion {
+        use crate::units::{Measure, Quantity};
+        let l = |v: f64| Measure::Length.from_si(sys, v);
+        let k = match sys {
+            Some(s) => Quantity::SubgradeModulus.from_si(s, self.k),
+            None => self.k,
+        };
+        Erosion {
+            k,
+            corners: self
+                .corners
+                .iter()
+                .map(|c| CornerDamage {
+                    corner: Corner {
+                        x: l(c.corner.x),
+                        y: l(c.corner.y),
+                        thickness: l(c.corner.thickness),
+                        panel: c.corner.panel.clone(),
+                    },
+                    deflection: Measure::Deflection.from_si(sys, c.deflection),
+                    damage: c.damage,
+                })
+                .collect(),
+            ..self.clone()
+        }
+    }
+}
