@@ -212,6 +212,35 @@ pub fn disk_on_springs(
     r: f64,
     kirchhoff: bool,
 ) -> f64 {
+    let d = plate.e * plate.h.powi(3) / (12.0 * (1.0 - plate.nu * plate.nu));
+    let ell = (d / k).powf(0.25);
+    disk_on_soil(plate, &|_| k, ell, radius, force, r, kirchhoff)
+}
+
+/// The infinite plate under a uniform disk on an elastic half-space of Young's modulus `es` and
+/// Poisson's ratio `nus` (Boussinesq's surface compliance 2(1 − ν_s²)/(E_s ξ)), at distance `r`:
+/// [`disk_on_soil`] with the soil's stiffness E_s ξ / (2(1 − ν_s²)) and its radius of relative
+/// stiffness ℓ = (2D(1 − ν_s²)/E_s)^⅓. At small ξ the denominator falls as ξ, and J₁(ξa)/ξ →
+/// a/2: the integrand stays finite at 0.
+pub fn disk_on_halfspace(plate: &Plate, es: f64, nus: f64, radius: f64, force: f64, r: f64) -> f64 {
+    let d = plate.e * plate.h.powi(3) / (12.0 * (1.0 - plate.nu * plate.nu));
+    let ell = (2.0 * d * (1.0 - nus * nus) / es).cbrt();
+    let stiffness = |xi: f64| es * xi / (2.0 * (1.0 - nus * nus));
+    disk_on_soil(plate, &stiffness, ell, radius, force, r, false)
+}
+
+/// [`disk_on_springs`] on any soil of surface stiffness K(ξ) (pressure over settlement at
+/// wavenumber ξ), with its radius of relative stiffness `ell` setting the range:
+/// w(r) = q a ∫₀^∞ J₁(ξa) J₀(ξr) (1 + Dξ²/S) / (Dξ⁴ + K(ξ)(1 + Dξ²/S)) dξ.
+fn disk_on_soil(
+    plate: &Plate,
+    stiffness: &dyn Fn(f64) -> f64,
+    ell: f64,
+    radius: f64,
+    force: f64,
+    r: f64,
+    kirchhoff: bool,
+) -> f64 {
     let (e, nu, h) = (plate.e, plate.nu, plate.h);
     let d = e * h.powi(3) / (12.0 * (1.0 - nu * nu));
     let shear = if kirchhoff {
@@ -219,11 +248,17 @@ pub fn disk_on_springs(
     } else {
         5.0 / 6.0 * e / (2.0 * (1.0 + nu)) * h
     };
-    let ell = (d / k).powf(0.25);
     let q = force / (std::f64::consts::PI * radius * radius);
     let f = |xi: f64| {
         let s = 1.0 + d * xi * xi / shear;
-        bessel(1, xi * radius) * bessel(0, xi * r) * s / (d * xi.powi(4) + k * s)
+        let den = d * xi.powi(4) + stiffness(xi) * s;
+        if den == 0.0 {
+            // ξ = 0 on a soil whose stiffness vanishes there: J₁(ξa)/den → (a/2)/(K'(0)),
+            // taken from the next point's limit (the node's weight is a 1/72 000 share).
+            let tiny = 1e-9 / ell;
+            return bessel(1, tiny * radius) * s / (d * tiny.powi(4) + stiffness(tiny) * s);
+        }
+        bessel(1, xi * radius) * bessel(0, xi * r) * s / den
     };
     let steps = 24_000; // even
     let top = 60.0 / ell;
