@@ -17,6 +17,7 @@ use crate::error::ErrorKind;
 use crate::solve::StatusKind;
 
 mod critical;
+mod critical_grid;
 mod damage;
 mod damage_part;
 mod design;
