@@ -3,23 +3,26 @@
 //! elastic solid (the closed forms, as Hankel integrals); `area.rs` the AREA method that
 //! inverts them; `basins.rs` the drops as a CSV file reads them; `fit.rs` the least-squares
 //! fit of a drop on liftoff's own finite model (a template scene), with confidence intervals;
-//! `survey.rs` every drop of a file, in parallel. `infinite`, `area` and `basins` import only
-//! `error` and `units`; `fit` imports them and the entry point (`entry::run`) it solves
-//! through; `survey` imports `fit`.
+//! `transfer.rs` a joint drop's load transfer on that model; `survey.rs` every drop of a file,
+//! in parallel. `infinite`, `area` and `basins` import only `error` and `units`; `fit` imports
+//! them and the entry point (`entry::run`) it solves through; `transfer` imports `fit`;
+//! `survey` imports both.
 
 pub mod area;
 pub mod basins;
 pub mod fit;
 pub mod infinite;
 pub mod survey;
+pub mod transfer;
 
 pub use area::{area_method, AreaResult, Basin, AREA_OFFSETS};
 pub use basins::{read_basins, Drop, Location};
 pub use fit::{
-    area_reading, check_template, fit_drop, load_transfer, model_basin, nearest_joint,
-    student_t975, Estimate, Fit, FitOptions, LoadTransfer, Termination, Unknown,
+    area_reading, check_template, fit_drop, model_basin, nearest_joint, student_t975, Estimate,
+    Fit, FitOptions, Termination, Unknown,
 };
 pub use infinite::{dimensionless_deflection, Subgrade};
 pub use survey::{
     intercepts, survey, BackcalcMethod, DropResult, Intercept, Survey, SurveyOptions,
 };
+pub use transfer::{load_transfer, LoadTransfer};

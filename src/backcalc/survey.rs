@@ -20,7 +20,8 @@ use rayon::prelude::*;
 
 use super::area::AreaResult;
 use super::basins::{Drop, Location};
-use super::fit::{area_reading, fit_drop, load_transfer, Fit, FitOptions, LoadTransfer, Unknown};
+use super::fit::{area_reading, fit_drop, Fit, FitOptions, Unknown};
+use super::transfer::{load_transfer, LoadTransfer};
 use crate::error::{Error, Result};
 use crate::monitor::{Cases, Monitor};
 use crate::scene::SceneFile;
