@@ -84,11 +84,11 @@ fn erosion_n(w_m: f64, k_si: f64, h_m: f64) -> f64 {
     }
     let p = k * w;
     let power = 268.7 * p * p / (h * k.powf(0.73));
-    let c1 = 1.0 - (k / 2000.0 * 4.0 / h).powi(2);
-    if c1 * power <= 9.0 {
+    // C1 = 1: an untreated subbase.
+    if power <= 9.0 {
         return f64::INFINITY;
     }
-    10f64.powf(14.524 - 6.777 * (c1 * power - 9.0).powf(0.103))
+    10f64.powf(14.524 - 6.777 * (power - 9.0).powf(0.103))
 }
 
 /// The deflection at (x, y) of the scene solved, read 1e-12 m inside the panel on the side of

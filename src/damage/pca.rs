@@ -30,15 +30,16 @@ use crate::units::{INCH, POUND_FORCE};
 /// P = 268.7 p² / (h k^0.73) with p = k w, the pressure on the foundation under the corner
 /// (w the corner deflection the axle group causes, in; k in pci; h in in; p in psi):
 ///
-/// * log₁₀ N = 14.524 − 6.777 (C1 P − 9.0)^0.103, C1 = 1 − (k/2000 · 4/h)²;
+/// * log₁₀ N = 14.524 − 6.777 (C1 P − 9.0)^0.103, C1 = 1 for an untreated subbase, 0.9 for a
+///   stabilised one (key `erosion_c1`);
 /// * C1 P ≤ 9: N unlimited;
 /// * the erosion damage is Σ C2 n/N.
 ///
 /// The closed form is PCAPAV's (Packard & Tayabji, TRR 1043, 1985), as Huang restates it
 /// (*Pavement Analysis and Design*, 2nd ed., 2004, the PCA method), whose worked example
 /// (k = 100 pci, h = 8 in: w = 0.0353 in gives log N = 6.444 for a single axle, 0.0458 in
-/// gives 5.541 for a tandem) the tests check to its printed digits; it was not read in EB109
-/// itself. EB109's C2 (0.06 without a concrete shoulder, 0.94 with a tied one) stands for the
+/// gives 5.541 for a tandem, with C1 = 1) the tests check to its printed digits; it was not
+/// read in EB109 itself. EB109's C2 (0.06 without a concrete shoulder, 0.94 with a tied one) stands for the
 /// share of trucks whose wheels run at the corner with the corner deflection of a wheel at
 /// the corner. liftoff computes the corner deflection at every lateral position of the wander,
 /// each with its share of the traffic, and models the shoulder's joint: both are already in
@@ -47,13 +48,19 @@ use crate::units::{INCH, POUND_FORCE};
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct Pca {
+    /// The erosion relation's C1 (key `erosion_c1`), in (0, 1]: 1 (the default) for an
+    /// untreated subbase, 0.9 for a stabilised one.
+    pub erosion_c1: f64,
     /// EB109's C2 of the erosion damage (key `erosion_c2`), in (0, 1], default 1 (see above).
     pub erosion_c2: f64,
 }
 
 impl Default for Pca {
     fn default() -> Self {
-        Pca { erosion_c2: 1.0 }
+        Pca {
+            erosion_c1: 1.0,
+            erosion_c2: 1.0,
+        }
     }
 }
 
@@ -99,13 +106,9 @@ impl Pca {
         268.7 * p * p / (h * k.powf(0.73))
     }
 
-    /// log₁₀ N of the erosion relation at power `power` on a foundation of `k` (N/m³) under a
-    /// slab of `thickness` (m): +∞ where C1 P ≤ 9 (no erosion).
-    pub fn erosion_log_repetitions(power: f64, k: f64, thickness: f64) -> f64 {
-        let pci = POUND_FORCE / (INCH * INCH * INCH);
-        let (k, h) = (k / pci, thickness / INCH);
-        let c1 = 1.0 - (k / 2000.0 * 4.0 / h).powi(2);
-        let x = c1 * power - 9.0;
+    /// log₁₀ N of the erosion relation at power `power`: +∞ where C1 P ≤ 9 (no erosion).
+    pub fn erosion_log_repetitions(&self, power: f64) -> f64 {
+        let x = self.erosion_c1 * power - 9.0;
         if x > 0.0 {
             14.524 - 6.777 * x.powf(0.103)
         } else {
@@ -122,11 +125,20 @@ impl Pca {
             return f64::INFINITY;
         }
         let p = Self::erosion_power(deflection, k, thickness);
-        10f64.powf(Self::erosion_log_repetitions(p, k, thickness))
+        10f64.powf(self.erosion_log_repetitions(p))
     }
 
-    /// `erosion_c2` in (0, 1]; the error names `damage.erosion_c2`.
+    /// `erosion_c1` and `erosion_c2` in (0, 1]; the error names the key.
     pub fn validate(&self) -> Result<()> {
+        let c1 = finite("erosion_c1", self.erosion_c1)?;
+        if !(c1 > 0.0 && c1 <= 1.0) {
+            return Err(Error::invalid(
+                "damage.erosion_c1",
+                format!(
+                    "must lie in (0, 1] (1 for an untreated subbase, the default; 0.9 for a stabilised one), got {c1}"
+                ),
+            ));
+        }
         let c2 = finite("erosion_c2", self.erosion_c2)?;
         if c2 > 0.0 && c2 <= 1.0 {
             Ok(())
@@ -233,34 +245,32 @@ mod tests {
     // Erosion --------------------------------------------------------------------------------
 
     /// Huang's worked example of the PCA erosion analysis (*Pavement Analysis and Design*,
-    /// 2nd ed., 2004, the PCA method): k = 100 pci, h = 8 in; a single axle's corner deflection
-    /// 0.0353 in gives log N = 6.444, a tandem's 0.0458 in gives 5.541.
-    ///
-    /// Tolerance: the printed deflection stands for one in [w − 0.00005, w + 0.00005] in, and
-    /// N falls with w, so a table made with these equations prints a log N within those two
-    /// deflections' values, widened by the printed log N's own half-unit 0.0005. The interval is
-    /// about ±0.004 wide here: C1 (0.99938 at this k and h, 0.0014 in log N) is below it.
+    /// 2nd ed., 2004, Example 12.1 as restated with its numbers; untreated subbase, C1 = 1):
+    /// k = 100 pci, h = 8 in; a single axle's corner deflection 0.0353 in gives p = 3.53 psi,
+    /// P = 14.512, log N = 6.444, N = 2.78e6 and, for 5e6 repetitions with C2 = 0.06, 10.8 %
+    /// erosion damage; a tandem's 0.0458 in gives P = 24.429 and log N = 5.541. Each value is
+    /// checked to the half-unit of its printed last digit.
     #[test]
     fn erosion_reproduces_huangs_worked_example() {
         let pci = POUND_FORCE / (INCH * INCH * INCH);
         let (k, h) = (100.0 * pci, 8.0 * INCH);
         let p = Pca::default();
-        let log_n = |w_in: f64| p.erosion_repetitions(w_in * INCH, k, h).log10();
-        for (w, printed) in [(0.0353, 6.444), (0.0458, 5.541)] {
-            let (low, high) = (log_n(w + 0.00005) - 0.0005, log_n(w - 0.00005) + 0.0005);
-            assert!(
-                low <= printed && printed <= high,
-                "erosion at w = {w} in: printed log N {printed} outside [{low:.4}, {high:.4}]"
-            );
+        for (w, power, log_n) in [(0.0353, 14.512, 6.444), (0.0458, 24.429, 5.541)] {
+            let got = Pca::erosion_power(w * INCH, k, h);
+            assert!((got - power).abs() <= 0.0005, "P at {w} in: {got}");
+            let got = p.erosion_repetitions(w * INCH, k, h).log10();
+            assert!((got - log_n).abs() <= 0.0005, "log N at {w} in: {got}");
         }
-        // The power itself, P = 268.7 p²/(h k^0.73) by hand: p = 3.53 psi.
-        let power = Pca::erosion_power(0.0353 * INCH, k, h);
-        let by_hand = 268.7 * 3.53f64.powi(2) / (8.0 * 100f64.powf(0.73));
-        assert!(
-            (power / by_hand - 1.0).abs() < 1e-12,
-            "P {power}, {by_hand}"
-        );
-        assert!((power - 14.51).abs() < 0.01, "Huang's P 14.51: {power}");
+        let n = p.erosion_repetitions(0.0353 * INCH, k, h);
+        assert!((n / 1e6 - 2.78).abs() <= 0.005, "N {n}");
+        let damage = 100.0 * 0.06 * 5e6 / n;
+        assert!((damage - 10.8).abs() <= 0.05, "damage {damage} %");
+        // A stabilised subbase (C1 = 0.9) allows more: C1 P − 9 is smaller.
+        let stabilised = Pca {
+            erosion_c1: 0.9,
+            ..Pca::default()
+        };
+        assert!(stabilised.erosion_repetitions(0.0353 * INCH, k, h) > n);
     }
 
     #[test]
@@ -270,9 +280,8 @@ mod tests {
         let p = Pca::default();
         assert_eq!(p.erosion_repetitions(0.0, k, h), f64::INFINITY);
         assert_eq!(p.erosion_repetitions(-1e-3, k, h), f64::INFINITY);
-        // C1 P = 9 at the threshold: p² = 9 h k^0.73 / (268.7 C1).
-        let c1 = 1.0 - (200.0f64 / 2000.0 * 4.0 / 10.0).powi(2);
-        let p_psi = (9.0 * 10.0 * 200f64.powf(0.73) / (268.7 * c1)).sqrt();
+        // P = 9 at the threshold (C1 = 1): p² = 9 h k^0.73 / 268.7.
+        let p_psi = (9.0 * 10.0 * 200f64.powf(0.73) / 268.7).sqrt();
         let w = p_psi / 200.0 * INCH;
         assert_eq!(p.erosion_repetitions(w * 0.999, k, h), f64::INFINITY);
         assert!(p.erosion_repetitions(w * 1.001, k, h).is_finite());
@@ -286,9 +295,26 @@ mod tests {
     fn erosion_c2_is_checked() {
         assert!(Pca::default().validate().is_ok());
         for bad in [0.0, -0.5, 1.5, f64::NAN] {
-            match (Pca { erosion_c2: bad }).validate() {
-                Err(Error::Invalid { field, .. }) => assert_eq!(field, "damage.erosion_c2"),
-                other => panic!("erosion_c2 = {bad}: {other:?}"),
+            for (key, relation) in [
+                (
+                    "damage.erosion_c2",
+                    Pca {
+                        erosion_c2: bad,
+                        ..Pca::default()
+                    },
+                ),
+                (
+                    "damage.erosion_c1",
+                    Pca {
+                        erosion_c1: bad,
+                        ..Pca::default()
+                    },
+                ),
+            ] {
+                match relation.validate() {
+                    Err(Error::Invalid { field, .. }) => assert_eq!(field, key),
+                    other => panic!("{key} = {bad}: {other:?}"),
+                }
             }
         }
     }

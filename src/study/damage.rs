@@ -359,7 +359,7 @@ impl<'a> Setup<'a> {
             f.sort_by(|&a, &b| level(a).total_cmp(&level(b)));
         }
         let erosion = match plan.model {
-            DamageModel::Pca(_) => Some(Corners::of(&problem.model)),
+            DamageModel::Pca(m) => Some(Corners::of(&problem.model, m)),
             _ => None,
         };
         Ok(Self {

@@ -47,11 +47,13 @@ pub(super) struct Corners {
     probes: Vec<([f64; 2], [bool; 2])>,
     /// The Winkler modulus, N/m³.
     pub(super) k: f64,
+    /// The relation with the scene's coefficients (C1; C2 is applied by the sum).
+    pub(super) relation: crate::damage::pca::Pca,
 }
 
 impl Corners {
     /// The corners of `model`'s panels, or why the erosion cannot be summed on its soil.
-    pub(super) fn of(model: &Model) -> Result<Corners, String> {
+    pub(super) fn of(model: &Model, relation: crate::damage::pca::Pca) -> Result<Corners, String> {
         let Some(phys) = model.physical else {
             return Err("a damage run needs a physical scene".into());
         };
@@ -108,14 +110,19 @@ impl Corners {
                 }
             }
         }
-        Ok(Corners { points, probes, k })
+        Ok(Corners {
+            points,
+            probes,
+            k,
+            relation,
+        })
     }
 
     /// The repetitions EB109's erosion relation allows of a deflection `w` (m) caused at
     /// corner `j`.
     pub(super) fn allowed(&self, j: usize, w: f64) -> f64 {
         let h = self.points.get(j).map_or(f64::NAN, |p| p.thickness);
-        crate::damage::pca::Pca::default().erosion_repetitions(w, self.k, h)
+        self.relation.erosion_repetitions(w, self.k, h)
     }
 
     /// The deflection at each corner in a solve's field, m: the node copy of the panel's
