@@ -280,3 +280,42 @@ fn a_soil_without_k_says_why_it_has_no_erosion() {
     assert!(note.contains("Winkler k"), "{note}");
     assert!(d.governing_bottom.damage.is_finite());
 }
+
+/// A PCA run's files: erosion.csv has a row per corner with the run's damage, the erosion map is
+/// written beside the damage maps, and the report shows the governing corner and inlines all
+/// three maps.
+#[test]
+fn the_files_and_the_report_show_the_erosion() {
+    let d = run(&slabs(AXLE, PLAN));
+    let e = d.erosion.as_ref().expect("erosion");
+    let dir = tempfile::tempdir().expect("tempdir");
+    liftoff::output::damage::write_damage(dir.path(), &d, "two slabs").expect("files");
+    for name in ["erosion.csv", "erosion.svg", "erosion.png"] {
+        assert!(dir.path().join(name).is_file(), "{name}");
+    }
+    let text = std::fs::read_to_string(dir.path().join("erosion.csv")).expect("csv");
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next(),
+        Some("panel,x [m],y [m],thickness [m],deflection [m],damage")
+    );
+    let rows: Vec<&str> = lines.collect();
+    assert_eq!(rows.len(), e.corners.len());
+    for (row, c) in rows.iter().zip(&e.corners) {
+        let damage: f64 = row
+            .rsplit(',')
+            .next()
+            .expect("damage")
+            .parse()
+            .expect("number");
+        assert_eq!(damage, c.damage, "{row}");
+        assert!(row.starts_with(&format!("\"{}\"", c.corner.panel)), "{row}");
+    }
+    let page = liftoff::output::report::write_report(dir.path(), None).expect("report");
+    let html = std::fs::read_to_string(page).expect("page");
+    assert!(html.contains("erosion (PCA, C2 Σ n/N)"), "the erosion row");
+    assert_eq!(html.matches("<svg").count(), 3, "three maps inline");
+    // Each quarter of a panel shows its corner: every element takes one corner's damage.
+    let by = e.by_element(&d.x, &d.y);
+    assert!(by.iter().all(|v| e.corners.iter().any(|c| c.damage == *v)));
+}

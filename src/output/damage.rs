@@ -3,7 +3,9 @@
 //! bin, its repetitions, its largest stress of each face and where, the allowed repetitions
 //! there and its share of the governing damage), `damage.json` (all of it) and the damage maps
 //! `damage-bottom.svg/png` (bottom-up) and `damage-top.svg/png` (top-down), the governing element
-//! marked. Every value is in the scene's unit system, each header with its unit.
+//! marked; with the PCA's relation also `erosion.csv` (the erosion damage at every panel
+//! corner) and its map `erosion.svg/png`. Every value is in the scene's unit system, each
+//! header with its unit.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -201,6 +203,53 @@ pub fn write_damage(dir: &Path, d: &Damage, title: &str) -> Result<Vec<PathBuf>>
             &overlay,
         )?;
     }
+    if let Some(e) = &d.erosion {
+        // Each quarter of a panel shows its corner's erosion damage (the corner it lies
+        // towards, on its own side of a joint); the governing corner is marked.
+        let values: Vec<f64> = e
+            .by_element(&d.x, &d.y)
+            .into_iter()
+            .map(|v| if v.is_finite() { v } else { 0.0 })
+            .collect();
+        let marks = e
+            .governing
+            .and_then(|g| e.corners.get(g))
+            .map(|g| {
+                (
+                    (g.corner.x, g.corner.y),
+                    format!(
+                        "governing: C2 Σ n/N = {} at the corner ({:.2}, {:.2}) {} of panel {}",
+                        chart::short(g.damage),
+                        length.apply(g.corner.x),
+                        length.apply(g.corner.y),
+                        length.unit,
+                        g.corner.panel
+                    ),
+                )
+            })
+            .into_iter()
+            .collect();
+        chart::write_field_map(
+            &st.path("erosion.svg"),
+            &st.path("erosion.png"),
+            &d.field,
+            &chart::MapValues {
+                values: &values,
+                name: "C2 Σ n/N",
+                scale: number,
+            },
+            &format!(
+                "{title} — erosion at the panels' corners (PCA), largest {}{}; each quarter of a panel shows its corner",
+                chart::short(e.damage()),
+                if d.complete { "" } else { " (incomplete)" }
+            ),
+            &units,
+            &Overlay {
+                marks,
+                ..Overlay::default()
+            },
+        )?;
+    }
     st.commit()
 }
 
@@ -293,7 +342,11 @@ pub fn damage_table(title: &str, d: &Damage, files: Option<(usize, &Path)>) -> S
             s,
             "  files      : {k} in {} (damage.csv, passes.csv, {}damage.json, damage.vtu, damage maps)",
             dir.display(),
-            if d.erosion.is_some() { "erosion.csv, " } else { "" }
+            if d.erosion.is_some() {
+                "erosion.csv, erosion map, "
+            } else {
+                ""
+            }
         );
     }
     s

@@ -36,6 +36,9 @@ pub struct Corner {
     pub panel: String,
     /// The panel's thickness, m.
     pub thickness: f64,
+    /// Where the panel lies from the corner: ±1 along x and y.
+    #[serde(skip)]
+    pub towards: [f64; 2],
 }
 
 /// Where and how a run sums its erosion: the corners, where each is read, and the soil's k.
@@ -105,6 +108,7 @@ impl Corners {
                         y: y * l,
                         panel: format!("({}, {})", c + 1, r + 1),
                         thickness: thickness * layout.section(c, r).thickness,
+                        towards: [sx, sy],
                     });
                     probes.push(([px * l, py * l], [sx > 0.0, sy > 0.0]));
                 }
@@ -184,6 +188,30 @@ pub struct Erosion {
 }
 
 impl Erosion {
+    /// Each element's share of the map: the damage of its panel's nearest corner — the corner
+    /// it lies towards, on its own side of a joint — for the erosion map (NaN where no corner
+    /// is towards it). `x`, `y`: the element centres.
+    pub fn by_element(&self, x: &[f64], y: &[f64]) -> Vec<f64> {
+        x.iter()
+            .zip(y)
+            .map(|(&ex, &ey)| {
+                self.corners
+                    .iter()
+                    .filter(|c| {
+                        let [tx, ty] = c.corner.towards;
+                        (ex - c.corner.x) * tx > 0.0 && (ey - c.corner.y) * ty > 0.0
+                    })
+                    .min_by(|a, b| {
+                        let d = |c: &CornerDamage| {
+                            (ex - c.corner.x).powi(2) + (ey - c.corner.y).powi(2)
+                        };
+                        d(a).total_cmp(&d(b))
+                    })
+                    .map_or(f64::NAN, |c| c.damage)
+            })
+            .collect()
+    }
+
     /// The largest erosion damage, 0 without corners.
     pub fn damage(&self) -> f64 {
         self.governing
@@ -210,6 +238,7 @@ impl Erosion {
                         y: l(c.corner.y),
                         thickness: l(c.corner.thickness),
                         panel: c.corner.panel.clone(),
+                        towards: c.corner.towards,
                     },
                     deflection: Measure::Deflection.from_si(sys, c.deflection),
                     damage: c.damage,

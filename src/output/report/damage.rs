@@ -179,6 +179,10 @@ pub(crate) fn read(l: &mut Listing) -> Result<Option<Part>> {
                 "damage-top.svg",
                 "top-down fatigue damage Σ n/N at every element",
             ),
+            (
+                "erosion.svg",
+                "the PCA's erosion damage C2 Σ n/N at the panels' corners (each quarter of a panel shows its corner)",
+            ),
         ] {
             if l.has(rel) {
                 figures.push_str(&l.figure(rel, caption)?);
