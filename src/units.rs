@@ -55,6 +55,8 @@ pub enum Quantity {
     Temperature,
     /// 1/K | 1/°F.
     ThermalExpansion,
+    /// K/m | °F/in (a temperature gradient through the slab's thickness).
+    TemperatureGradient,
 }
 
 impl Quantity {
@@ -88,6 +90,7 @@ impl Quantity {
             Quantity::MomentPerLength => POUND_FORCE,
             Quantity::TemperatureDifference | Quantity::Temperature => 5.0 / 9.0,
             Quantity::ThermalExpansion => 9.0 / 5.0,
+            Quantity::TemperatureGradient => 5.0 / 9.0 / INCH,
         }
     }
 
@@ -104,6 +107,7 @@ impl Quantity {
             Quantity::TemperatureDifference => pick(si, "K", "°F"),
             Quantity::Temperature => pick(si, "°C", "°F"),
             Quantity::ThermalExpansion => pick(si, "1/K", "1/°F"),
+            Quantity::TemperatureGradient => pick(si, "K/m", "°F/in"),
         }
     }
 
@@ -260,6 +264,12 @@ mod tests {
             9e-6,
             1e-15
         ));
+        // 1 °F/in = (5/9) K per 0.0254 m = 21.872 265 966 754 16 K/m.
+        assert!(close(
+            Quantity::TemperatureGradient.to_si(us, 1.0),
+            21.872_265_966_754_16,
+            1e-14
+        ));
         for q in [
             Quantity::Length,
             Quantity::Force,
@@ -270,6 +280,7 @@ mod tests {
             Quantity::TemperatureDifference,
             Quantity::Temperature,
             Quantity::ThermalExpansion,
+            Quantity::TemperatureGradient,
         ] {
             let back = q.from_si(us, q.to_si(us, 123.456));
             assert!(close(back, 123.456, 1e-15), "{q:?} round trip {back}");

@@ -482,3 +482,43 @@ fn a_run_split_into_parts_merges_to_the_whole_run() {
     assert!(liftoff::study::DamagePart::from_bytes(b"not a part").is_err());
     assert!(liftoff::study::damage_part(&p, &[2], &Monitor::NONE).is_err());
 }
+
+/// A climate bin given as a gradient (K/m) is the difference gradient × thickness: TWO_BINS's
+/// 8 K and −6 K at 0.25 m are 32 and −24 K/m, and the run is the same to the bit (32 × 0.25 is
+/// exact). At another thickness — a design's next slab — the difference follows: 6.4 K at
+/// 0.20 m.
+#[test]
+fn a_gradient_bin_is_its_difference_at_the_slabs_thickness() {
+    let graded = TWO_BINS
+        .replace("difference = 8.0", "gradient = 32.0")
+        .replace("difference = -6.0", "gradient = -24.0");
+    let (a, b) = (run(&slab(TWO_BINS)), run(&slab(&graded)));
+    assert_eq!(a.bottom, b.bottom);
+    assert_eq!(a.top, b.top);
+    let diffs = |d: &Damage| d.passes.iter().map(|p| p.difference).collect::<Vec<_>>();
+    assert_eq!(diffs(&b), vec![Some(8.0), Some(-6.0)]);
+    // In a US scene the gradient is in °F/in: 32 K/m = 32 × 1.8 × 0.0254 °F/in.
+    let us = slab(&graded)
+        .replace("title = \"slab\"", "title = \"slab\"\nunits = \"us\"")
+        .replace("length = 4.5", &format!("length = {}", 4.5 / 0.0254))
+        .replace("width = 3.6", &format!("width = {}", 3.6 / 0.0254))
+        .replace(
+            "thickness = 0.25",
+            &format!("thickness = {}", 0.25 / 0.0254),
+        )
+        .replace(
+            "gradient = 32.0",
+            &format!("gradient = {}", 32.0 * 1.8 * 0.0254),
+        );
+    let p = Problem::from_toml(&us).expect("scene");
+    let first = p.damage.expect("plan").climate[0].difference;
+    assert!((first - 8.0).abs() < 1e-12, "US gradient: {first} K");
+    let thin = slab(&graded).replace("thickness = 0.25", "thickness = 0.20");
+    let p = Problem::from_toml(&thin).expect("scene");
+    let plan = p.damage.expect("plan");
+    let got: Vec<f64> = plan.climate.iter().map(|c| c.difference).collect();
+    assert!(
+        (got[0] - 6.4).abs() < 1e-12 && (got[1] + 4.8).abs() < 1e-12,
+        "{got:?}"
+    );
+}

@@ -722,6 +722,16 @@ fn e71_e72_damage_inputs_are_refused_naming_the_key() {
             "model = \"aashto93\"",
             "scene field `damage.model`:",
         ),
+        (
+            "difference = 0.0",
+            "difference = 0.0\ngradient = 0.0",
+            "scene field `climate.bin[1]`: give a difference (K) or a gradient (K/m), not both",
+        ),
+        (
+            "difference = 0.0",
+            "",
+            "scene field `climate.bin[1].difference`: missing: give the bin's temperature difference",
+        ),
     ] {
         assert!(scene.contains(from), "{from}");
         for command in ["damage", "solve"] {

@@ -84,12 +84,17 @@ pub struct ClimateSpec {
     pub bin: Vec<ClimateBinSpec>,
 }
 
-/// `[[climate.bin]]`.
+/// `[[climate.bin]]`: a temperature difference or a gradient, with its share.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ClimateBinSpec {
     /// Temperature difference, top minus bottom, K (linear through the thickness).
-    pub difference: f64,
+    #[serde(default)]
+    pub difference: Option<f64>,
+    /// Or the gradient, top minus bottom over the thickness, K/m: the difference is the
+    /// gradient times the slab's thickness, so it follows the thickness in a design search.
+    #[serde(default)]
+    pub gradient: Option<f64>,
     /// Share of the traffic that passes in this bin (the shares add up to one).
     pub share: f64,
 }
@@ -219,6 +224,7 @@ impl DamagePlan {
         climate: Option<&ClimateSpec>,
         damage: Option<&DamageSpec>,
         names: &[Option<&str>],
+        thickness: Option<f64>,
     ) -> Result<Option<Self>> {
         let (traffic, damage) = match (traffic, damage) {
             (None, None) if climate.is_none() => return Ok(None),
@@ -336,12 +342,40 @@ impl DamagePlan {
             Some(c) if !c.bin.is_empty() => {
                 let mut bins = Vec::new();
                 for (k, b) in c.bin.iter().enumerate() {
-                    if !b.difference.is_finite() {
-                        return Err(Error::invalid(
-                            format!("climate.bin[{k}].difference"),
-                            format!("must be finite, K, got {}", b.difference),
-                        ));
-                    }
+                    let difference = match (b.difference, b.gradient, thickness) {
+                        (Some(d), None, _) if d.is_finite() => d,
+                        (Some(d), None, _) => {
+                            return Err(Error::invalid(
+                                format!("climate.bin[{k}].difference"),
+                                format!("must be finite, K, got {d}"),
+                            ))
+                        }
+                        (None, Some(g), Some(h)) if g.is_finite() => g * h,
+                        (None, Some(g), Some(_)) => {
+                            return Err(Error::invalid(
+                                format!("climate.bin[{k}].gradient"),
+                                format!("must be finite, K/m, got {g}"),
+                            ))
+                        }
+                        (None, Some(_), None) => {
+                            return Err(Error::invalid(
+                                format!("climate.bin[{k}].gradient"),
+                                "a gradient needs the slab's thickness: give the scene as [plate] (or the bin as a difference)",
+                            ))
+                        }
+                        (Some(_), Some(_), _) => {
+                            return Err(Error::invalid(
+                                format!("climate.bin[{k}]"),
+                                "give a difference (K) or a gradient (K/m), not both",
+                            ))
+                        }
+                        (None, None, _) => {
+                            return Err(Error::invalid(
+                                format!("climate.bin[{k}].difference"),
+                                "missing: give the bin's temperature difference, top minus bottom (K), or its gradient (K/m)",
+                            ))
+                        }
+                    };
                     if !(b.share.is_finite() && b.share >= 0.0) {
                         return Err(Error::invalid(
                             format!("climate.bin[{k}].share"),
@@ -349,7 +383,7 @@ impl DamagePlan {
                         ));
                     }
                     bins.push(Climate {
-                        difference: b.difference,
+                        difference,
                         share: b.share,
                     });
                 }

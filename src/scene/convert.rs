@@ -55,6 +55,7 @@ pub fn quantity(
         ("traffic.wander", "mean" | "deviation") => Some(Length),
         ("traffic.group", "levels") => Some(Force),
         ("climate.bin", "difference") => Some(TemperatureDifference),
+        ("climate.bin", "gradient") => Some(TemperatureGradient),
         ("damage", "modulus_of_rupture") => Some(Pressure),
         _ => None,
     }

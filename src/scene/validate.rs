@@ -577,6 +577,7 @@ fn damage_plan(
         file.climate.as_ref(),
         file.damage.as_ref(),
         &names,
+        file.plate.as_ref().map(|p| p.thickness),
     )?
     else {
         return Ok(None);

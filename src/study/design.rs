@@ -9,9 +9,10 @@
 //! the erosion damage at the corners (EB109 designs against both), 1 unless given.
 //!
 //! **What follows the thickness.** The plate's thickness, and with it its rigidity, its
-//! stresses and the curvature of a temperature difference (α ΔT / H: the climate bins keep
-//! their differences, in K, at every thickness — a difference per thickness or a profile is
-//! not varied); a `uniform` load whose `case` or `name` is `self-weight` scales with the
+//! stresses and the curvature of a temperature difference (α ΔT / H: a climate bin given as a
+//! `difference` keeps it, in K, at every thickness; one given as a `gradient`, K/m, takes
+//! gradient × H — a thicker slab in the same weather sees a larger difference; a temperature
+//! profile is not varied); a `uniform` load whose `case` or `name` is `self-weight` scales with the
 //! thickness (ρ g H); every other load is kept. Panels with a thickness of their own (a
 //! shoulder) keep it.
 
