@@ -297,15 +297,18 @@ pub fn damage_table(title: &str, d: &Damage, files: Option<(usize, &Path)>) -> S
             Some(g) => {
                 let _ = writeln!(
                     s,
-                    "  erosion    : C2 Σ n/N = {:.4e} at the corner ({:.2}, {:.2}) {} of panel {}, k {:.4} {} (C2 = {})",
+                    "  erosion    : C2 Σ n/N = {:.4e} at the corner ({:.2}, {:.2}) {} of panel {}, k {} {} (C1 = {}, C2 = {})",
                     g.damage,
                     len.apply(g.corner.x),
                     len.apply(g.corner.y),
                     len.unit,
                     g.corner.panel,
-                    crate::units::Quantity::SubgradeModulus
-                        .from_si(d.units.unwrap_or_default(), e.k),
+                    chart::short(
+                        crate::units::Quantity::SubgradeModulus
+                            .from_si(d.units.unwrap_or_default(), e.k)
+                    ),
                     crate::units::Quantity::SubgradeModulus.unit(d.units.unwrap_or_default()),
+                    e.c1,
                     e.c2
                 );
             }

@@ -710,6 +710,7 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
             Some((
                 Erosion {
                     k: c.k,
+                    c1: c.relation.erosion_c1,
                     c2,
                     corners,
                     governing,

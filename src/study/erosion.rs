@@ -179,6 +179,8 @@ pub struct CornerDamage {
 pub struct Erosion {
     /// The Winkler modulus the relation read, N/m³.
     pub k: f64,
+    /// The relation's C1 (the subbase's factor).
+    pub c1: f64,
     /// EB109's C2 applied.
     pub c2: f64,
     /// Every corner's damage.

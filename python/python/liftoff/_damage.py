@@ -60,7 +60,7 @@ class Damage:
       ``governing_bottom`` / ``governing_top`` (dicts: ``damage``, ``x``, ``y``,
       ``element`` = ie + je·nx), ``cracking`` (the MEPDG's, a dict of ``bottom``, ``top``,
       ``total``, ``at_reliability`` in %; None for the other relations), ``erosion`` (the
-      PCA's: ``k``, ``c2``, ``corners`` — each panel corner's ``panel``, ``x``, ``y``,
+      PCA's: ``k``, ``c1``, ``c2``, ``corners`` — each panel corner's ``panel``, ``x``, ``y``,
       ``thickness``, ``deflection`` and ``damage`` — and ``governing``, the index of the
       largest; None for the other relations), ``erosion_note`` (why a PCA run has none),
       ``complete``,
