@@ -2,8 +2,8 @@
 //! load moved over a grid of reference points inside the plate (and over headings where asked),
 //! the rest of its combination present, each position its own contact problem on operators
 //! assembled once (K, B, T shared; only the load vector changes), in runs of
-//! [`CriticalOptions::RUN`] positions side by side, each warm-started from the position before
-//! it; the positions that give the largest
+//! [`CriticalOptions::RUN`] positions side by side, each warm-started from the positions before
+//! it (their answers extrapolated where it continues their line); the positions that give the largest
 //! tension at the bottom and at the top face and the largest deflection — and on a jointed
 //! plate the largest joint shear per length and the largest dowel force.
 //!
@@ -264,6 +264,29 @@ fn runs(picked: &[usize]) -> Vec<std::ops::Range<usize>> {
     out
 }
 
+/// Where a warm position at `at` starts: the extrapolation 2σ₁ − σ₀ of the run's last two
+/// answers when `at` continues their line by the same step (same heading, to 1e-9 of the
+/// step), else the last answer (None at a run's first position). Only the cost depends on it.
+fn start_from(last: &[([f64; 3], Vec<f64>)], at: [f64; 3]) -> Option<Vec<f64>> {
+    match last {
+        [(p0, s0), (p1, s1)] => {
+            let step = [p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]];
+            let next = [at[0] - p1[0], at[1] - p1[1], at[2] - p1[2]];
+            let size = step[0].hypot(step[1]).max(1e-300);
+            let in_line = step[2] == 0.0
+                && next[2] == 0.0
+                && (next[0] - step[0]).hypot(next[1] - step[1]) <= 1e-9 * size;
+            if in_line {
+                Some(s1.iter().zip(s0).map(|(a, b)| 2.0 * a - b).collect())
+            } else {
+                Some(s1.clone())
+            }
+        }
+        [.., (_, s)] => Some(s.clone()),
+        [] => None,
+    }
+}
+
 /// The largest of some optional values (None when none is present).
 fn largest(values: impl Iterator<Item = Option<f64>>) -> Option<f64> {
     values.flatten().reduce(f64::max)
@@ -423,13 +446,17 @@ pub fn critical(
         .map(|r| &work[r.clone()])
         .map(|run| {
             let mut out = Vec::with_capacity(run.len());
-            let mut start: Option<Vec<f64>> = None;
+            // The last two converged answers of the run and their points: a position in line
+            // with them, a step on, starts from their extrapolation (the lifted region moves
+            // with the load), any other from the last answer.
+            let mut last: Vec<([f64; 3], Vec<f64>)> = Vec::with_capacity(2);
             // A warm run also hands each solve's last factor to the next ([`Carry`]).
             let carry = Carry::new();
             for &(i, model) in run {
                 let t = Instant::now();
                 let [x, y, heading] = points[i];
                 let ops = base.loaded(model);
+                let start = start_from(&last, points[i]);
                 let (warm, carried) = if options.warm {
                     (start.as_deref(), Some(&carry))
                 } else {
@@ -442,7 +469,10 @@ pub fn critical(
                     Ok(r) => {
                         let s = &r.summary;
                         if s.converged {
-                            start = Some(r.solution.sigma.clone());
+                            if last.len() == 2 {
+                                last.remove(0);
+                            }
+                            last.push((points[i], r.solution.sigma.clone()));
                         }
                         Position {
                             x,
@@ -514,6 +544,20 @@ pub fn critical(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A warm start extrapolates only along the line of the last two positions, by their step.
+    #[test]
+    fn starts_extrapolate_in_line_only() {
+        let (a, b) = (vec![1.0, 0.0], vec![2.0, -1.0]);
+        let last = vec![([0.0, 0.0, 0.0], a.clone()), ([0.1, 0.0, 0.0], b.clone())];
+        assert_eq!(start_from(&last, [0.2, 0.0, 0.0]), Some(vec![3.0, -2.0]));
+        // The next row, another step, another heading: the last answer.
+        assert_eq!(start_from(&last, [0.0, 0.3, 0.0]), Some(b.clone()));
+        assert_eq!(start_from(&last, [0.25, 0.0, 0.0]), Some(b.clone()));
+        assert_eq!(start_from(&last, [0.2, 0.0, 90.0]), Some(b.clone()));
+        assert_eq!(start_from(&last[..1], [0.2, 0.0, 0.0]), Some(a));
+        assert_eq!(start_from(&[], [0.2, 0.0, 0.0]), None);
+    }
 
     /// Runs are blocks of `RUN` grid indices, cut where a share of the grid skips an index.
     #[test]
