@@ -205,7 +205,8 @@ pub fn write_damage(dir: &Path, d: &Damage, title: &str) -> Result<Vec<PathBuf>>
     }
     if let Some(e) = &d.erosion {
         // Each quarter of a panel shows its corner's erosion damage (the corner it lies
-        // towards, on its own side of a joint); the governing corner is marked.
+        // towards, on its own side of a joint); the governing corner is marked. An element
+        // whose panel has no corner on the plate (a shaped plate's) shows none: 0.
         let values: Vec<f64> = e
             .by_element(&d.x, &d.y)
             .into_iter()

@@ -21,7 +21,7 @@
 
 use serde::Serialize;
 
-use crate::foundation::{FoundationKind, Soil};
+use crate::foundation::Soil;
 use crate::model::Model;
 use crate::post::FullField;
 
@@ -74,7 +74,6 @@ impl Corners {
                 ))
             }
         };
-        debug_assert_eq!(g.foundation(), FoundationKind::Winkler);
         let l = phys.half_length;
         let layout = &model.layout;
         let thickness = model.thickness_ratio() * l;
