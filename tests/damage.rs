@@ -522,3 +522,80 @@ fn a_gradient_bin_is_its_difference_at_the_slabs_thickness() {
         "{got:?}"
     );
 }
+
+/// A climate bin given as a temperature profile is the scene's `temperature-profile` load: one
+/// bin (share 1) of a nonlinear profile gives the run that the scene without `[climate]` gives
+/// when it carries the same profile as a load — its equivalent linear difference curls the
+/// slab, its nonlinear rest adds its own stress to the faces — to round-off (the two models
+/// hold the same loads in another order). The profile is read in proportion to its last depth,
+/// so the same bin on a thicker slab keeps its equivalent difference.
+#[test]
+fn a_profile_bin_is_the_scenes_profile_load() {
+    let climate = "[climate]\n[[climate.bin]]\ndifference = 8.0\nshare = 0.6\n[[climate.bin]]\ndifference = -6.0\nshare = 0.4\n";
+    assert!(TWO_BINS.contains(climate));
+    let profile = "depths = [0.0, 0.05, 0.125, 0.25]\ntemperatures = [30.0, 24.0, 21.0, 20.0]\n";
+    let binned = slab(&TWO_BINS.replace(
+        climate,
+        &format!("[climate]\n[[climate.bin]]\n{profile}share = 1.0\n"),
+    ));
+    let plan = Problem::from_toml(&binned)
+        .expect("scene")
+        .damage
+        .expect("plan");
+    let c = plan.climate[0];
+    assert!(c.nonlinear[0].abs() > 0.5, "a nonlinear profile: {c:?}");
+    let loaded = slab(&TWO_BINS.replace(climate, "")).replace(
+        "[[load]]\nkind = \"axle\"",
+        &format!("[[load]]\nkind = \"temperature-profile\"\n{profile}[[load]]\nkind = \"axle\""),
+    );
+    let (a, b) = (run(&binned), run(&loaded));
+    let scale = b
+        .bottom
+        .iter()
+        .chain(&b.top)
+        .fold(0.0_f64, |m, v| m.max(*v));
+    assert!(scale > 0.0);
+    for (x, y) in a
+        .bottom
+        .iter()
+        .zip(&b.bottom)
+        .chain(a.top.iter().zip(&b.top))
+    {
+        assert!((x - y).abs() <= 1e-9 * scale, "{x} vs {y}");
+    }
+    // In a US scene: depths in inches, temperatures in °F; the same parts in K.
+    let us = binned
+        .replace("title = \"slab\"", "title = \"slab\"\nunits = \"us\"")
+        .replace("length = 4.5", &format!("length = {}", 4.5 / 0.0254))
+        .replace("width = 3.6", &format!("width = {}", 3.6 / 0.0254))
+        .replace(
+            "thickness = 0.25",
+            &format!("thickness = {}", 0.25 / 0.0254),
+        )
+        .replace(
+            "depths = [0.0, 0.05, 0.125, 0.25]",
+            &format!(
+                "depths = [0.0, {}, {}, {}]",
+                0.05 / 0.0254,
+                0.125 / 0.0254,
+                0.25 / 0.0254
+            ),
+        )
+        .replace(
+            "temperatures = [30.0, 24.0, 21.0, 20.0]",
+            "temperatures = [86.0, 75.2, 69.8, 68.0]",
+        );
+    let u = Problem::from_toml(&us)
+        .expect("scene")
+        .damage
+        .expect("plan")
+        .climate[0];
+    assert!((u.difference - c.difference).abs() < 1e-9, "{u:?} vs {c:?}");
+    assert!((u.nonlinear[0] - c.nonlinear[0]).abs() < 1e-9);
+    let thick = binned.replace("thickness = 0.25", "thickness = 0.30");
+    let plan = Problem::from_toml(&thick)
+        .expect("scene")
+        .damage
+        .expect("plan");
+    assert!((plan.climate[0].difference - c.difference).abs() < 1e-12);
+}

@@ -732,6 +732,11 @@ fn e71_e72_damage_inputs_are_refused_naming_the_key() {
             "",
             "scene field `climate.bin[1].difference`: missing: give the bin's temperature difference",
         ),
+        (
+            "difference = 0.0",
+            "depths = [0.0, 0.25]\ntemperatures = [20.0]",
+            "scene field `climate.bin[1].temperatures`: give one temperature per depth, at least two",
+        ),
     ] {
         assert!(scene.contains(from), "{from}");
         for command in ["damage", "solve"] {

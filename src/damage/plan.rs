@@ -15,6 +15,10 @@ use serde::Deserialize;
 
 use crate::error::{Error, Result};
 
+/// How a climate bin's profile (depths, temperatures) splits: its equivalent linear difference
+/// (K, top minus bottom) and its nonlinear part at the top and the bottom face (K).
+pub type ProfileSplit<'a> = dyn Fn(&[f64], &[f64]) -> (f64, [f64; 2]) + 'a;
+
 /// `[traffic]` of a scene.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -95,6 +99,15 @@ pub struct ClimateBinSpec {
     /// gradient times the slab's thickness, so it follows the thickness in a design search.
     #[serde(default)]
     pub gradient: Option<f64>,
+    /// Or a temperature profile: depths from the top surface (m, from 0; read over the slab's
+    /// thickness in proportion to the last, so that it follows the thickness in a design
+    /// search) …
+    #[serde(default)]
+    pub depths: Option<Vec<f64>>,
+    /// … and the temperatures there (°C): the equivalent linear difference curls the slab,
+    /// the rest adds its own stress to the faces, as a `temperature-profile` load.
+    #[serde(default)]
+    pub temperatures: Option<Vec<f64>>,
     /// Share of the traffic that passes in this bin (the shares add up to one).
     pub share: f64,
 }
@@ -160,8 +173,11 @@ pub struct Lateral {
 /// A climate bin: the temperature difference and its share.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Climate {
-    /// Top minus bottom, K.
+    /// Top minus bottom, K (a profile's equivalent linear difference).
     pub difference: f64,
+    /// A profile's nonlinear part at the top and the bottom face, K ([0, 0] for a difference
+    /// or a gradient): its self-equilibrated stress adds to the faces' stresses.
+    pub nonlinear: [f64; 2],
     /// Share of the traffic.
     pub share: f64,
 }
@@ -213,18 +229,25 @@ pub struct DamagePlan {
     /// None where the plate has no thermal expansion (then the bins must keep the scene's own
     /// temperature loads).
     pub curvature_per_kelvin: Option<f64>,
+    /// The face stress of one kelvin of a profile's nonlinear part in the model's units
+    /// (−E α/(1 − ν) L²/P, [`crate::model::Load::FaceStress`]); None as above.
+    pub stress_per_kelvin: Option<f64>,
 }
 
 impl DamagePlan {
     /// Check the three sections against the vehicles of the model (`names`: each vehicle's
-    /// name, in the model's order); None when the scene has none of them. The curvature per
-    /// kelvin is the caller's to set ([`Self::curvature_per_kelvin`]).
+    /// name, in the model's order); None when the scene has none of them. `thickness`: the
+    /// slab's (m; None in a dimensionless scene), for the gradients; `split`: a profile's
+    /// equivalent linear difference and its nonlinear part at the faces from its depths and
+    /// temperatures (the scene's `temperature-profile` rule). The curvature and stress per
+    /// kelvin are the caller's to set ([`Self::curvature_per_kelvin`]).
     pub fn new(
         traffic: Option<&TrafficSpec>,
         climate: Option<&ClimateSpec>,
         damage: Option<&DamageSpec>,
         names: &[Option<&str>],
         thickness: Option<f64>,
+        split: &ProfileSplit<'_>,
     ) -> Result<Option<Self>> {
         let (traffic, damage) = match (traffic, damage) {
             (None, None) if climate.is_none() => return Ok(None),
@@ -342,37 +365,67 @@ impl DamagePlan {
             Some(c) if !c.bin.is_empty() => {
                 let mut bins = Vec::new();
                 for (k, b) in c.bin.iter().enumerate() {
-                    let difference = match (b.difference, b.gradient, thickness) {
-                        (Some(d), None, _) if d.is_finite() => d,
-                        (Some(d), None, _) => {
+                    let field = |key: &str| format!("climate.bin[{k}].{key}");
+                    let profile = match (&b.depths, &b.temperatures) {
+                        (None, None) => None,
+                        (Some(d), Some(t)) => Some((d, t)),
+                        (Some(_), None) => {
+                            return Err(Error::invalid(
+                                field("temperatures"),
+                                "missing: a profile gives the temperatures at its depths",
+                            ))
+                        }
+                        (None, Some(_)) => {
+                            return Err(Error::invalid(
+                                field("depths"),
+                                "missing: a profile gives the depths of its temperatures, m from the top surface",
+                            ))
+                        }
+                    };
+                    if profile.is_some() && (b.difference.is_some() || b.gradient.is_some()) {
+                        return Err(Error::invalid(
+                            format!("climate.bin[{k}]"),
+                            "give a difference (K), a gradient (K/m) or a profile (depths and temperatures), one of them",
+                        ));
+                    }
+                    let mut nonlinear = [0.0; 2];
+                    let difference = match (b.difference, b.gradient, thickness, profile) {
+                        (_, _, _, Some((depths, temps))) => {
+                            check_profile(&field, depths, temps)?;
+                            let (d, nl) = split(depths, temps);
+                            nonlinear = nl;
+                            d
+                        }
+                        (Some(d), None, _, _) if d.is_finite() => d,
+                        (Some(d), None, _, _) => {
                             return Err(Error::invalid(
                                 format!("climate.bin[{k}].difference"),
                                 format!("must be finite, K, got {d}"),
                             ))
                         }
-                        (None, Some(g), Some(h)) if g.is_finite() => g * h,
-                        (None, Some(g), Some(_)) => {
+                        (None, Some(g), Some(h), _) if g.is_finite() => g * h,
+                        (None, Some(g), Some(_), _) => {
                             return Err(Error::invalid(
                                 format!("climate.bin[{k}].gradient"),
                                 format!("must be finite, K/m, got {g}"),
                             ))
                         }
-                        (None, Some(_), None) => {
+                        (None, Some(_), None, _) => {
                             return Err(Error::invalid(
                                 format!("climate.bin[{k}].gradient"),
                                 "a gradient needs the slab's thickness: give the scene as [plate] (or the bin as a difference)",
                             ))
                         }
-                        (Some(_), Some(_), _) => {
+                        (Some(_), Some(_), _, _) => {
                             return Err(Error::invalid(
                                 format!("climate.bin[{k}]"),
                                 "give a difference (K) or a gradient (K/m), not both",
                             ))
                         }
-                        (None, None, _) => {
+                        (None, None, _, _) => {
                             return Err(Error::invalid(
                                 format!("climate.bin[{k}].difference"),
-                                "missing: give the bin's temperature difference, top minus bottom (K), or its gradient (K/m)",
+                                "missing: give the bin's temperature difference, top minus bottom (K), its gradient (K/m) or its profile (depths and temperatures)",
                             ))
                         }
                     };
@@ -384,6 +437,7 @@ impl DamagePlan {
                     }
                     bins.push(Climate {
                         difference,
+                        nonlinear,
                         share: b.share,
                     });
                 }
@@ -400,6 +454,7 @@ impl DamagePlan {
             }
             _ => vec![Climate {
                 difference: f64::NAN,
+                nonlinear: [0.0; 2],
                 share: 1.0,
             }],
         };
@@ -448,6 +503,7 @@ impl DamagePlan {
             reliability: damage.reliability,
             interpolate: damage.interpolate,
             curvature_per_kelvin: None,
+            stress_per_kelvin: None,
         }))
     }
 
@@ -484,6 +540,37 @@ impl DamagePlan {
         }
         out
     }
+}
+
+/// A climate bin's profile: at least two depths, one temperature each, all finite, the depths
+/// increasing from 0.
+fn check_profile(field: &dyn Fn(&str) -> String, depths: &[f64], temps: &[f64]) -> Result<()> {
+    if depths.len() < 2 || depths.len() != temps.len() {
+        return Err(Error::invalid(
+            field("temperatures"),
+            format!(
+                "give one temperature per depth, at least two: {} depths, {} temperatures",
+                depths.len(),
+                temps.len()
+            ),
+        ));
+    }
+    if let Some(t) = temps.iter().find(|t| !t.is_finite()) {
+        return Err(Error::invalid(
+            field("temperatures"),
+            format!("must be finite, got {t}"),
+        ));
+    }
+    if depths[0] != 0.0
+        || !depths.iter().all(|d| d.is_finite())
+        || depths.windows(2).any(|w| w[1] <= w[0])
+    {
+        return Err(Error::invalid(
+            field("depths"),
+            format!("must increase from 0 (the top surface), m, got {depths:?}"),
+        ));
+    }
+    Ok(())
 }
 
 fn positive(field: &str, v: f64, unit: &str) -> Result<()> {

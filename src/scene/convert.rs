@@ -56,6 +56,8 @@ pub fn quantity(
         ("traffic.group", "levels") => Some(Force),
         ("climate.bin", "difference") => Some(TemperatureDifference),
         ("climate.bin", "gradient") => Some(TemperatureGradient),
+        ("climate.bin", "depths") => Some(Length),
+        ("climate.bin", "temperatures") => Some(Temperature),
         ("damage", "modulus_of_rupture") => Some(Pressure),
         _ => None,
     }

@@ -578,6 +578,10 @@ fn damage_plan(
         file.damage.as_ref(),
         &names,
         file.plate.as_ref().map(|p| p.thickness),
+        &|depths: &[f64], temps: &[f64]| {
+            let parts = super::temperature::piecewise_linear(depths, temps);
+            (parts.gradient, parts.nonlinear)
+        },
     )?
     else {
         return Ok(None);
@@ -592,6 +596,15 @@ fn damage_plan(
         (Some(p), Some(ph)) => p
             .thermal_expansion
             .map(|alpha| ph.rigidity * alpha / (p.thickness * model.load_scale)),
+        _ => None,
+    };
+    // σ_nl = −E α T_nl/(1 − ν), E/(1 − ν) = 12 D (1 + ν)/H³, in units of P/L².
+    plan.stress_per_kelvin = match (&file.plate, model.physical) {
+        (Some(p), Some(ph)) => p.thermal_expansion.map(|alpha| {
+            let l = ph.half_length;
+            -12.0 * ph.rigidity * (1.0 + p.poissons_ratio) / p.thickness.powi(3) * alpha * l * l
+                / model.load_scale
+        }),
         _ => None,
     };
     if plan.curvature_per_kelvin.is_none() && plan.climate.iter().any(|c| c.difference.is_finite())

@@ -935,11 +935,20 @@ fn pass_models(base: &Model, plan: &DamagePlan, bin: &Bin) -> Result<Vec<Model>>
     let group = &plan.groups[bin.group];
     let k = group.vehicle;
     let mut model = base.clone();
-    let d = plan.climate[bin.climate].difference;
+    let climate = plan.climate[bin.climate];
+    let d = climate.difference;
     if d.is_finite() {
         let per_k = plan.curvature_per_kelvin.unwrap_or(0.0);
         model.loads.push(Load::Temperature {
             curvature: per_k * d,
+        });
+    }
+    // A profile's nonlinear part: its own stress at the faces, the same at every level.
+    if climate.nonlinear != [0.0; 2] {
+        let per_k = plan.stress_per_kelvin.unwrap_or(0.0);
+        model.loads.push(Load::FaceStress {
+            top: per_k * climate.nonlinear[0],
+            bottom: per_k * climate.nonlinear[1],
         });
     }
     for (i, v) in model.vehicles.iter_mut().enumerate() {

@@ -11,8 +11,9 @@
 //! **What follows the thickness.** The plate's thickness, and with it its rigidity, its
 //! stresses and the curvature of a temperature difference (α ΔT / H: a climate bin given as a
 //! `difference` keeps it, in K, at every thickness; one given as a `gradient`, K/m, takes
-//! gradient × H — a thicker slab in the same weather sees a larger difference; a temperature
-//! profile is not varied); a `uniform` load whose `case` or `name` is `self-weight` scales with the
+//! gradient × H — a thicker slab in the same weather sees a larger difference; a profile,
+//! read over the thickness with its depths in proportion, keeps its equivalent difference and
+//! its nonlinear part); a `uniform` load whose `case` or `name` is `self-weight` scales with the
 //! thickness (ρ g H); every other load is kept. Panels with a thickness of their own (a
 //! shoulder) keep it.
 
