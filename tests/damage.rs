@@ -599,3 +599,50 @@ fn a_profile_bin_is_the_scenes_profile_load() {
         .expect("plan");
     assert!((plan.climate[0].difference - c.difference).abs() < 1e-12);
 }
+
+/// A climate bin with a subgrade modulus of its own (a month's, a season's) is that soil: in a
+/// run whose night bin sits on k = 50 MN/m³ and whose day bin on the scene's 80 MN/m³, each
+/// pass is what a run of the scene on its own soil gives — stresses, the erosion's corner
+/// deflection and the erosion relation's N (which reads the bin's k) — to the solver's
+/// tolerance (1e-9 of the values).
+#[test]
+fn a_bin_with_its_own_subgrade_modulus_is_that_soil() {
+    let pca = |t: &str| t.replace("model = \"mepdg\"", "model = \"pca\"");
+    let night = "difference = -6.0\nshare = 0.4\n";
+    assert!(TWO_BINS.contains(night));
+    let mixed = slab(&pca(&TWO_BINS.replace(
+        night,
+        "difference = -6.0\nshare = 0.4\nsubgrade_modulus = 5.0e7\n",
+    )));
+    let stiff = slab(&pca(TWO_BINS));
+    let soft = stiff.replace("modulus = 8.0e7", "modulus = 5.0e7");
+    assert_ne!(soft, stiff);
+    let (m, a, b) = (run(&mixed), run(&stiff), run(&soft));
+    let close = |x: f64, y: f64| (x - y).abs() <= 1e-9 * y.abs().max(1e-300);
+    for (got, want) in [(&m.passes[0], &a.passes[0]), (&m.passes[1], &b.passes[1])] {
+        assert!(close(got.bottom.stress, want.bottom.stress), "{got:?}");
+        assert!(close(got.top.stress, want.top.stress), "{got:?}");
+        let (ge, we) = (
+            got.erosion.expect("erosion"),
+            want.erosion.expect("erosion"),
+        );
+        assert!(close(ge.deflection, we.deflection));
+        assert!(close(
+            ge.allowed.unwrap_or(f64::INFINITY),
+            we.allowed.unwrap_or(f64::INFINITY)
+        ));
+    }
+    // The soft night differs from the stiff one: the test can tell the soils apart.
+    assert!(!close(b.passes[1].top.stress, a.passes[1].top.stress));
+    // On a continuum soil a bin's k is refused, naming it.
+    let halfspace = mixed.replace(
+        "model = \"winkler\"\nmodulus = 8.0e7",
+        "model = \"half-space\"\nyoungs_modulus = 1.0e8\npoissons_ratio = 0.35",
+    );
+    match Problem::from_toml(&halfspace) {
+        Err(liftoff::Error::Invalid { field, .. }) => {
+            assert_eq!(field, "climate.bin[1].subgrade_modulus")
+        }
+        other => panic!("{:?}", other.map(|_| ())),
+    }
+}

@@ -108,6 +108,10 @@ pub struct ClimateBinSpec {
     /// the rest adds its own stress to the faces, as a `temperature-profile` load.
     #[serde(default)]
     pub temperatures: Option<Vec<f64>>,
+    /// The Winkler soil's modulus in this bin, N/m³ (a month's, a season's; absent: the
+    /// scene's). Its zones keep their ratio to it.
+    #[serde(default)]
+    pub subgrade_modulus: Option<f64>,
     /// Share of the traffic that passes in this bin (the shares add up to one).
     pub share: f64,
 }
@@ -178,6 +182,8 @@ pub struct Climate {
     /// A profile's nonlinear part at the top and the bottom face, K ([0, 0] for a difference
     /// or a gradient): its self-equilibrated stress adds to the faces' stresses.
     pub nonlinear: [f64; 2],
+    /// The Winkler soil's modulus in this bin, N/m³ (None: the scene's).
+    pub subgrade_modulus: Option<f64>,
     /// Share of the traffic.
     pub share: f64,
 }
@@ -435,9 +441,13 @@ impl DamagePlan {
                             format!("must be a share ≥ 0 of the traffic, got {}", b.share),
                         ));
                     }
+                    if let Some(m) = b.subgrade_modulus {
+                        positive(&field("subgrade_modulus"), m, "N/m³")?;
+                    }
                     bins.push(Climate {
                         difference,
                         nonlinear,
+                        subgrade_modulus: b.subgrade_modulus,
                         share: b.share,
                     });
                 }
@@ -455,6 +465,7 @@ impl DamagePlan {
             _ => vec![Climate {
                 difference: f64::NAN,
                 nonlinear: [0.0; 2],
+                subgrade_modulus: None,
                 share: 1.0,
             }],
         };

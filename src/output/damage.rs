@@ -277,7 +277,7 @@ pub fn damage_table(title: &str, d: &Damage, files: Option<(usize, &Path)>) -> S
     );
     let _ = writeln!(
         s,
-        "  time       : operators assembled once in {:.3} s; the whole run {:.3} s",
+        "  time       : operators assembled in {:.3} s; the whole run {:.3} s",
         d.assemble_s, d.total_s
     );
     for (what, g) in [

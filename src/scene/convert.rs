@@ -58,6 +58,7 @@ pub fn quantity(
         ("climate.bin", "gradient") => Some(TemperatureGradient),
         ("climate.bin", "depths") => Some(Length),
         ("climate.bin", "temperatures") => Some(Temperature),
+        ("climate.bin", "subgrade_modulus") => Some(SubgradeModulus),
         ("damage", "modulus_of_rupture") => Some(Pressure),
         _ => None,
     }

@@ -598,6 +598,24 @@ fn damage_plan(
             .map(|alpha| ph.rigidity * alpha / (p.thickness * model.load_scale)),
         _ => None,
     };
+    // A bin's own subgrade modulus replaces the Winkler soil's k; other soils have none.
+    if let Some(k) = plan
+        .climate
+        .iter()
+        .position(|c| c.subgrade_modulus.is_some())
+    {
+        if model.groups.foundation() != crate::foundation::FoundationKind::Winkler
+            || model.physical.is_none()
+        {
+            return Err(Error::invalid(
+                format!("climate.bin[{k}].subgrade_modulus"),
+                format!(
+                    "a bin's subgrade modulus replaces a Winkler soil's k in a physical scene; this scene's soil is {}: remove the key",
+                    model.groups.foundation().name()
+                ),
+            ));
+        }
+    }
     // σ_nl = −E α T_nl/(1 − ν), E/(1 − ν) = 12 D (1 + ν)/H³, in units of P/L².
     plan.stress_per_kelvin = match (&file.plate, model.physical) {
         (Some(p), Some(ph)) => p.thermal_expansion.map(|alpha| {

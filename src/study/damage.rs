@@ -47,6 +47,10 @@
 //! a linear temperature load to the scene's own loads. Other axles and gears of the scene do not
 //! act in a group's passes.
 //!
+//! **A climate bin's own subgrade modulus** (a month's k on a Winkler soil) makes its passes
+//! a problem of their own springs: the families of such bins are assembled apart, once per
+//! modulus, and the erosion relation reads the bin's k.
+//!
 //! **No silent partial sums**: a pass with a position that did not converge contributes
 //! nothing, is named in [`Damage::missing`], and the totals say they are incomplete.
 
@@ -63,6 +67,7 @@ use crate::damage::relations::{DamageModel, Mepdg};
 use crate::error::{Error, Result};
 use crate::model::{Load, Model};
 use crate::monitor::{Cases, Monitor};
+use crate::operators::Operators;
 use crate::scene::Problem;
 use crate::solve::Carry;
 
@@ -372,7 +377,8 @@ impl<'a> Setup<'a> {
     }
 }
 
-/// Solve the passes of `which` families on operators assembled once for them.
+/// Solve the passes of `which` families on operators assembled once for them (once per soil
+/// where climate bins have a subgrade modulus of their own).
 fn solve_part(
     problem: &Problem,
     setup: &Setup<'_>,
@@ -389,16 +395,39 @@ fn solve_part(
     } = setup;
     let corners = erosion.as_ref().and_then(|e| e.as_ref().ok());
     let families: Vec<&Vec<usize>> = which.iter().map(|&f| &families[f]).collect();
-    let all: Vec<Model> = families
+    // One assembly per soil: the families of a climate bin with a subgrade modulus of its own
+    // have their own springs; all the others share the scene's.
+    let soil_of = |climate: usize| plan.climate[climate].subgrade_modulus.map(f64::to_bits);
+    let mut soils: Vec<Option<u64>> = families
         .iter()
-        .flat_map(|f| f.iter().flat_map(|&i| passes[i].iter().cloned()))
+        .map(|f| soil_of(bins[f[0]].climate))
         .collect();
-    let base = assemble_for(problem, &all, "positions")?;
+    soils.sort_unstable();
+    soils.dedup();
+    let bases: Vec<Operators> = soils
+        .iter()
+        .map(|soil| {
+            let models: Vec<Model> = families
+                .iter()
+                .filter(|f| soil_of(bins[f[0]].climate) == *soil)
+                .flat_map(|f| f.iter().flat_map(|&i| passes[i].iter().cloned()))
+                .collect();
+            assemble_for(problem, &models, "positions")
+        })
+        .collect::<Result<_>>()?;
+    let base_of = |climate: usize| -> &Operators {
+        let k = soils.iter().position(|s| *s == soil_of(climate));
+        &bases[k.unwrap_or(0)]
+    };
     let assemble_s = t0.elapsed().as_secs_f64();
     let cases = Cases::new(monitor, families.iter().map(|f| f.len()).sum());
     let inner = cases.inner();
     let level = |i: usize| plan.groups[bins[i].group].levels[bins[i].level].load;
-    let solve = |model: &Model, start: Option<&[f64]>, carry: &Carry| -> Result<Position> {
+    let solve = |model: &Model,
+                 base: &Operators,
+                 start: Option<&[f64]>,
+                 carry: &Carry|
+     -> Result<Position> {
         let ops = base.loaded(model);
         match analysis::run_carried(
             model,
@@ -436,7 +465,7 @@ fn solve_part(
                     m.vehicles[k].factor = 0.0;
                     let at = m.vehicles[k].at;
                     m.place(k, at)?;
-                    match solve(&m, None, &Carry::new())? {
+                    match solve(&m, base_of(climate), None, &Carry::new())? {
                         Position::Solved(r) => Ok(Some(c.read(&r.report.field))),
                         Position::Failed(outcome) => Err(Error::numerical(
                             "damage",
@@ -472,6 +501,7 @@ fn solve_part(
                 (0..n).collect()
             };
             let anchor = |j: usize| j == 0 || (ends && j == n - 1);
+            let base = base_of(bins[family[0]].climate);
             // The corners' deflections at rest in this family's climate bin (empty: no
             // erosion), and what a position's deflections there add to them.
             let at_rest: &[f64] = rest
@@ -540,7 +570,7 @@ fn solve_part(
                         ),
                         _ => (own, carries[j].share()),
                     };
-                    let position = solve(&passes[i][p], start.as_deref(), &carry)?;
+                    let position = solve(&passes[i][p], base, start.as_deref(), &carry)?;
                     stress[j].solves += 1;
                     match position {
                         Position::Failed(outcome) => {
@@ -700,8 +730,9 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
                 if s.outcome != RunOutcome::CONVERGED {
                     continue;
                 }
+                let k = plan.climate[bin.climate].subgrade_modulus.unwrap_or(c.k);
                 for (j, (cd, &w)) in corners.iter_mut().zip(&s.corners).enumerate() {
-                    cd.damage += c2 * bin.repetitions / c.allowed(j, w);
+                    cd.damage += c2 * bin.repetitions / c.allowed(j, w, k);
                     cd.deflection = cd.deflection.max(w);
                 }
             }
@@ -750,21 +781,25 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
                 }
             };
             let pass_erosion = match (&erosion, s.outcome == RunOutcome::CONVERGED) {
-                (Some((e, c)), true) => s
-                    .corners
-                    .iter()
-                    .enumerate()
-                    .max_by(|a, b| a.1.total_cmp(b.1))
-                    .map(|(j, &w)| PassErosion {
-                        deflection: w,
-                        x: c.points[j].x,
-                        y: c.points[j].y,
-                        allowed: Some(c.allowed(j, w)).filter(|a| a.is_finite()),
-                        share: e
-                            .governing
-                            .and_then(|g| Some((g, *s.corners.get(g)?)))
-                            .map_or(0.0, |(g, wg)| e.c2 * bin.repetitions / c.allowed(g, wg)),
-                    }),
+                (Some((e, c)), true) => {
+                    let k = plan.climate[bin.climate].subgrade_modulus.unwrap_or(c.k);
+                    s.corners
+                        .iter()
+                        .enumerate()
+                        .max_by(|a, b| a.1.total_cmp(b.1))
+                        .map(|(j, &w)| PassErosion {
+                            deflection: w,
+                            x: c.points[j].x,
+                            y: c.points[j].y,
+                            allowed: Some(c.allowed(j, w, k)).filter(|a| a.is_finite()),
+                            share: e
+                                .governing
+                                .and_then(|g| Some((g, *s.corners.get(g)?)))
+                                .map_or(0.0, |(g, wg)| {
+                                    e.c2 * bin.repetitions / c.allowed(g, wg, k)
+                                }),
+                        })
+                }
                 _ => None,
             };
             Pass {
@@ -913,9 +948,10 @@ impl Kept {
 /// A case in words, for the progress bar and the list of missing passes.
 fn label(plan: &DamagePlan, bin: &Bin) -> String {
     let g = &plan.groups[bin.group];
-    let d = plan.climate[bin.climate].difference;
+    let climate = plan.climate[bin.climate];
+    let d = climate.difference;
     format!(
-        "{} at {:.1} kN, {:.3} m from the edge{}",
+        "{} at {:.1} kN, {:.3} m from the edge{}{}",
         g.load,
         g.levels[bin.level].load / 1e3,
         plan.lateral[bin.lateral].offset,
@@ -923,7 +959,10 @@ fn label(plan: &DamagePlan, bin: &Bin) -> String {
             format!(", ΔT {d:+.1} K")
         } else {
             String::new()
-        }
+        },
+        climate
+            .subgrade_modulus
+            .map_or(String::new(), |k| format!(", k {:.1} MN/m³", k / 1e6))
     )
 }
 
@@ -936,6 +975,10 @@ fn pass_models(base: &Model, plan: &DamagePlan, bin: &Bin) -> Result<Vec<Model>>
     let k = group.vehicle;
     let mut model = base.clone();
     let climate = plan.climate[bin.climate];
+    // A bin's own subgrade modulus: Γ_w = D / (k μ L⁴).
+    if let (Some(k), Some(phys)) = (climate.subgrade_modulus, base.physical) {
+        model.groups.gamma = phys.rigidity / (k * model.groups.mu * phys.half_length.powi(4));
+    }
     let d = climate.difference;
     if d.is_finite() {
         let per_k = plan.curvature_per_kelvin.unwrap_or(0.0);

@@ -122,10 +122,11 @@ impl Corners {
     }
 
     /// The repetitions EB109's erosion relation allows of a deflection `w` (m) caused at
-    /// corner `j`.
-    pub(super) fn allowed(&self, j: usize, w: f64) -> f64 {
+    /// corner `j` on a soil of modulus `k` (N/m³: the scene's [`Self::k`], or a climate bin's
+    /// own).
+    pub(super) fn allowed(&self, j: usize, w: f64, k: f64) -> f64 {
         let h = self.points.get(j).map_or(f64::NAN, |p| p.thickness);
-        self.relation.erosion_repetitions(w, self.k, h)
+        self.relation.erosion_repetitions(w, k, h)
     }
 
     /// The deflection at each corner in a solve's field, m: the node copy of the panel's
@@ -176,7 +177,8 @@ pub struct CornerDamage {
 /// The PCA's erosion damage of a run.
 #[derive(Debug, Clone, Serialize)]
 pub struct Erosion {
-    /// The Winkler modulus the relation read, N/m³.
+    /// The scene's Winkler modulus, N/m³ (a climate bin with a modulus of its own reads
+    /// that one in its passes).
     pub k: f64,
     /// The relation's C1 (the subbase's factor).
     pub c1: f64,
