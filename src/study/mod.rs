@@ -20,6 +20,7 @@ mod critical;
 mod critical_grid;
 mod damage;
 mod damage_part;
+mod damage_pass;
 mod design;
 mod eps_sweep;
 mod erosion;

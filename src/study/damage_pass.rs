@@ -1,0 +1,121 @@
+//! The passes of a damage run ([`super::damage`]): each case's models — the scene's model in
+//! its climate bin (the bin's temperature load, a profile's face stress, the bin's own
+//! subgrade modulus), the group's vehicle at the level's load placed at every position along
+//! the lane — and a case in words for the progress bar and the list of missing passes.
+
+use crate::damage::plan::{Bin, DamagePlan};
+use crate::error::{Error, Result};
+use crate::model::{Load, Model};
+
+/// A case in words, for the progress bar and the list of missing passes.
+pub(super) fn label(plan: &DamagePlan, bin: &Bin) -> String {
+    let g = &plan.groups[bin.group];
+    let climate = plan.climate[bin.climate];
+    let d = climate.difference;
+    format!(
+        "{} at {:.1} kN, {:.3} m from the edge{}{}",
+        g.load,
+        g.levels[bin.level].load / 1e3,
+        plan.lateral[bin.lateral].offset,
+        if d.is_finite() {
+            format!(", ΔT {d:+.1} K")
+        } else {
+            String::new()
+        },
+        climate
+            .subgrade_modulus
+            .map_or(String::new(), |k| format!(", k {:.1} MN/m³", k / 1e6))
+    )
+}
+
+/// The models of one case's pass: the scene's model with its climate bin's temperature load
+/// added, the group's vehicle at the level's load (the other vehicles without load), placed at
+/// `plan.steps` positions along the lane from where its prints enter the slab to where they
+/// leave it, its outer tire's edge at the lateral position's distance from the edge.
+pub(super) fn pass_models(base: &Model, plan: &DamagePlan, bin: &Bin) -> Result<Vec<Model>> {
+    let group = &plan.groups[bin.group];
+    let k = group.vehicle;
+    let mut model = base.clone();
+    let climate = plan.climate[bin.climate];
+    // A bin's own subgrade modulus: Γ_w = D / (k μ L⁴).
+    if let (Some(k), Some(phys)) = (climate.subgrade_modulus, base.physical) {
+        model.groups.gamma = phys.rigidity / (k * model.groups.mu * phys.half_length.powi(4));
+    }
+    let d = climate.difference;
+    if d.is_finite() {
+        let per_k = plan.curvature_per_kelvin.unwrap_or(0.0);
+        model.loads.push(Load::Temperature {
+            curvature: per_k * d,
+        });
+    }
+    // A profile's nonlinear part: its own stress at the faces, the same at every level.
+    if climate.nonlinear != [0.0; 2] {
+        let per_k = plan.stress_per_kelvin.unwrap_or(0.0);
+        model.loads.push(Load::FaceStress {
+            top: per_k * climate.nonlinear[0],
+            bottom: per_k * climate.nonlinear[1],
+        });
+    }
+    for (i, v) in model.vehicles.iter_mut().enumerate() {
+        if i == k {
+            let nominal: f64 = v.wheels.iter().map(|w| w.force).sum();
+            v.factor = group.levels[bin.level].load / nominal;
+        } else {
+            v.factor = 0.0;
+        }
+    }
+    for i in 0..model.vehicles.len() {
+        if i != k {
+            let at = model.vehicles[i].at;
+            model.place(i, at)?;
+        }
+    }
+    let v = &model.vehicles[k];
+    let [a, b] = v.frame.plate;
+    // The prints' extent about the reference point, travelling along x.
+    let tires = v.tires([0.0, 0.0, 0.0])?;
+    let ext = |f: fn(&crate::vehicle::Tire) -> f64, g: fn(f64, f64) -> f64, init: f64| {
+        tires.iter().map(f).fold(init, g)
+    };
+    let x_lo = ext(|t| t.centre[0] - t.size[0] / 2.0, f64::min, f64::INFINITY);
+    let x_hi = ext(
+        |t| t.centre[0] + t.size[0] / 2.0,
+        f64::max,
+        f64::NEG_INFINITY,
+    );
+    let y_lo = ext(|t| t.centre[1] - t.size[1] / 2.0, f64::min, f64::INFINITY);
+    let y_hi = ext(
+        |t| t.centre[1] + t.size[1] / 2.0,
+        f64::max,
+        f64::NEG_INFINITY,
+    );
+    // Inside the plate by a hair, as critical's grid keeps its prints.
+    let (gap_x, gap_y) = (1e-9 * a, 1e-9 * b);
+    let offset = plan.lateral[bin.lateral].offset;
+    let (y_min, y_max) = (-b / 2.0 - y_lo + gap_y, b / 2.0 - y_hi - gap_y);
+    if y_min > y_max || x_hi - x_lo >= a {
+        return Err(Error::invalid(
+            format!("traffic.group[{}].load", bin.group),
+            format!(
+                "the prints of `{}` do not fit on the {a} m × {b} m plate",
+                group.load
+            ),
+        ));
+    }
+    let y = if plan.lower_edge {
+        -b / 2.0 + offset - y_lo
+    } else {
+        b / 2.0 - offset - y_hi
+    }
+    .clamp(y_min, y_max);
+    let (x0, x1) = (-a / 2.0 - x_lo + gap_x, a / 2.0 - x_hi - gap_x);
+    let steps = plan.steps.unwrap_or((base.elements[0] + 1).clamp(3, 401));
+    (0..steps)
+        .map(|s| {
+            let x = x0 + (x1 - x0) * s as f64 / (steps - 1) as f64;
+            let mut m = model.clone();
+            m.place(k, [x, y, 0.0])?;
+            Ok(m)
+        })
+        .collect()
+}
