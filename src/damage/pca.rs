@@ -39,9 +39,9 @@ use crate::units::{INCH, POUND_FORCE};
 /// (*Pavement Analysis and Design*, 2nd ed., 2004, the PCA method), whose worked example
 /// (k = 100 pci, h = 8 in: w = 0.0353 in gives log N = 6.444 for a single axle, 0.0458 in
 /// gives 5.541 for a tandem, with C1 = 1) the tests check to its printed digits; it was not
-/// read in EB109 itself. EB109's C2 (0.06 without a concrete shoulder, 0.94 with a tied one) stands for the
-/// share of trucks whose wheels run at the corner with the corner deflection of a wheel at
-/// the corner. liftoff computes the corner deflection at every lateral position of the wander,
+/// read in EB109 itself. EB109's C2 (0.06 without a concrete shoulder, 0.94 with a tied one)
+/// stands for the share of trucks whose wheels run at the corner, applied to the deflection of
+/// a wheel at the corner. liftoff computes the corner deflection at every lateral position of the wander,
 /// each with its share of the traffic, and models the shoulder's joint: both are already in
 /// its sums, so C2 is 1 by default (key `erosion_c2`; 0.06 or 0.94 reproduce EB109 with one
 /// lateral position at the edge).
