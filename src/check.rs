@@ -63,3 +63,44 @@ pub(crate) fn rect_range(
     }
     Ok([ua.max(-half), ub.min(half)])
 }
+
+/// A temperature profile's points (a `temperature-profile` load, a climate bin): at least two
+/// depths, one finite temperature each, the depths increasing from 0 (the top surface) — to
+/// `bottom` when it is given (the plate's thickness), both ends to 1e-6 of the last depth.
+/// `field` names the key: `field("depths")`, `field("temperatures")`.
+pub(crate) fn profile(
+    field: &dyn Fn(&str) -> String,
+    depths: &[f64],
+    temps: &[f64],
+    bottom: Option<f64>,
+) -> Result<()> {
+    if depths.len() != temps.len() || depths.len() < 2 {
+        return Err(Error::invalid(
+            field("temperatures"),
+            format!(
+                "give one temperature per depth, at least two: {} depths, {} temperatures",
+                depths.len(),
+                temps.len()
+            ),
+        ));
+    }
+    if let Some(t) = temps.iter().find(|t| !t.is_finite()) {
+        return Err(Error::invalid(
+            field("temperatures"),
+            format!("must be finite, got {t}"),
+        ));
+    }
+    let last = depths[depths.len() - 1];
+    let tol = 1e-6 * bottom.unwrap_or(last).abs();
+    let ends = depths[0].abs() <= tol && bottom.is_none_or(|h| (last - h).abs() <= tol);
+    if !depths.iter().all(|d| d.is_finite()) || depths.windows(2).any(|w| w[1] <= w[0]) || !ends {
+        let to = bottom.map_or(String::new(), |h| {
+            format!(" to the plate's thickness {h} m")
+        });
+        return Err(Error::invalid(
+            field("depths"),
+            format!("must increase from 0 (the top surface){to}, got {depths:?}"),
+        ));
+    }
+    Ok(())
+}

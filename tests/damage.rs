@@ -69,6 +69,36 @@ fn run(text: &str) -> Damage {
     damage(&p, &Monitor::NONE).expect("damage")
 }
 
+/// Both damage maps of `a` equal `b`'s to 1e-9 of `b`'s largest damage (the solver's
+/// tolerance between two runs of one problem, ~1e-10 of the stresses, raised to the relation's
+/// power), and `b` has damage somewhere.
+fn same_maps(a: &Damage, b: &Damage) {
+    let scale = b
+        .bottom
+        .iter()
+        .chain(&b.top)
+        .fold(0.0_f64, |m, v| m.max(*v));
+    assert!(scale > 0.0);
+    for (x, y) in a
+        .bottom
+        .iter()
+        .zip(&b.bottom)
+        .chain(a.top.iter().zip(&b.top))
+    {
+        assert!((x - y).abs() <= 1e-9 * scale, "{x} vs {y}");
+    }
+}
+
+/// `slab`'s scene marked as US with the plate's sides and thickness in inches (the values the
+/// caller converts besides are its own).
+fn us_plate(text: &str) -> String {
+    let inch = 0.0254;
+    text.replace("title = \"slab\"", "title = \"slab\"\nunits = \"us\"")
+        .replace("length = 4.5", &format!("length = {}", 4.5 / inch))
+        .replace("width = 3.6", &format!("width = {}", 3.6 / inch))
+        .replace("thickness = 0.25", &format!("thickness = {}", 0.25 / inch))
+}
+
 /// The MEPDG's allowed repetitions, written out from the Manual of Practice's relation as
 /// issue 33 pins it: log10 N = 2.0 (MR/σ)^1.22 + 0.4371.
 fn mepdg_n(stress: f64, mr: f64) -> f64 {
@@ -197,11 +227,7 @@ fn a_us_plan_is_its_si_twin() {
     const LBF: f64 = 4.448_221_615_260_5;
     let psi = LBF / (IN * IN);
     let si = slab(TWO_BINS);
-    let us = si
-        .replace("title = \"slab\"", "title = \"slab\"\nunits = \"us\"")
-        .replace("length = 4.5", &format!("length = {}", 4.5 / IN))
-        .replace("width = 3.6", &format!("width = {}", 3.6 / IN))
-        .replace("thickness = 0.25", &format!("thickness = {}", 0.25 / IN))
+    let us = us_plate(&si)
         .replace(
             "youngs_modulus = 30e9",
             &format!("youngs_modulus = {}", 30e9 / psi),
@@ -224,20 +250,7 @@ fn a_us_plan_is_its_si_twin() {
             &format!("modulus_of_rupture = {}", 4.5e6 / psi),
         );
     let (a, b) = (run(&us), run(&si));
-    let scale = b
-        .bottom
-        .iter()
-        .chain(&b.top)
-        .fold(0.0_f64, |m, v| m.max(*v));
-    assert!(scale > 0.0);
-    for (x, y) in a
-        .bottom
-        .iter()
-        .zip(&b.bottom)
-        .chain(a.top.iter().zip(&b.top))
-    {
-        assert!((x - y).abs() <= 1e-9 * scale, "{x} vs {y}");
-    }
+    same_maps(&a, &b);
     let r = a.reported();
     assert!((r.governing_bottom.x * IN - b.governing_bottom.x).abs() < 1e-9);
     assert!((r.rupture - 4.5e6 / psi).abs() < 1e-9 * r.rupture);
@@ -368,20 +381,7 @@ fn levels_are_interpolated_exactly_where_the_contact_sets_agree() {
         "lift-off moves: all solved"
     );
     assert_eq!(fast.interpolated, 15);
-    let scale = direct
-        .bottom
-        .iter()
-        .chain(&direct.top)
-        .fold(0.0_f64, |m, v| m.max(*v));
-    assert!(scale > 0.0);
-    for (a, b) in fast
-        .bottom
-        .iter()
-        .zip(&direct.bottom)
-        .chain(fast.top.iter().zip(&direct.top))
-    {
-        assert!((a - b).abs() <= 1e-9 * scale, "{a} vs {b}");
-    }
+    same_maps(&fast, &direct);
 }
 
 /// No silent partial sums: a cap on the penalty steps that settles the day-curling pass but not
@@ -498,18 +498,10 @@ fn a_gradient_bin_is_its_difference_at_the_slabs_thickness() {
     let diffs = |d: &Damage| d.passes.iter().map(|p| p.difference).collect::<Vec<_>>();
     assert_eq!(diffs(&b), vec![Some(8.0), Some(-6.0)]);
     // In a US scene the gradient is in °F/in: 32 K/m = 32 × 1.8 × 0.0254 °F/in.
-    let us = slab(&graded)
-        .replace("title = \"slab\"", "title = \"slab\"\nunits = \"us\"")
-        .replace("length = 4.5", &format!("length = {}", 4.5 / 0.0254))
-        .replace("width = 3.6", &format!("width = {}", 3.6 / 0.0254))
-        .replace(
-            "thickness = 0.25",
-            &format!("thickness = {}", 0.25 / 0.0254),
-        )
-        .replace(
-            "gradient = 32.0",
-            &format!("gradient = {}", 32.0 * 1.8 * 0.0254),
-        );
+    let us = us_plate(&slab(&graded)).replace(
+        "gradient = 32.0",
+        &format!("gradient = {}", 32.0 * 1.8 * 0.0254),
+    );
     let p = Problem::from_toml(&us).expect("scene");
     let first = p.damage.expect("plan").climate[0].difference;
     assert!((first - 8.0).abs() < 1e-12, "US gradient: {first} K");
@@ -549,29 +541,9 @@ fn a_profile_bin_is_the_scenes_profile_load() {
         &format!("[[load]]\nkind = \"temperature-profile\"\n{profile}[[load]]\nkind = \"axle\""),
     );
     let (a, b) = (run(&binned), run(&loaded));
-    let scale = b
-        .bottom
-        .iter()
-        .chain(&b.top)
-        .fold(0.0_f64, |m, v| m.max(*v));
-    assert!(scale > 0.0);
-    for (x, y) in a
-        .bottom
-        .iter()
-        .zip(&b.bottom)
-        .chain(a.top.iter().zip(&b.top))
-    {
-        assert!((x - y).abs() <= 1e-9 * scale, "{x} vs {y}");
-    }
+    same_maps(&a, &b);
     // In a US scene: depths in inches, temperatures in °F; the same parts in K.
-    let us = binned
-        .replace("title = \"slab\"", "title = \"slab\"\nunits = \"us\"")
-        .replace("length = 4.5", &format!("length = {}", 4.5 / 0.0254))
-        .replace("width = 3.6", &format!("width = {}", 3.6 / 0.0254))
-        .replace(
-            "thickness = 0.25",
-            &format!("thickness = {}", 0.25 / 0.0254),
-        )
+    let us = us_plate(&binned)
         .replace(
             "depths = [0.0, 0.05, 0.125, 0.25]",
             &format!(

@@ -397,7 +397,7 @@ impl DamagePlan {
                     let mut nonlinear = [0.0; 2];
                     let difference = match (b.difference, b.gradient, thickness, profile) {
                         (_, _, _, Some((depths, temps))) => {
-                            check_profile(&field, depths, temps)?;
+                            crate::check::profile(&field, depths, temps, None)?;
                             let (d, nl) = split(depths, temps);
                             nonlinear = nl;
                             d
@@ -551,37 +551,6 @@ impl DamagePlan {
         }
         out
     }
-}
-
-/// A climate bin's profile: at least two depths, one temperature each, all finite, the depths
-/// increasing from 0.
-fn check_profile(field: &dyn Fn(&str) -> String, depths: &[f64], temps: &[f64]) -> Result<()> {
-    if depths.len() < 2 || depths.len() != temps.len() {
-        return Err(Error::invalid(
-            field("temperatures"),
-            format!(
-                "give one temperature per depth, at least two: {} depths, {} temperatures",
-                depths.len(),
-                temps.len()
-            ),
-        ));
-    }
-    if let Some(t) = temps.iter().find(|t| !t.is_finite()) {
-        return Err(Error::invalid(
-            field("temperatures"),
-            format!("must be finite, got {t}"),
-        ));
-    }
-    if depths[0] != 0.0
-        || !depths.iter().all(|d| d.is_finite())
-        || depths.windows(2).any(|w| w[1] <= w[0])
-    {
-        return Err(Error::invalid(
-            field("depths"),
-            format!("must increase from 0 (the top surface), m, got {depths:?}"),
-        ));
-    }
-    Ok(())
 }
 
 fn positive(field: &str, v: f64, unit: &str) -> Result<()> {

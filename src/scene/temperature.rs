@@ -163,30 +163,8 @@ pub(super) fn profile(spec: &LoadSpec, k: usize, h: f64) -> Result<ProfileParts>
             "missing: the temperatures at `depths`, °C",
         )
     })?;
-    if depths.len() != temps.len() || depths.len() < 2 {
-        return Err(Error::invalid(
-            field("temperatures"),
-            format!(
-                "give one temperature per depth, at least two: {} depths, {} temperatures",
-                depths.len(),
-                temps.len()
-            ),
-        ));
-    }
-    if let Some(t) = temps.iter().find(|t| !t.is_finite()) {
-        return Err(Error::invalid(
-            field("temperatures"),
-            format!("must be finite, got {t}"),
-        ));
-    }
+    crate::check::profile(&field, depths, temps, Some(h))?;
     let tol = 1e-6 * h;
-    let ends = (depths[0] - 0.0).abs() <= tol && (depths[depths.len() - 1] - h).abs() <= tol;
-    if !depths.iter().all(|d| d.is_finite()) || depths.windows(2).any(|w| w[1] <= w[0]) || !ends {
-        return Err(Error::invalid(
-            field("depths"),
-            format!("must increase from 0 (the top surface) to the plate's thickness {h} m, got {depths:?}"),
-        ));
-    }
     // The last depth is the thickness to round-off: take it exactly.
     let mut d = depths.to_vec();
     d[0] = 0.0;
