@@ -712,10 +712,12 @@ fn backcalc(
 }
 
 /// The AREA method on one basin (`liftoff::backcalc::area_method`): (AREA m, ℓ m, subgrade
-/// modulus — k N/m³ or E_s Pa —, slab modulus Pa). `soil_poisson` None: a dense liquid;
-/// a value: an elastic solid of that Poisson's ratio.
+/// modulus — k N/m³ or E_s Pa —, slab modulus Pa, corrected). `soil_poisson` None: a dense
+/// liquid; a value: an elastic solid of that Poisson's ratio. `slab_size` (dense liquid): the
+/// square slab's side, for Crovetti's correction (`liftoff::backcalc::finite_slab`);
+/// `corrected` says whether it applied.
 #[pyfunction]
-#[pyo3(signature = (offsets, deflections, load, radius, thickness, poisson, soil_poisson=None))]
+#[pyo3(signature = (offsets, deflections, load, radius, thickness, poisson, soil_poisson=None, slab_size=None))]
 #[allow(clippy::too_many_arguments)]
 fn area_method(
     py: Python<'_>,
@@ -726,7 +728,8 @@ fn area_method(
     thickness: f64,
     poisson: f64,
     soil_poisson: Option<f64>,
-) -> PyResult<(f64, f64, f64, f64)> {
+    slab_size: Option<f64>,
+) -> PyResult<(f64, f64, f64, f64, bool)> {
     use liftoff::backcalc::{Basin, Subgrade};
     let subgrade = match soil_poisson {
         None => Subgrade::DenseLiquid,
@@ -738,10 +741,17 @@ fn area_method(
         offsets,
         deflections,
     };
-    let r = run(py, None, |_| {
-        liftoff::backcalc::area_method(&basin, thickness, poisson, subgrade)
+    let r = run(py, None, |_| match slab_size {
+        Some(size) => liftoff::backcalc::finite_slab(&basin, thickness, poisson, size),
+        None => liftoff::backcalc::area_method(&basin, thickness, poisson, subgrade),
     })?;
-    Ok((r.area, r.ell, r.subgrade_modulus, r.slab_modulus))
+    Ok((
+        r.area,
+        r.ell,
+        r.subgrade_modulus,
+        r.slab_modulus,
+        r.finite.is_some(),
+    ))
 }
 
 /// How many positions `critical` has for these options.

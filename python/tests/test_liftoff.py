@@ -1020,6 +1020,44 @@ def test_area_method_recovers_a_kirchhoff_basin_and_names_bad_data():
     assert err.value.field == "basin.load"
 
 
+def test_area_method_corrects_to_a_finite_slab_by_crovettis_factors():
+    """Crovetti's finite-slab correction (``slab_size``) applied to the same Kirchhoff basin as
+    above, written out here from the published factors (Khazanovich et al. 2001, quoting
+    Crovetti 1994): ℓ = AF_ℓ ℓ_est (to 1e-9, round-off) and, under a point load (f(0) = 1/8
+    whatever ℓ), k = k_est / (AF_d0 AF_ℓ²), E = 12 (1 − ν²) k ℓ⁴ / h³ — to 1e-6: the library's
+    1 mm disk changes f(0) by order (a/ℓ)² ln(ℓ/a) ≈ 1e-5, and its change between the two ℓ
+    is 8e-8.
+    A slab of 100 m changes nothing; one under 3 ℓ is left uncorrected; the elastic solid has
+    no such correction and says so by the field's name."""
+    h, nu, e, k = 0.25, 0.15, 30e9, 8.0e7
+    ell = (e * h**3 / (12 * (1 - nu**2)) / k) ** 0.25
+    offsets = [0.0, 0.305, 0.610, 0.914]
+    # Any falling basin serves: the correction acts on the infinite slab's reading.
+    w = [100e-6 * math.exp(-r / (2 * ell)) for r in offsets]
+    args = dict(load=40e3, radius=0.001, thickness=h, poisson=nu)
+    inf = liftoff.area_method(offsets, w, **args)
+    assert inf["corrected"] is False
+    size = 4.0
+    ratio = size / inf["ell"]
+    af_d0 = 1 - 1.15085 * math.exp(-0.71878 * ratio**0.80151)
+    af_ell = 1 - 0.89434 * math.exp(-0.61662 * ratio**1.04831)
+    fin = liftoff.area_method(offsets, w, slab_size=size, **args)
+    assert fin["corrected"] is True
+    assert fin["ell"] == pytest.approx(af_ell * inf["ell"], rel=1e-9)
+    kc = inf["subgrade_modulus"] / (af_d0 * af_ell**2)
+    assert fin["subgrade_modulus"] == pytest.approx(kc, rel=1e-6)
+    assert fin["slab_modulus"] == pytest.approx(
+        12 * (1 - nu**2) * kc * fin["ell"] ** 4 / h**3, rel=1e-6)
+    big = liftoff.area_method(offsets, w, slab_size=100.0, **args)
+    assert big["corrected"] and big["subgrade_modulus"] == pytest.approx(
+        inf["subgrade_modulus"], rel=1e-9)
+    small = liftoff.area_method(offsets, w, slab_size=2.5 * inf["ell"], **args)
+    assert small["corrected"] is False and small["ell"] == inf["ell"]
+    with pytest.raises(liftoff.SceneError) as err:
+        liftoff.area_method(offsets, w, slab_size=4.0, subgrade="elastic-solid", **args)
+    assert err.value.field == "slab_size"
+
+
 def test_backcalc_recovers_the_bundled_surveys_moduli_as_the_cli():
     """The bundled survey (examples/fwd-basins.csv) is synthetic: liftoff's model of
     example:fwd-panel at E = 32 GPa and k = 70 MN/m³ (45 at station 3+000) with 1 µm of noise
@@ -1039,6 +1077,8 @@ def test_backcalc_recovers_the_bundled_surveys_moduli_as_the_cli():
         assert row["static_k"] == pytest.approx(0.5 * row["subgrade"])
         assert row["fitted"].shape == row["measured"].shape == (9,)
     assert r[0]["area_subgrade"] is not None and r[1]["area_subgrade"] is None
+    # The interior drop's AREA reading is corrected to the panel's 4.6 m × 3.7 m.
+    assert r[0]["area_slab_size"] == pytest.approx(math.sqrt(4.6 * 3.7), rel=1e-12)
     assert r.meta["discarded"] == 3
     again = liftoff.backcalc(path.read_text(), "example:fwd-panel", seating=1)
     assert [row["subgrade"] for row in again] == [row["subgrade"] for row in r]

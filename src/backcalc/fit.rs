@@ -33,17 +33,16 @@
 //! the modulus, symmetric in its logarithm, where the model is nearly linear. With as many
 //! sensors as unknowns there is no interval.
 
-use super::area::{area_method, AreaResult, AREA_OFFSETS};
+use super::area::AreaResult;
 use super::basins::{Drop, Location};
-use super::infinite::Subgrade;
+use super::template::{area_reading, nearest_joint};
 use crate::entry::{run, Outcome};
 use crate::error::{Error, Result};
 use crate::foundation::soil::KeyValue;
-use crate::foundation::FoundationKind;
 use crate::layout::JointType;
 use crate::method::Contact;
 use crate::monitor::Monitor;
-use crate::scene::{Coord, JointSpec, LoadKind, LoadSpec, SceneFile};
+use crate::scene::{Coord, LoadKind, LoadSpec, SceneFile};
 use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt, TerminationReason};
 use nalgebra_lm::{DMatrix, DVector, Dyn, Owned};
 use rayon::prelude::*;
@@ -651,61 +650,6 @@ pub(super) fn prepare<'m>(
         monitor,
         solves: std::sync::atomic::AtomicUsize::new(0),
     })
-}
-
-/// The template's joint line nearest `at`, with its index.
-pub fn nearest_joint(template: &SceneFile, at: [f64; 2]) -> Option<(usize, &JointSpec)> {
-    let distance = |j: &JointSpec| match (j.x, j.y) {
-        (Some(x), _) => (x - at[0]).abs(),
-        (None, Some(y)) => (y - at[1]).abs(),
-        _ => f64::INFINITY,
-    };
-    template
-        .joint
-        .iter()
-        .enumerate()
-        .min_by(|a, b| distance(a.1).total_cmp(&distance(b.1)))
-}
-
-/// The AREA method's reading of `drop` on the template's slab and soil, where it applies: an
-/// interior drop with the four AREA sensors, on springs (dense liquid) or a half-space (elastic
-/// solid).
-pub fn area_reading(template: &SceneFile, drop: &Drop) -> Option<AreaResult> {
-    if drop.location != Location::Interior {
-        return None;
-    }
-    let plate = template.plate.as_ref()?;
-    let soil = template.foundation.as_ref()?;
-    let subgrade = match soil.model {
-        FoundationKind::Winkler => Subgrade::DenseLiquid,
-        FoundationKind::HalfSpace => Subgrade::ElasticSolid {
-            poisson: soil.number("poissons_ratio")?,
-        },
-        _ => return None,
-    };
-    let has = |o: f64| drop.basin.offsets.iter().any(|x| (x - o).abs() < 0.01);
-    if !AREA_OFFSETS.iter().all(|&o| has(o)) {
-        return None;
-    }
-    area_method(&drop.basin, plate.thickness, plate.poissons_ratio, subgrade).ok()
-}
-
-/// Check a template before any drop is fitted: the scene's own checks, with a small disk at
-/// the centre standing in for the drops when the template has no loads of its own (a
-/// backcalculation's template needs none: the drops are its loads).
-pub fn check_template(template: &SceneFile) -> Result<()> {
-    let mut f = template.clone();
-    if f.load.is_empty() {
-        if let Some(p) = template.plate.as_ref() {
-            let mut disk = LoadSpec::new(LoadKind::Circle);
-            disk.x = Some(Coord::Value(0.0));
-            disk.y = Some(Coord::Value(0.0));
-            disk.radius = Some(0.01 * p.length.min(p.width));
-            disk.force = Some(1.0);
-            f.load.push(disk);
-        }
-    }
-    f.validate().map(|_| ())
 }
 
 /// The model's basin for `drop` at the template's own moduli: what the fit compares with the

@@ -4,25 +4,31 @@
 //! inverts them; `basins.rs` the drops as a CSV file reads them; `fit.rs` the least-squares
 //! fit of a drop on liftoff's own finite model (a template scene), with confidence intervals;
 //! `transfer.rs` a joint drop's load transfer on that model; `survey.rs` every drop of a file,
-//! in parallel. `infinite`, `area` and `basins` import only `error` and `units`; `fit` imports
-//! them and the entry point (`entry::run`) it solves through; `transfer` imports `fit`;
-//! `survey` imports both.
+//! in parallel; `template.rs` what the template scene says of a drop before any fit (its
+//! panel, the nearest joint, the AREA reading corrected to the panel's size). `infinite`,
+//! `area` and `basins` import only `error` and `units`; `template` imports them and the
+//! scene; `fit` imports them, `template` and the entry point (`entry::run`) it solves
+//! through; `transfer` imports `fit`; `survey` imports both.
 
 pub mod area;
 pub mod basins;
 pub mod fit;
 pub mod infinite;
 pub mod survey;
+pub mod template;
 pub mod transfer;
 
-pub use area::{area_method, AreaResult, Basin, AREA_OFFSETS};
+pub use area::{
+    area_method, crovetti_factors, finite_slab, AreaResult, Basin, FiniteSlab, AREA_OFFSETS,
+    FINITE_SLAB_MIN_RATIO,
+};
 pub use basins::{read_basins, Drop, Location};
 pub use fit::{
-    area_reading, check_template, fit_drop, model_basin, nearest_joint, student_t975, Estimate,
-    Fit, FitOptions, Termination, Unknown,
+    fit_drop, model_basin, student_t975, Estimate, Fit, FitOptions, Termination, Unknown,
 };
 pub use infinite::{dimensionless_deflection, Subgrade};
 pub use survey::{
     intercepts, survey, BackcalcMethod, DropResult, Intercept, Survey, SurveyOptions,
 };
+pub use template::{area_reading, check_template, nearest_joint, panel_size};
 pub use transfer::{load_transfer, LoadTransfer};

@@ -20,7 +20,8 @@ use rayon::prelude::*;
 
 use super::area::AreaResult;
 use super::basins::{Drop, Location};
-use super::fit::{area_reading, fit_drop, Fit, FitOptions, Unknown};
+use super::fit::{fit_drop, Fit, FitOptions, Unknown};
+use super::template::area_reading;
 use super::transfer::{load_transfer, LoadTransfer};
 use crate::error::{Error, Result};
 use crate::monitor::{Cases, Monitor};

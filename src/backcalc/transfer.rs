@@ -3,7 +3,8 @@
 //! slab without that joint, at the fitted moduli ([`load_transfer`]).
 
 use super::basins::{Drop, Location};
-use super::fit::{model_basin, nearest_joint, prepare, Fit, FitOptions, Unknown};
+use super::fit::{model_basin, prepare, Fit, FitOptions, Unknown};
+use super::template::nearest_joint;
 use crate::error::Result;
 use crate::foundation::soil::KeyValue;
 use crate::monitor::Monitor;

@@ -86,7 +86,7 @@ fn opt(v: Option<f64>) -> String {
 fn csv_drops(s: &Survey, u: &Units) -> String {
     let (sg, sgu) = subgrade(s, u);
     let mut out = format!(
-        "station,drop,location,load [{l}],{sg} [{k}],{sg}_low [{k}],{sg}_high [{k}],static_k [{ku}],E [{m}],E_low [{m}],E_high [{m}],ell [{len}],void [{d}],void_low [{d}],void_high [{d}],joint [{m}],joint_low [{m}],joint_high [{m}],lte [-],bending [-],lte_corrected [-],lte_model [-],area_{sg} [{k}],area_E [{m}],area_ell [{len}],rms [{d}],largest [{d}],largest_at [{o}],solves,converged,termination\n",
+        "station,drop,location,load [{l}],{sg} [{k}],{sg}_low [{k}],{sg}_high [{k}],static_k [{ku}],E [{m}],E_low [{m}],E_high [{m}],ell [{len}],void [{d}],void_low [{d}],void_high [{d}],joint [{m}],joint_low [{m}],joint_high [{m}],lte [-],bending [-],lte_corrected [-],lte_model [-],area_{sg} [{k}],area_E [{m}],area_ell [{len}],area_slab_size [{len}],rms [{d}],largest [{d}],largest_at [{o}],solves,converged,termination\n",
         l = u.load.0,
         k = sgu.0,
         ku = u.k.0,
@@ -107,7 +107,7 @@ fn csv_drops(s: &Survey, u: &Units) -> String {
         let f = r.fit.as_ref();
         let _ = writeln!(
             out,
-            "{},{},{},{:.6e},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{:.6e},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.station,
             r.drop,
             r.location,
@@ -133,6 +133,7 @@ fn csv_drops(s: &Survey, u: &Units) -> String {
             opt(r.area.map(|a| sgu.of(a.subgrade_modulus))),
             opt(r.area.map(|a| u.modulus.of(a.slab_modulus))),
             opt(r.area.map(|a| u.length.of(a.ell))),
+            opt(r.area.and_then(|a| a.finite).map(|c| u.length.of(c.size))),
             opt(f.map(|f| u.deflection.of(f.rms))),
             opt(f.map(|f| u.deflection.of(f.largest.0))),
             opt(f.map(|f| u.offset.of(f.largest.1))),
@@ -405,6 +406,16 @@ pub fn backcalc_table(
                 Some(f) => format!("NOT CONVERGED ({}): best point shown", f.termination),
                 None => "AREA".into(),
             }
+        );
+    }
+    if let Some(c) = s.drops.iter().find_map(|r| r.area.and_then(|a| a.finite)) {
+        let _ = writeln!(
+            out,
+            "  AREA {sg} corrected to the panel's size (Crovetti 1994; {} {} square: AF_d0 {:.3}, AF_ℓ {:.3}); the infinite slab's reading is in backcalc.json",
+            short(u.length.of(c.size)),
+            u.length.0,
+            c.deflection_factor,
+            c.ell_factor
         );
     }
     for r in &s.drops {

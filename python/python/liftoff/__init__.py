@@ -401,24 +401,32 @@ def area_method(
     poisson: float = 0.15,
     subgrade: str = "dense-liquid",
     soil_poisson: float = 0.4,
+    slab_size: Optional[float] = None,
 ) -> Dict[str, float]:
     """The AREA method on one deflection basin (SI: m, N): the infinite slab's radius of
     relative stiffness from the basin's shape, then the subgrade's and the slab's moduli
     (docs/METHODS.md, "Backcalculation"). ``offsets`` must include the sensors at 0, 305, 610
     and 914 mm; ``subgrade`` is ``"dense-liquid"`` (k) or ``"elastic-solid"`` (E_s, with
     ``soil_poisson``). Returns ``area`` (m) and ``area_in`` (in), ``ell`` (m),
-    ``subgrade_modulus`` (k in N/m³, or E_s in Pa) and ``slab_modulus`` (Pa). A basin without
-    those sensors, deflections that grow away from the load or a load that is not positive
-    raise :class:`SceneError` naming the field."""
+    ``subgrade_modulus`` (k in N/m³, or E_s in Pa) and ``slab_modulus`` (Pa). ``slab_size``
+    (m, dense liquid only): the side of the square slab the load stood at the centre of
+    (√(L₁ L₂) of a rectangle); the reading is then corrected by Crovetti's factors (1994), and
+    ``corrected`` says whether it was (not below L/ℓ = 3). A basin without those sensors,
+    deflections that grow away from the load or a load that is not positive raise
+    :class:`SceneError` naming the field."""
     if subgrade not in ("dense-liquid", "elastic-solid"):
         raise SceneError(f"`{subgrade}`: subgrade must be dense-liquid or elastic-solid",
                          "invalid", "subgrade")
     nu_s = soil_poisson if subgrade == "elastic-solid" else None
-    area, ell, modulus, slab = _core.area_method(
+    if slab_size is not None and nu_s is not None:
+        raise SceneError("slab_size: the finite-slab correction is for a dense liquid only",
+                         "invalid", "slab_size")
+    area, ell, modulus, slab, corrected = _core.area_method(
         [float(o) for o in offsets], [float(d) for d in deflections], float(load),
-        float(radius), float(thickness), float(poisson), nu_s)
+        float(radius), float(thickness), float(poisson), nu_s,
+        None if slab_size is None else float(slab_size))
     return {"area": area, "area_in": area / 0.0254, "ell": ell,
-            "subgrade_modulus": modulus, "slab_modulus": slab}
+            "subgrade_modulus": modulus, "slab_modulus": slab, "corrected": corrected}
 
 
 def backcalc(
@@ -455,7 +463,9 @@ def backcalc(
     interval), ``slab`` with its interval, ``void`` (m) and ``joint`` (N/m²) with theirs,
     ``ell`` with its interval, ``static_k``, for joint drops the load transfer (``lte``,
     ``bending``, ``lte_corrected``, ``lte_model``), the AREA
-    reading (``area_subgrade``, ``area_slab``, ``area_ell``), ``rms``, ``largest``,
+    reading (``area_subgrade``, ``area_slab``, ``area_ell``; on springs corrected to the
+    panel's size, ``area_slab_size`` m, by Crovetti's factors, None where uncorrected; the
+    infinite slab's reading in ``meta``'s drops), ``rms``, ``largest``,
     ``largest_at``, ``solves``, ``converged``, ``termination``, and the basins as NumPy arrays
     ``offsets``, ``measured`` and ``fitted``. ``meta`` holds the rest of backcalc.json, among it ``intercepts`` (the
     intercept method at each station with several loads: ``intercept`` m, ``slope`` m/N,
@@ -514,6 +524,7 @@ def backcalc(
         row["area_subgrade"] = a["subgrade_modulus"] if a else None
         row["area_slab"] = a["slab_modulus"] if a else None
         row["area_ell"] = a["ell"] if a else None
+        row["area_slab_size"] = a["finite"]["size"] if a and a.get("finite") else None
         if f is not None:
             row.update(rms=f["rms"], largest=f["largest"][0], largest_at=f["largest"][1],
                        solves=f["solves"], converged=f["converged"],
