@@ -737,6 +737,11 @@ fn e71_e72_damage_inputs_are_refused_naming_the_key() {
             "depths = [0.0, 0.25]\ntemperatures = [20.0]",
             "scene field `climate.bin[1].temperatures`: give one temperature per depth, at least two",
         ),
+        (
+            "model = \"mepdg\"",
+            "model = \"mepdg\"\nrupture_growth = \"aci\"",
+            "scene field `damage.rupture_growth`: `aci` is not a growth of the modulus of rupture",
+        ),
     ] {
         assert!(scene.contains(from), "{from}");
         for command in ["damage", "solve"] {

@@ -10,7 +10,8 @@
 //! 1984, the MEPDG's JPCP cracking (AASHTO Manual of Practice, 2008) and FAARFIELD's rigid
 //! failure model, with Miner's sum. What liftoff computes a stress from is not their business:
 //! none applies an edge-stress factor or a load-transfer reduction, since liftoff models the
-//! joints and their load transfer itself.
+//! joints and their load transfer itself. [`strength`] grows the modulus of rupture with
+//! age (the MEPDG's relation), month by month over the life, when the scene asks.
 
 pub mod faa;
 mod keys;
@@ -18,3 +19,4 @@ pub mod mepdg;
 pub mod pca;
 pub mod plan;
 pub mod relations;
+pub mod strength;

@@ -13,6 +13,7 @@
 
 use serde::Deserialize;
 
+use crate::damage::strength::AgeSchedule;
 use crate::error::{Error, Result};
 
 /// How a climate bin's profile (depths, temperatures) splits: its equivalent linear difference
@@ -122,8 +123,12 @@ pub struct ClimateBinSpec {
 pub struct DamageSpec {
     /// The fatigue relation: `pca`, `mepdg` or `faa`.
     pub model: String,
-    /// Modulus of rupture (flexural strength) of the concrete, Pa.
+    /// Modulus of rupture (flexural strength) of the concrete at 28 days, Pa.
     pub modulus_of_rupture: f64,
+    /// How it grows with age: `none` (the default: one MR for the whole life) or `mepdg`
+    /// (the MEPDG's strength gain, month by month: [`crate::damage::strength`]).
+    #[serde(default)]
+    pub rupture_growth: Option<String>,
     /// Positions of a pass along the lane (absent: one per element along x, so that every
     /// element's largest stress of the pass is taken within half an element of its peak).
     #[serde(default)]
@@ -222,8 +227,10 @@ pub struct DamagePlan {
     pub climate: Vec<Climate>,
     /// The fatigue relation.
     pub model: crate::damage::relations::DamageModel,
-    /// Modulus of rupture, Pa.
+    /// Modulus of rupture (at 28 days where it grows), Pa.
     pub rupture: f64,
+    /// The months of the life with the MR's growth (None: one MR for the whole life).
+    pub ages: Option<AgeSchedule>,
     /// Positions of a pass (None: one per element along x).
     pub steps: Option<usize>,
     /// The MEPDG's reliability, if given.
@@ -487,6 +494,16 @@ impl DamagePlan {
             })?;
         model.validate()?;
         positive("damage.modulus_of_rupture", damage.modulus_of_rupture, "Pa")?;
+        let ages = match damage.rupture_growth.as_deref() {
+            None | Some("none") => None,
+            Some("mepdg") => Some(AgeSchedule::mepdg(traffic.design_life, traffic.growth)),
+            Some(other) => {
+                return Err(Error::invalid(
+                    "damage.rupture_growth",
+                    format!("`{other}` is not a growth of the modulus of rupture: write \"mepdg\" (the MEPDG's strength gain with age) or \"none\" (one MR for the whole life, the default)"),
+                ))
+            }
+        };
         if let Some(steps) = damage.steps.filter(|s| !(2..=401).contains(s)) {
             return Err(Error::invalid(
                 "damage.steps",
@@ -510,6 +527,7 @@ impl DamagePlan {
             climate,
             model,
             rupture: damage.modulus_of_rupture,
+            ages,
             steps: damage.steps,
             reliability: damage.reliability,
             interpolate: damage.interpolate,
@@ -527,6 +545,29 @@ impl DamagePlan {
             n
         } else {
             ((1.0 + g).powf(n) - 1.0) / g
+        }
+    }
+
+    /// The cycles of tensile stress `stress` (Pa) the slab allows over its life: the
+    /// relation's N at the modulus of rupture, or, where the MR grows with age, 1 / the
+    /// average damage of a cycle over the months ([`AgeSchedule::damage_per_cycle`]) — so
+    /// that n / this is the damage of n cycles spread over the life as the traffic is.
+    /// Unlimited (infinite) for `stress` ≤ 0.
+    pub fn allowed(&self, stress: f64) -> f64 {
+        if stress.is_nan() || stress <= 0.0 {
+            return f64::INFINITY;
+        }
+        match &self.ages {
+            None => self.model.allowed_repetitions(stress, self.rupture),
+            Some(ages) => {
+                let per_cycle = ages
+                    .damage_per_cycle(|r| self.model.allowed_repetitions(stress, self.rupture * r));
+                if per_cycle > 0.0 {
+                    1.0 / per_cycle
+                } else {
+                    f64::INFINITY
+                }
+            }
         }
     }
 

@@ -269,10 +269,13 @@ pub fn damage_table(title: &str, d: &Damage, files: Option<(usize, &Path)>) -> S
     );
     let _ = writeln!(
         s,
-        "  relation   : {}, modulus of rupture {:.3} {}; repetitions over the life {:.4} × the first year's",
+        "  relation   : {}, modulus of rupture {:.3} {}{}; repetitions over the life {:.4} × the first year's",
         d.model,
         st.apply(d.rupture),
         st.unit,
+        d.rupture_ratio.map_or(String::new(), |[lo, hi]| format!(
+            " at 28 days, × {lo:.3} … {hi:.3} over the life (MEPDG strength gain, month by month)"
+        )),
         d.life_factor
     );
     let _ = writeln!(

@@ -168,8 +168,11 @@ pub struct Cracking {
 pub struct Damage {
     /// The relation's name (`pca`, `mepdg`, `faa`).
     pub model: &'static str,
-    /// Modulus of rupture, Pa.
+    /// Modulus of rupture, Pa (at 28 days where it grows).
     pub rupture: f64,
+    /// Where the modulus of rupture grows with age (`rupture_growth = "mepdg"`): its ratio to
+    /// the 28-day value in the life's first month and its largest (null: one MR throughout).
+    pub rupture_ratio: Option<[f64; 2]>,
     /// Repetitions over the life per first-year repetition.
     pub life_factor: f64,
     /// Elements along x and y.
@@ -681,26 +684,30 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
         .find_map(|s| s.field.clone())
         .unwrap_or_default();
     let n = xs.len();
-    let allowed = |s: f64| -> f64 {
-        if s > 0.0 {
-            plan.model.allowed_repetitions(s, plan.rupture)
-        } else {
-            f64::INFINITY
-        }
-    };
-    let mut bottom = vec![0.0; n];
-    let mut top = vec![0.0; n];
+    let allowed = |s: f64| plan.allowed(s);
     let mut missing = Vec::new();
+    let mut summed = Vec::new();
     for (s, bin) in stresses.iter().zip(bins.iter()) {
-        if s.outcome != RunOutcome::CONVERGED {
+        if s.outcome == RunOutcome::CONVERGED {
+            summed.push((s, bin));
+        } else {
             missing.push(label(plan, bin));
-            continue;
-        }
-        for i in 0..n {
-            bottom[i] += bin.repetitions / allowed(s.bottom[i]);
-            top[i] += bin.repetitions / allowed(s.top[i]);
         }
     }
+    // Element by element, the bins in their order (the sums are those of a loop over the bins
+    // to the last bit); in parallel, since a growing modulus of rupture makes each term a sum
+    // over the life's months.
+    let (bottom, top): (Vec<f64>, Vec<f64>) = (0..n)
+        .into_par_iter()
+        .map(|i| {
+            summed.iter().fold((0.0, 0.0), |(b, t), (s, bin)| {
+                (
+                    b + bin.repetitions / allowed(s.bottom[i]),
+                    t + bin.repetitions / allowed(s.top[i]),
+                )
+            })
+        })
+        .unzip();
     let governing = |d: &[f64]| -> Governing {
         let k = (0..n).max_by(|&a, &b| d[a].total_cmp(&d[b])).unwrap_or(0);
         Governing {
@@ -850,6 +857,7 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
             DamageModel::Faa(_) => "faa",
         },
         rupture: plan.rupture,
+        rupture_ratio: plan.ages.as_ref().map(|a| a.ratio_range()),
         life_factor: plan.life_factor(),
         elements: [nx, n / nx.max(1)],
         x: xs,

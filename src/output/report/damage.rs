@@ -46,12 +46,24 @@ pub(crate) fn read(l: &mut Listing) -> Result<Option<Part>> {
         }
         let _ = writeln!(
             html,
-            "<p>{} passes, {} solves; relation <code>{}</code>, modulus of rupture {} {}; repetitions over the life {} × the first year's.</p>",
+            "<p>{} passes, {} solves; relation <code>{}</code>, modulus of rupture {} {}{}; repetitions over the life {} × the first year's.</p>",
             v.get("passes").and_then(Value::as_array).map_or(0, Vec::len),
             text(v.get("solves")),
             text(v.get("model")),
             text(v.get("rupture")),
             if unit == "in" { "psi" } else { "Pa" },
+            match v
+                .get("rupture_ratio")
+                .and_then(Value::as_array)
+                .map(|r| r.iter().filter_map(Value::as_f64).collect::<Vec<_>>())
+            {
+                Some(r) if r.len() == 2 => format!(
+                    " at 28 days, growing × {} … {} over the life (MEPDG)",
+                    num(r[0]),
+                    num(r[1])
+                ),
+                _ => String::new(),
+            },
             text(v.get("life_factor")),
         );
         let mut rows = Vec::new();
