@@ -255,6 +255,35 @@ impl FullField {
         }
     }
 
+    /// A nodal field at the grid node nearest the physical point (x, y), read as the copy of the
+    /// element on the `towards` side of it ([right, up]: the element to +x of the node when
+    /// right, to +y when up) — on a joint line, that side's own copy. None off the grid or where
+    /// the field has no such value.
+    pub fn at_node_of(&self, field: &[f64], x: f64, y: f64, towards: [bool; 2]) -> Option<f64> {
+        let n = self.nodes_x();
+        let (half_x, half_y) = (*self.x.get(self.nx)?, *self.y.get(self.ny * n)?);
+        let node = |v: f64, half: f64, count: usize| -> Option<usize> {
+            let f = ((v / half + 1.0) * 0.5 * count as f64).round();
+            (half > 0.0 && (0.0..=count as f64).contains(&f)).then_some(f as usize)
+        };
+        let (ni, nj) = (node(x, half_x, self.nx)?, node(y, half_y, self.ny)?);
+        let [right, up] = towards;
+        // The element on that side, and the node's place among its corners, in order (−,−),
+        // (+,−), (+,+), (−,+).
+        let i = if right { ni } else { ni.checked_sub(1)? };
+        let j = if up { nj } else { nj.checked_sub(1)? };
+        if i >= self.nx || j >= self.ny {
+            return None;
+        }
+        let k = match (right, up) {
+            (true, true) => 0,
+            (false, true) => 1,
+            (false, false) => 2,
+            (true, false) => 3,
+        };
+        field.get(self.element_nodes(i, j)[k]).copied()
+    }
+
     /// A nodal field at the physical point (x, y) on the plate, by the elements' bilinear shape
     /// functions (a deflectometer's sensor is not on a node): None off the plate. On a joint
     /// line the lower / left side's copies are read, as [`Self::interpolate`].

@@ -45,8 +45,7 @@ pub struct Corner {
 #[derive(Debug, Clone)]
 pub(super) struct Corners {
     pub(super) points: Vec<Corner>,
-    /// Each corner's reading point, just inside its panel, m, and whether the panel lies
-    /// towards +x and +y of the corner.
+    /// Each corner's place, m, and whether its panel lies towards +x and +y of it.
     probes: Vec<([f64; 2], [bool; 2])>,
     /// The Winkler modulus, N/m³.
     pub(super) k: f64,
@@ -85,8 +84,9 @@ impl Corners {
         };
         let xs = edges(layout.lines(crate::layout::Axis::X), 1.0);
         let ys = edges(layout.lines(crate::layout::Axis::Y), g.mu);
-        // Inside the panel by a millionth of its smaller side: the element holding the probe
-        // is the panel's corner element, whose own node copy at the corner is read.
+        // A corner is the panel's where the point a millionth of its smaller side inside is
+        // plate; its deflection is the node copy of the panel's corner element there
+        // (`FullField::at_node_of`, towards the panel).
         let mut points = Vec::new();
         let mut probes = Vec::new();
         for (r, yy) in ys.windows(2).enumerate() {
@@ -109,7 +109,7 @@ impl Corners {
                         thickness: thickness * layout.section(c, r).thickness,
                         towards: [sx, sy],
                     });
-                    probes.push(([px * l, py * l], [sx > 0.0, sy > 0.0]));
+                    probes.push(([x * l, y * l], [sx > 0.0, sy > 0.0]));
                 }
             }
         }
@@ -132,30 +132,11 @@ impl Corners {
     /// The deflection at each corner in a solve's field, m: the node copy of the panel's
     /// corner element at the corner, exactly (NaN where the field cannot be read).
     pub(super) fn read(&self, field: &FullField) -> Vec<f64> {
-        let n = field.nodes_x();
-        let (Some(&half_x), Some(&half_y)) = (field.x.get(field.nx), field.y.get(field.ny * n))
-        else {
-            return vec![f64::NAN; self.probes.len()];
-        };
-        let cell = |v: f64, half: f64, count: usize| {
-            (((v / half + 1.0) * 0.5 * count as f64).floor().max(0.0) as usize).min(count - 1)
-        };
         self.probes
             .iter()
-            .map(|&([x, y], [right, up])| {
-                let (i, j) = (cell(x, half_x, field.nx), cell(y, half_y, field.ny));
-                // The element's corners in order (−,−), (+,−), (+,+), (−,+): the corner is its
-                // low side where the panel lies towards +.
-                let k = match (right, up) {
-                    (true, true) => 0,
-                    (false, true) => 1,
-                    (false, false) => 2,
-                    (true, false) => 3,
-                };
+            .map(|&([x, y], towards)| {
                 field
-                    .w
-                    .get(field.element_nodes(i, j)[k])
-                    .copied()
+                    .at_node_of(&field.w, x, y, towards)
                     .unwrap_or(f64::NAN)
             })
             .collect()
