@@ -256,6 +256,42 @@ fn day_curling_and_edge_loading_govern_at_mid_slab_on_the_edge() {
     assert!(g.x.abs() <= 4.5 / 8.0, "governing at x = {}", g.x);
 }
 
+/// The lane's outer edge at a joint (`edge_at`, a tied shoulder's, say) instead of the plate's
+/// edge: every position of a pass moves across by the edge's distance from the plate's edge,
+/// exactly (1e-12 m: the same sums of the same numbers), the wander's offset now counted from
+/// the joint; and for `y+`, from the joint on the lane's other side, the same way.
+#[test]
+fn a_lane_edge_at_a_joint_moves_the_passes_across() {
+    let one_bin = TWO_BINS
+        .replace("share = 0.6", "share = 1.0")
+        .replace("[[climate.bin]]\ndifference = -6.0\nshare = 0.4\n", "");
+    let plain = run(&slab(&one_bin));
+    for (edge, at, shift) in [("y-", -1.0, 0.8), ("y+", 1.2, -0.6)] {
+        let moved = run(&slab(&one_bin.replace(
+            "growth = 0.0",
+            &format!("growth = 0.0\nedge = \"{edge}\"\nedge_at = {at}"),
+        )));
+        let base = if edge == "y-" {
+            plain.passes[0].positions.clone()
+        } else {
+            // The y+ pass along the plate's own edge.
+            let mirrored = run(&slab(
+                &one_bin.replace("growth = 0.0", "growth = 0.0\nedge = \"y+\""),
+            ));
+            mirrored.passes[0].positions.clone()
+        };
+        let p = &moved.passes[0].positions;
+        assert_eq!(p.len(), base.len());
+        for (a, b) in p.iter().zip(&base) {
+            assert!((a[0] - b[0]).abs() < 1e-12, "{edge}: x {a:?} vs {b:?}");
+            assert!(
+                (a[1] - b[1] - shift).abs() < 1e-12,
+                "{edge}: y {a:?} vs {b:?}"
+            );
+        }
+    }
+}
+
 /// Bad plans are refused naming the key: a group that names no axle, shares that do not add up,
 /// an unknown relation.
 #[test]

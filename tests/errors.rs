@@ -742,6 +742,11 @@ fn e71_e72_damage_inputs_are_refused_naming_the_key() {
             "model = \"mepdg\"\nrupture_growth = \"aci\"",
             "scene field `damage.rupture_growth`: `aci` is not a growth of the modulus of rupture",
         ),
+        (
+            "growth = 0.02",
+            "edge_at = 2.5\ngrowth = 0.02",
+            "scene field `traffic.edge_at`: y = 2.5 m is not on the 3.6 m wide plate",
+        ),
     ] {
         assert!(scene.contains(from), "{from}");
         for command in ["damage", "solve"] {

@@ -35,6 +35,11 @@ pub struct TrafficSpec {
     /// The edge the traffic runs along: `y-` (the default; travel along x) or `y+`.
     #[serde(default = "default_edge")]
     pub edge: String,
+    /// Where that edge is, m: the line y = this, such as the joint between the lane and a tied
+    /// shoulder (absent: the plate's own edge, y = ∓b/2). The lane lies on its +y side for
+    /// `y-`, on its −y side for `y+`.
+    #[serde(default)]
+    pub edge_at: Option<f64>,
     /// The axle groups and gears with their load spectra.
     #[serde(default)]
     pub group: Vec<GroupSpec>,
@@ -216,8 +221,10 @@ pub struct DamagePlan {
     pub design_life: f64,
     /// Yearly growth.
     pub growth: f64,
-    /// The traffic runs along y = −b/2 (false: y = +b/2).
+    /// The lane lies on the +y side of its outer edge (false: on the −y side).
     pub lower_edge: bool,
+    /// The outer edge's y, m (None: the plate's edge on that side).
+    pub edge_at: Option<f64>,
     /// The groups.
     pub groups: Vec<Group>,
     /// The lateral positions.
@@ -298,6 +305,12 @@ impl DamagePlan {
                 ))
             }
         };
+        if let Some(e) = traffic.edge_at.filter(|e| !e.is_finite()) {
+            return Err(Error::invalid(
+                "traffic.edge_at",
+                format!("must be the y of the lane's outer edge, m, got {e}"),
+            ));
+        }
         let w = &traffic.wander;
         if !(w.mean.is_finite() && w.mean >= 0.0) {
             return Err(Error::invalid(
@@ -522,6 +535,7 @@ impl DamagePlan {
             design_life: traffic.design_life,
             growth: traffic.growth,
             lower_edge,
+            edge_at: traffic.edge_at,
             groups,
             lateral: lateral(w),
             climate,

@@ -52,6 +52,7 @@ pub fn quantity(
             _ => None,
         },
         ("load", "temperatures") => Some(Temperature),
+        ("traffic", "edge_at") => Some(Length),
         ("traffic.wander", "mean" | "deviation") => Some(Length),
         ("traffic.group", "levels") => Some(Force),
         ("climate.bin", "difference") => Some(TemperatureDifference),
@@ -112,6 +113,7 @@ pub fn scene_to_si(scene: &mut Value, system: UnitSystem) -> Result<()> {
                 }
             }
             "traffic" => {
+                table(value, "traffic", None, soil, system);
                 if let Some(w) = value.get_mut("wander") {
                     table(w, "traffic.wander", None, soil, system);
                 }

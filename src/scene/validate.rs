@@ -598,6 +598,19 @@ fn damage_plan(
             .map(|alpha| ph.rigidity * alpha / (p.thickness * model.load_scale)),
         _ => None,
     };
+    // The lane's outer edge must lie across the plate.
+    if let (Some(e), Some(p)) = (plan.edge_at, &file.plate) {
+        if e.abs() >= p.width / 2.0 {
+            return Err(Error::invalid(
+                "traffic.edge_at",
+                format!(
+                    "y = {e} m is not on the {} m wide plate (|y| < {} m): give the y of the lane's outer edge, such as a shoulder joint's",
+                    p.width,
+                    p.width / 2.0
+                ),
+            ));
+        }
+    }
     // A bin's own subgrade modulus replaces the Winkler soil's k; other soils have none.
     if let Some(k) = plan
         .climate

@@ -102,10 +102,16 @@ pub(super) fn pass_models(base: &Model, plan: &DamagePlan, bin: &Bin) -> Result<
             ),
         ));
     }
+    // The scene's check keeps `edge_at` across the plate.
+    let edge = match plan.edge_at {
+        Some(e) => e,
+        None if plan.lower_edge => -b / 2.0,
+        None => b / 2.0,
+    };
     let y = if plan.lower_edge {
-        -b / 2.0 + offset - y_lo
+        edge + offset - y_lo
     } else {
-        b / 2.0 - offset - y_hi
+        edge - offset - y_hi
     }
     .clamp(y_min, y_max);
     let (x0, x1) = (-a / 2.0 - x_lo + gap_x, a / 2.0 - x_hi - gap_x);
