@@ -326,8 +326,10 @@ fn a_us_plan_is_its_si_twin() {
     const IN: f64 = 0.0254;
     const LBF: f64 = 4.448_221_615_260_5;
     let psi = LBF / (IN * IN);
-    let si = slab(TWO_BINS);
+    // The lane's edge at y = −1 m too: a length of [traffic].
+    let si = slab(&TWO_BINS.replace("growth = 0.0", "growth = 0.0\nedge_at = -1.0"));
     let us = us_plate(&si)
+        .replace("edge_at = -1.0", &format!("edge_at = {}", -1.0 / IN))
         .replace(
             "youngs_modulus = 30e9",
             &format!("youngs_modulus = {}", 30e9 / psi),
