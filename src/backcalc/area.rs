@@ -33,9 +33,9 @@
 //! L/ℓ = 3.5 to 10 the corrected reading is that of a slab of 20 ℓ within 1.1 % in ℓ, 3.6 % in
 //! k and 1.7 % in E, where the uncorrected one was off by up to 12 % in ℓ and 34 % in k. It is
 //! not applied below L/ℓ_est = 3, where the factors fall steeply (at 2.5 AF_d₀ = 0.75 and the
-//! corrected reading was still 3 % off in ℓ, 5 % in k and 7 % in E). Joints that transfer load make a panel act larger
-//! than itself: there the correction overshoots, and the fit on the jointed model is the
-//! answer.
+//! corrected reading was still 3 % off in ℓ, 5 % in k and 7 % in E). The factors are for a
+//! load at the slab's centre; joints that transfer load make a panel act larger than itself,
+//! and there the correction overshoots: the fit on the jointed model is the answer.
 
 use super::infinite::{dimensionless_deflection, Subgrade};
 use crate::error::{Error, Result};
@@ -85,7 +85,7 @@ pub struct FiniteSlab {
     pub deflection_factor: f64,
     /// AF_ℓ: the slab's ℓ over the infinite slab's reading.
     pub ell_factor: f64,
-    /// The infinite slab's reading it corrects: ℓ (m), k (N/m³), E (Pa).
+    /// The infinite slab's reading it corrects: ℓ, m.
     pub infinite_ell: f64,
     /// The infinite slab's k, N/m³.
     pub infinite_subgrade_modulus: f64,
