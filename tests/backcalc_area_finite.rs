@@ -8,7 +8,7 @@
 //! share, common to both, cancels.
 
 use liftoff::backcalc::{area_method, crovetti_factors, finite_slab, Basin, Subgrade};
-use liftoff::{Monitor, Outcome, Problem};
+mod common;
 
 /// 200 mm of concrete on k = 60 MN/m³: ℓ = 0.764 m, h/ℓ = 0.26; a 40 kN drop on the 150 mm
 /// plate.
@@ -25,48 +25,16 @@ fn ell() -> f64 {
 }
 
 /// The basin at the sensors on the slab, along x from the centre of a square bonded slab of
-/// side `side`,
-/// its elements no wider than 0.1 m (0.67 of the plate's radius: within 1 % of the infinite
-/// plate at every sensor, `tests/circle_load.rs`).
+/// side `side`, its elements no wider than 0.1 m (0.67 of the plate's radius: within 1 % of the
+/// infinite plate at every sensor, `tests/circle_load.rs`).
 fn basin(side: f64) -> Basin {
     let n = ((side / 0.1).ceil() as usize).max(8);
-    let scene = format!(
-        r#"
-[plate]
-length = {side}
-width = {side}
-thickness = {H}
-youngs_modulus = {E}
-poissons_ratio = {NU}
-[foundation]
-model = "winkler"
-modulus = {K}
-[[load]]
-kind = "circle"
-x = 0.0
-y = 0.0
-radius = {RADIUS}
-force = {FORCE}
-[mesh]
-elements = [{n}, {n}]
-[solver]
-contact = "bonded"
-"#
-    );
-    let p = Problem::from_toml(&scene).expect("scene");
-    let Outcome::Single(a) = liftoff::run(&p, &Monitor::NONE).expect("solve") else {
-        panic!("one solve")
-    };
-    assert!(a.summary.converged);
-    let f = &a.report.field;
     let offsets: Vec<f64> = SENSORS.into_iter().filter(|&x| x < side / 2.0).collect();
+    let plate = common::infinite::Plate { e: E, nu: NU, h: H };
     Basin {
         load: FORCE,
         radius: RADIUS,
-        deflections: offsets
-            .iter()
-            .map(|&x| f.at(&f.w, x, 0.0).expect("on the plate"))
-            .collect(),
+        deflections: common::disk_basin(&plate, K, side, n, (RADIUS, FORCE), [0.0, 0.0], &offsets),
         offsets,
     }
 }

@@ -11,7 +11,7 @@
 
 mod common;
 
-use liftoff::{Monitor, Outcome, Problem};
+use liftoff::Problem;
 
 /// The slab and soil of the tests: 250 mm of concrete on k = 80 MN/m³ (ℓ = 0.841 m), a 40 kN
 /// drop on the standard 150 mm plate.
@@ -35,45 +35,11 @@ fn basin(side: f64, n: usize, offsets: &[f64]) -> Vec<f64> {
     basin_at(side, n, [0.0, 0.0], offsets)
 }
 
-/// [`basin`] with the plate centred at `at`, the sensors along x from it.
+/// [`basin`] with the plate centred at `at`, the sensors along x from it
+/// ([`common::disk_basin`]: the solve converged and its reaction is the force, 1e-9).
 fn basin_at(side: f64, n: usize, at: [f64; 2], offsets: &[f64]) -> Vec<f64> {
-    let [cx, cy] = at;
-    let scene = format!(
-        r#"
-[plate]
-length = {side}
-width = {side}
-thickness = {H}
-youngs_modulus = {E}
-poissons_ratio = {NU}
-[foundation]
-model = "winkler"
-modulus = {K}
-[[load]]
-kind = "circle"
-x = {cx}
-y = {cy}
-radius = {RADIUS}
-force = {FORCE}
-[mesh]
-elements = [{n}, {n}]
-[solver]
-contact = "bonded"
-"#
-    );
-    let p = Problem::from_toml(&scene).expect("scene");
-    let Outcome::Single(a) = liftoff::run(&p, &Monitor::NONE).expect("solve") else {
-        panic!("one solve")
-    };
-    assert!(a.summary.converged);
-    // The disk's load is the force given, exactly (the bands carry the disk's area).
-    let load = a.summary.resultant.load;
-    assert!((load - FORCE).abs() <= 1e-9 * FORCE, "resultant {load}");
-    let f = &a.report.field;
-    offsets
-        .iter()
-        .map(|&x| f.at(&f.w, cx + x, cy).expect("on the plate"))
-        .collect()
+    let plate = common::infinite::Plate { e: E, nu: NU, h: H };
+    common::disk_basin(&plate, K, side, n, (RADIUS, FORCE), at, offsets)
 }
 
 const SENSORS: [f64; 8] = [0.0, 0.203, 0.305, 0.457, 0.610, 0.914, 1.219, 1.524];

@@ -127,6 +127,16 @@ pub fn area_method(
     poisson: f64,
     subgrade: Subgrade,
 ) -> Result<AreaResult> {
+    infinite_slab(basin, thickness, poisson, subgrade).map(|(r, _)| r)
+}
+
+/// [`area_method`]'s reading with the centre deflection d₀ it read (m).
+fn infinite_slab(
+    basin: &Basin,
+    thickness: f64,
+    poisson: f64,
+    subgrade: Subgrade,
+) -> Result<(AreaResult, f64)> {
     if !(basin.load.is_finite() && basin.load > 0.0) {
         return Err(Error::invalid(
             "basin.load",
@@ -248,13 +258,16 @@ pub fn area_method(
     }
     let ell = c.exp();
     let (subgrade_modulus, slab_modulus) = moduli(basin, d[0], ell, thickness, poisson, subgrade);
-    Ok(AreaResult {
-        area,
-        ell,
-        subgrade_modulus,
-        slab_modulus,
-        finite: None,
-    })
+    Ok((
+        AreaResult {
+            area,
+            ell,
+            subgrade_modulus,
+            slab_modulus,
+            finite: None,
+        },
+        d[0],
+    ))
 }
 
 /// The subgrade's modulus and the slab's from ℓ and the centre deflection `d0` by the closed
@@ -292,19 +305,12 @@ pub fn finite_slab(basin: &Basin, thickness: f64, poisson: f64, size: f64) -> Re
             format!("must be the slab's positive side length (m), got {size}"),
         ));
     }
-    let infinite = area_method(basin, thickness, poisson, Subgrade::DenseLiquid)?;
+    let (infinite, d0) = infinite_slab(basin, thickness, poisson, Subgrade::DenseLiquid)?;
     let ratio = size / infinite.ell;
     if ratio < FINITE_SLAB_MIN_RATIO {
         return Ok(infinite);
     }
     let (af_d0, af_ell) = crovetti_factors(ratio);
-    // area_method found the sensor at the plate's centre: offsets within 10 mm of 0.
-    let d0 = basin
-        .offsets
-        .iter()
-        .zip(&basin.deflections)
-        .find(|(o, _)| o.abs() <= OFFSET_TOLERANCE)
-        .map_or(f64::NAN, |(_, d)| *d);
     let ell = af_ell * infinite.ell;
     let (subgrade_modulus, slab_modulus) = moduli(
         basin,

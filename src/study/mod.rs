@@ -21,6 +21,7 @@ mod critical_grid;
 mod damage;
 mod damage_part;
 mod damage_pass;
+mod damage_result;
 mod design;
 mod eps_sweep;
 mod erosion;

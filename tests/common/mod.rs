@@ -175,3 +175,56 @@ pub fn assert_first_order_in_eps(p: &Problem) {
         );
     }
 }
+
+/// A deflectometer's drop on a square bonded slab of side `side` on springs of modulus `k`,
+/// n × n elements: the disk of `radius` carrying `force` centred at `at`, and the deflections
+/// at `offsets` along x from its centre (FullField::at). The solve converged and its reaction
+/// is the force (the disk's bands carry its area exactly: 1e-9).
+pub fn disk_basin(
+    plate: &infinite::Plate,
+    k: f64,
+    side: f64,
+    n: usize,
+    (radius, force): (f64, f64),
+    at: [f64; 2],
+    offsets: &[f64],
+) -> Vec<f64> {
+    let [cx, cy] = at;
+    let infinite::Plate { e, nu, h } = plate;
+    let scene = format!(
+        r#"
+[plate]
+length = {side}
+width = {side}
+thickness = {h}
+youngs_modulus = {e}
+poissons_ratio = {nu}
+[foundation]
+model = "winkler"
+modulus = {k}
+[[load]]
+kind = "circle"
+x = {cx}
+y = {cy}
+radius = {radius}
+force = {force}
+[mesh]
+elements = [{n}, {n}]
+[solver]
+contact = "bonded"
+"#
+    );
+    let p = Problem::from_toml(&scene).expect("scene");
+    let liftoff::Outcome::Single(a) = liftoff::run(&p, &liftoff::Monitor::NONE).expect("solve")
+    else {
+        panic!("one solve")
+    };
+    assert!(a.summary.converged);
+    let load = a.summary.resultant.load;
+    assert!((load - force).abs() <= 1e-9 * force, "resultant {load}");
+    let f = &a.report.field;
+    offsets
+        .iter()
+        .map(|&x| f.at(&f.w, cx + x, cy).expect("on the plate"))
+        .collect()
+}
