@@ -213,7 +213,7 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
     let threshold = CONTACT_THRESHOLD * peak;
 
     // Every node copy of the whole plate, and the elements, each from its own corners.
-    let whole = whole::whole_plate(mesh, mu);
+    let whole = whole::cached_whole_plate(ops, mu);
     let gap_per_sigma = boundary::self_compliance(ops) * ph.deflection() / mu;
     let (field, elements, full_u, to_field) = whole::fields(
         model,

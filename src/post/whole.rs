@@ -29,6 +29,8 @@ pub(super) struct WholePlate {
     pub mesh: Mesh,
     /// For each node copy of `mesh`: the model's node copy and the signs of ψx and ψy there.
     pub source: Vec<(usize, f64, f64)>,
+    /// The aspect ratio it was made for.
+    pub mu: f64,
 }
 
 /// Model index of a whole-plate grid index and the sign a rotation normal to the symmetry
@@ -70,6 +72,7 @@ pub(super) fn whole_plate(mesh: &Mesh, mu: f64) -> WholePlate {
         return WholePlate {
             mesh: plain,
             source,
+            mu,
         };
     };
     let whole = plain.with_layout(&topo.layout);
@@ -99,6 +102,20 @@ pub(super) fn whole_plate(mesh: &Mesh, mu: f64) -> WholePlate {
     WholePlate {
         mesh: whole,
         source,
+        mu,
+    }
+}
+
+/// The whole plate of `ops`'s mesh, made once per assembly and kept in its cache (a damage or
+/// critical run reports thousands of solves on one assembly). A model of another aspect ratio
+/// than the cached one's gets its own.
+pub(super) fn cached_whole_plate(ops: &Operators, mu: f64) -> std::sync::Arc<WholePlate> {
+    let made = ops
+        .cache
+        .get_or_try_init::<_, std::convert::Infallible>(|| Ok(whole_plate(&ops.mesh, mu)));
+    match made {
+        Ok((whole, _)) if whole.mu == mu => whole,
+        _ => std::sync::Arc::new(whole_plate(&ops.mesh, mu)),
     }
 }
 

@@ -20,7 +20,7 @@ use std::time::Instant;
 
 use super::checks::discrete_gap;
 use super::linalg::finite;
-use super::penalty_step::{constraint_rows, penalty_weights, Backend};
+use super::penalty_step::{cached_constraint_rows, penalty_weights, Backend};
 use super::solution::{Iteration, PenaltyStage, Solution, SolveInfo, Status, Timings};
 use super::spring_factor::Carry;
 use crate::error::{Error, Result};
@@ -468,7 +468,8 @@ pub fn solve_carried(
         backend.warm_start(sigma);
     }
     let t_setup = t0.elapsed().as_secs_f64();
-    let rows = constraint_rows(ops);
+    let rows = cached_constraint_rows(ops);
+    let rows = &rows.0;
     let mut history = Vec::new();
     let mut stages = Vec::new();
     let mut t_solves = 0.0;
@@ -478,7 +479,7 @@ pub fn solve_carried(
         let end = stage(
             ops,
             &mut backend,
-            &rows,
+            rows,
             start,
             epsilon,
             settings.max_iterations,

@@ -30,6 +30,36 @@ use crate::operators::Operators;
 /// The analysed Winkler spring system (its symbolic factorisation), once per assembly.
 struct SpringsAnalysis(SparseCholesky);
 
+/// What the Winkler spring route reads of an assembly at every solve, found once per assembly:
+/// the data position of each diagonal entry of K, each pressure node's w equation with its
+/// ∫ f_j ([`lumped_coupling`]), and whether the bonded springs hold the plate so softly that
+/// every step takes the split solve ([`needs_split`]).
+pub(super) struct SpringsLayout {
+    diag: Vec<usize>,
+    coupling: Vec<(usize, f64)>,
+    bonded_springs: Vec<(usize, f64)>,
+    split: bool,
+}
+
+impl SpringsLayout {
+    fn of(ops: &Operators, t: &[f64]) -> Result<Self> {
+        let diag = diagonal_positions(&ops.k)?;
+        let coupling = lumped_coupling(ops)?;
+        let bonded_springs: Vec<(usize, f64)> = coupling
+            .iter()
+            .zip(t)
+            .map(|(&(eq, b), &c)| (eq, b * b / c))
+            .collect();
+        let split = needs_split(ops, &bonded_springs);
+        Ok(Self {
+            diag,
+            coupling,
+            bonded_springs,
+            split,
+        })
+    }
+}
+
 /// The bonded factor of the Winkler spring system (no penalty springs): where a cold penalty
 /// iteration on an assembly starts.
 struct SpringsStart {
@@ -40,10 +70,11 @@ struct SpringsStart {
 /// Linear solver of one penalised bilateral problem.
 pub(super) enum Backend {
     Springs {
-        k: sprs::CsMat<f64>,
-        diag: Vec<usize>,
-        base: Vec<f64>,
-        coupling: Vec<(usize, f64)>,
+        /// A working copy of K whose diagonal takes the springs of a new factorisation, made
+        /// when a step first needs one (a step solved by an update of the carried factor reads
+        /// nothing of K).
+        k: Option<sprs::CsMat<f64>>,
+        layout: Arc<SpringsLayout>,
         t: Vec<f64>,
         chol: SparseCholesky,
         /// The last numeric factor, the spring stiffness per pressure node it was made with and
@@ -76,24 +107,14 @@ impl Backend {
     ) -> Result<Self> {
         match (ops.t.as_ref(), ops.constraints.kind) {
             (Compliance::Diagonal(t), ConstraintPoints::Nodal) => {
-                let k = (*ops.k).clone();
-                let diag = diagonal_positions(&k)?;
-                let base = k.data().to_vec();
-                let coupling = lumped_coupling(ops)?;
-                let bonded_springs: Vec<(usize, f64)> = coupling
-                    .iter()
-                    .zip(t)
-                    .map(|(&(eq, b), &c)| (eq, b * b / c))
-                    .collect();
-                if needs_split(ops, &bonded_springs) {
+                let (layout, _) = ops.cache.get_or_try_init(|| SpringsLayout::of(ops, t))?;
+                if layout.split {
                     // A nearly rigid plate: every step by the split solve, no plain factor.
                     let order = crate::mesh::equation_order(&ops.mesh, &ops.dofs, |_| true);
                     return Ok(Backend::Springs {
-                        chol: SparseCholesky::analyse_ordered(&k, Some(&order))?,
-                        k,
-                        diag,
-                        base,
-                        coupling,
+                        chol: SparseCholesky::analyse_ordered(&ops.k, Some(&order))?,
+                        k: None,
+                        layout,
                         t: t.clone(),
                         factored: None,
                         split: Some(Box::new(RigidSplit::new(ops)?)),
@@ -107,29 +128,28 @@ impl Backend {
                 let (analysis, _) = ops.cache.get_or_try_init(|| -> Result<SpringsAnalysis> {
                     let order = crate::mesh::equation_order(&ops.mesh, &ops.dofs, |_| true);
                     Ok(SpringsAnalysis(SparseCholesky::analyse_ordered(
-                        &k,
+                        &ops.k,
                         Some(&order),
                     )?))
                 })?;
                 let chol = analysis.0.clone();
                 if let Some(carried) = carry.and_then(|c| c.take_for(&ops.k)) {
                     return Ok(Backend::Springs {
-                        k,
-                        diag,
-                        base,
-                        coupling,
+                        k: None,
+                        layout,
                         t: t.clone(),
                         chol,
                         factored: Some(carried),
                         split: None,
                     });
                 }
-                let start = if lifted_at_start <= woodbury_limit(k.rows()) {
+                let start = if lifted_at_start <= woodbury_limit(ops.k.rows()) {
                     let (start, _) = ops.cache.get_or_try_init(|| -> Result<SpringsStart> {
-                        let springs: Vec<f64> = bonded_springs.iter().map(|&(_, s)| s).collect();
-                        let mut bonded = k.clone();
-                        for &(eq, s) in &bonded_springs {
-                            bonded.data_mut()[diag[eq]] += s;
+                        let springs: Vec<f64> =
+                            layout.bonded_springs.iter().map(|&(_, s)| s).collect();
+                        let mut bonded = (*ops.k).clone();
+                        for &(eq, s) in &layout.bonded_springs {
+                            bonded.data_mut()[layout.diag[eq]] += s;
                         }
                         let factor = Arc::new(chol.factor(&bonded, "bonded Winkler system")?);
                         Ok(SpringsStart { factor, springs })
@@ -139,10 +159,8 @@ impl Backend {
                     ops.cache.get::<SpringsStart>()
                 };
                 Ok(Backend::Springs {
-                    k,
-                    diag,
-                    base,
-                    coupling,
+                    k: None,
+                    layout,
                     t: t.clone(),
                     chol,
                     factored: start
@@ -269,14 +287,13 @@ impl Backend {
         match self {
             Backend::Springs {
                 k,
-                diag,
-                base,
-                coupling,
+                layout,
                 t,
                 chol,
                 factored,
                 split,
             } => {
+                let coupling = &layout.coupling;
                 let mut comp = t.clone();
                 for &(i, j, v) in extra {
                     if i == j {
@@ -308,7 +325,7 @@ impl Backend {
                         None => return Err(Error::numerical("penalty", "no split solver")),
                     }
                 } else {
-                    let limit = woodbury_limit(k.rows());
+                    let limit = woodbury_limit(ops.k.rows());
                     match factored {
                         Some(f) if f.changed(&springs).len() <= limit => {
                             let updates: Vec<(usize, f64)> = f
@@ -319,9 +336,10 @@ impl Backend {
                             f.woodbury_solve(&rhs, &updates)?
                         }
                         _ => {
-                            k.data_mut().copy_from_slice(base);
+                            let k = k.get_or_insert_with(|| (*ops.k).clone());
+                            k.data_mut().copy_from_slice(ops.k.data());
                             for (j, &(eq, _)) in coupling.iter().enumerate() {
-                                k.data_mut()[diag[eq]] += springs[j];
+                                k.data_mut()[layout.diag[eq]] += springs[j];
                             }
                             let llt = chol.factor(k, "penalised Winkler system")?;
                             let mut u = rhs;
@@ -405,6 +423,20 @@ pub(super) fn penalty_weights(ops: &Operators, penalised: &[bool], epsilon: f64)
 /// The relative CG tolerance of the penalty steps between the loose ones and the confirming
 /// tight ones (iterative route).
 pub const MEDIUM_TOLERANCE: f64 = 1e-7;
+
+/// Rows of G as (σ index, value) lists, made once per assembly ([`constraint_rows`]).
+pub(super) struct ConstraintRows(pub Vec<Vec<(usize, f64)>>);
+
+/// [`constraint_rows`] of `ops`, kept in its cache: every solve on one assembly reads the same.
+pub(super) fn cached_constraint_rows(ops: &Operators) -> Arc<ConstraintRows> {
+    match ops
+        .cache
+        .get_or_try_init::<_, std::convert::Infallible>(|| Ok(ConstraintRows(constraint_rows(ops))))
+    {
+        Ok((rows, _)) => rows,
+        Err(never) => match never {},
+    }
+}
 
 /// Rows of G as (σ index, value) lists.
 pub(super) fn constraint_rows(ops: &Operators) -> Vec<Vec<(usize, f64)>> {

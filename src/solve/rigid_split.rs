@@ -40,12 +40,24 @@ pub fn spring_total(springs: &[(usize, f64)]) -> f64 {
 /// springs alone, however stiff the one: K + S then loses its rigid digits as a soft bed does.
 pub fn weakest_mode(ops: &Operators, springs: &[(usize, f64)]) -> f64 {
     let m = ops.rigid.len();
-    let g = nalgebra::DMatrix::from_fn(m, m, |a, b| {
-        springs
-            .iter()
-            .map(|&(eq, s)| s * ops.rigid[a][eq] * ops.rigid[b][eq])
-            .sum::<f64>()
-    });
+    // One pass over the springs (the modes' values at an equation read together).
+    let mut g = nalgebra::DMatrix::<f64>::zeros(m, m);
+    let mut r = vec![0.0; m];
+    for &(eq, s) in springs {
+        for (a, mode) in ops.rigid.iter().enumerate() {
+            r[a] = mode[eq];
+        }
+        for a in 0..m {
+            for b in 0..=a {
+                g[(a, b)] += s * r[a] * r[b];
+            }
+        }
+    }
+    for a in 0..m {
+        for b in 0..a {
+            g[(b, a)] = g[(a, b)];
+        }
+    }
     g.symmetric_eigenvalues()
         .iter()
         .cloned()
