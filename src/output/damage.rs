@@ -393,7 +393,7 @@ pub fn write_design(dir: &Path, d: &crate::study::Design, title: &str) -> Result
     let json = serde_json::to_string_pretty(&reported)
         .map_err(|e| Error::numerical("design.json", format!("cannot serialise: {e}")))?;
     st.write_text("design.json", &json)?;
-    // The line runs through every run, by thickness; the bisection's are marked apart.
+    // The line runs through every run, by thickness; the search's steps are marked apart.
     let curve: Vec<(f64, f64)> = reported
         .points
         .iter()
@@ -476,7 +476,7 @@ pub fn design_table(
             if p.complete { "" } else { " (incomplete)" }
         );
     }
-    let _ = writeln!(s, "  (* a bisection step)");
+    let _ = writeln!(s, "  (* a search step)");
     match (d.thickness, d.bracket) {
         (Some(h), Some([a, b])) => {
             let _ = writeln!(

@@ -42,7 +42,7 @@ pub(crate) enum Command {
     /// group along the lane, the Miner sum at both faces of every element.
     Damage(DamageArgs),
     /// The least slab thickness that carries the scene's traffic: damage runs over a range of
-    /// thicknesses (the design curve), the target bracketed and bisected.
+    /// thicknesses (the design curve), the target bracketed and the bracket narrowed.
     Design(DesignArgs),
     /// Backcalculate the soil and the slab from deflectometer basins (a CSV file) on a template
     /// scene: the least-squares fit on liftoff's model with 95 % intervals, or the AREA method.
@@ -336,7 +336,7 @@ pub(crate) struct DesignArgs {
     /// faa (default 1).
     #[arg(long)]
     pub(crate) target: Option<f64>,
-    /// Bisect the bracket until it is this narrow, in the scene's unit of length (default
+    /// Narrow the bracket until it is this narrow, in the scene's unit of length (default
     /// 5 mm; 0.25 in for a US scene).
     #[arg(long)]
     pub(crate) tolerance: Option<f64>,

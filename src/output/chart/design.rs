@@ -24,7 +24,7 @@ pub struct DesignCurve<'a> {
     pub y_label: &'a str,
     /// (thickness, value) of the design curve, in order.
     pub curve: &'a [(f64, f64)],
-    /// (thickness, value) of the bisection's runs.
+    /// (thickness, value) of the search's runs that narrow the bracket.
     pub steps: &'a [(f64, f64)],
     /// The target.
     pub target: f64,
@@ -118,7 +118,7 @@ impl Picture for DesignCurve<'_> {
                         .map(|&p| TriangleMarker::new(p, 5, c2.filled())),
                 )
                 .map_err(txt)?
-                .label("bisection")
+                .label("search step")
                 .legend(move |(x, y)| TriangleMarker::new((x + 10, y), 5, c2.filled()));
         }
         if let Some(h) = self.found {
