@@ -13,6 +13,7 @@
 mod backcalc;
 mod critical;
 mod damage;
+mod markup;
 mod page;
 mod solve;
 
@@ -219,7 +220,7 @@ fn size_text(bytes: u64) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::page::inline_svg;
+    use super::markup::inline_svg;
 
     /// Ids and the references to them get the prefix; the prolog, comments, scripts, event
     /// attributes and external references go; text is escaped again.
