@@ -345,8 +345,9 @@ def design(
     """The least slab thickness that carries the scene's traffic (``liftoff design``): whole
     damage runs (:func:`damage`) at ``points`` thicknesses (6, as the CLI) evenly over ``vary`` — ``(FROM, TO)``
     or ``"thickness=FROM..TO"``, in the scene's unit of length — give the design curve; the
-    first thickness that meets the target and the one before it bracket the answer, bisected to
-    ``tolerance`` (default 5 mm; 0.25 in for a US scene). The target (``target``) is the MEPDG's
+    first thickness that meets the target and the one before it bracket the answer, narrowed to
+    ``tolerance`` (default 5 mm; 0.25 in for a US scene) by probes placed where the bracket's
+    values, interpolated in their logarithm, put the target (as the CLI). The target (``target``) is the MEPDG's
     total cracking in % (at the scene's ``[damage] reliability`` when given; default 15) or, for
     ``faa``, the larger of the bottom-up and top-down damage, for ``pca`` the largest of those
     and the erosion damage at the corners (default 1). The
@@ -356,7 +357,7 @@ def design(
     Returns :class:`Records`, one per damage run by thickness (design.csv's columns:
     ``thickness``, ``bottom``, ``top``, ``erosion`` (``pca``), ``cracking``, ``value``,
     ``passes``, ``complete``,
-    ``solves``, ``seconds``, ``curve`` — False for a bisection step); ``meta`` holds the rest of
+    ``solves``, ``seconds``, ``curve`` — False for a search step); ``meta`` holds the rest of
     design.json: ``thickness`` (the least thickness found; None if none in the range meets the
     target), ``bracket``, ``target``, ``measure``, ``model``, ``monotone``, ``complete``,
     ``units``. As the CLI, a search with a damage run that did not converge raises
