@@ -736,6 +736,40 @@ fn backcalc_recovers_the_bundled_surveys_moduli_and_writes_its_files() {
     assert!(stderr(&area).contains("station 2+000, drop 1`: the AREA method reads interior drops"));
 }
 
+/// The bundled PDDX survey (`examples/fwd-interior.pdx`) holds station 1+000 of
+/// `examples/fwd-basins.csv` in AASHTO's exchange format: read by `liftoff backcalc`, its fit is
+/// the CSV file's to the digit in every column of backcalc.csv but the station's name (the same
+/// drop in SI after either reader's conversion, the same fit).
+#[test]
+fn backcalc_reads_a_pddx_survey_as_its_csv_twin() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let run = |file: &str, out: &str| {
+        let basins = Path::new(env!("CARGO_MANIFEST_DIR")).join(file);
+        let out = dir.path().join(out);
+        let o = liftoff(&[
+            "backcalc",
+            basins.to_str().expect("utf-8 path"),
+            "--scene",
+            "example:fwd-panel",
+            "--seating",
+            "1",
+            "--out",
+            out.to_str().expect("utf-8"),
+        ]);
+        assert!(o.status.success(), "{file}: {}", stderr(&o));
+        read_csv(&out.join("backcalc.csv"))
+    };
+    let (hp, pddx) = run("examples/fwd-interior.pdx", "pddx");
+    let (hc, csv) = run("examples/fwd-basins.csv", "csv");
+    assert_eq!(hp, hc);
+    assert_eq!(pddx.len(), 1);
+    assert_eq!(field(&hp, &pddx[0], "station"), "1.000");
+    assert_eq!(field(&hc, &csv[0], "station"), "1+000");
+    for (i, name) in hp.iter().enumerate().filter(|(_, n)| *n != "station") {
+        assert_eq!(pddx[0][i], csv[0][i], "column {name}");
+    }
+}
+
 /// The intercept method on the bundled void survey (`examples/fwd-void.csv`: liftoff's model in
 /// unbonded contact, two corners with drops of 40, 53 and 71 kN after a seating drop, one over
 /// a 0.5 mm void): intercepts.csv flags the voided corner above 2 mils and passes the sound

@@ -877,7 +877,7 @@ fn e73_e74_e75_circles_basins_and_damage_parts() {
 }
 
 /// E76: a basin file with a bad drop or a bad column is refused naming the station and the
-/// column, exit 2, nothing written. E77: a sensor off the template's plate and `--method area`
+/// column (a PDDX file: the section and the key), exit 2, nothing written. E77: a sensor off the template's plate and `--method area`
 /// on an edge drop are refused naming the drop. E78: a fit held to fewer evaluations than it
 /// needs is reported as not converged, exit 4, its best point in the files.
 #[test]
@@ -918,6 +918,16 @@ fn e76_e77_e78_basin_files_templates_and_fits() {
         (
             "station,load_kN,d0mm_um,d305mm_furlongs\n0+100,40,100,90\n".to_string(),
             "column `d305mm_furlongs``: is not a basin column",
+        ),
+        // A PDDX file (told by its first heading) whose sensor distances outnumber its sensors.
+        (
+            "[Pavement Deflection Data Exchange File]\nPDDXVersionNumber = 2.0\n[Units]\n\
+             LoadPlateRadiusUnits = millimeter\nLoadUnits = kilo-Newton\nDeflectionUnits = micron\n\
+             SensorLocationUnits = millimeter\n[Device Configuration]\nLoadPlateRadius = 150\n\
+             NumberOfDeflectionSensors = 2\nDeflectionSensorXAxisDistances = 0, 0, 305\n\
+             [Test Location 1]\nDropData1 = 40, 100, 90\n"
+                .to_string(),
+            "[Device Configuration] DeflectionSensorXAxisDistances`: gives 3 distances for the 2 sensors",
         ),
     ] {
         let o = run(&file, &[]);

@@ -630,7 +630,7 @@ fn design(
 }
 
 /// `liftoff backcalc`: backcalc.json (the survey, SI) of the drops in `basins` (the basin file's
-/// CSV text; `source` names it in errors) on the template scene. `spec` is the JSON of
+/// text, CSV or PDDX; `source` names it in errors) on the template scene. `spec` is the JSON of
 /// {"method", "fit", "contact", "elements", "seating", "static_k_factor", "max_evaluations",
 /// "void_threshold" (m)},
 /// the command line's flags, each optional.
@@ -702,7 +702,7 @@ fn backcalc(
             static_k_factor: spec.static_k_factor.unwrap_or(defaults.static_k_factor),
             void_threshold: spec.void_threshold.unwrap_or(defaults.void_threshold),
         };
-        let drops = liftoff::backcalc::read_basins(basins, source_name)?;
+        let drops = liftoff::backcalc::read_drops(basins, source_name)?;
         let mut file = source(kind, text).parse()?;
         Overrides::from_json(options)?.apply(&mut file);
         liftoff::backcalc::check_template(&file)?;

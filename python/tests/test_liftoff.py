@@ -1063,7 +1063,8 @@ def test_backcalc_recovers_the_bundled_surveys_moduli_as_the_cli():
     example:fwd-panel at E = 32 GPa and k = 70 MN/m³ (45 at station 3+000) with 1 µm of noise
     (examples/fwd_basins.rs). The fit gives k within 2 % and E within 3 % at every station —
     the noise (1 % of the interior basin's centre deflection) moves them by about that — the
-    records carry the basins as arrays, and the same file as text gives the same rows. A fit
+    records carry the basins as arrays, the same file as text gives the same rows, and its
+    interior station as a PDDX file the same fit. A fit
     held to one evaluation raises NotConverged with its rows; a bad row raises SceneError
     naming the station."""
     path = pathlib.Path(__file__).resolve().parents[2] / "examples" / "fwd-basins.csv"
@@ -1089,6 +1090,10 @@ def test_backcalc_recovers_the_bundled_surveys_moduli_as_the_cli():
     with pytest.raises(liftoff.SceneError) as e:
         liftoff.backcalc(bad, "example:fwd-panel")
     assert e.value.field == "station 9+999, drop 1: sensor at 305 mm"
+    # The interior station as a PDDX file (examples/fwd-interior.pdx) fits as its CSV row.
+    pddx = liftoff.backcalc(path.with_name("fwd-interior.pdx"), "example:fwd-panel", seating=1)
+    assert [row["station"] for row in pddx] == ["1.000"]
+    assert pddx[0]["subgrade"] == r[0]["subgrade"] and pddx[0]["slab"] == r[0]["slab"]
 
 
 def test_backcalc_fits_a_joint_and_reports_its_load_transfer():

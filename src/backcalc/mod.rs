@@ -1,12 +1,13 @@
 //! Backcalculation from falling-weight-deflectometer basins (issue 34): what lies under an
 //! existing slab. `infinite.rs` holds the infinite plate under a disk on a dense liquid or an
 //! elastic solid (the closed forms, as Hankel integrals); `area.rs` the AREA method that
-//! inverts them; `basins.rs` the drops as a CSV file reads them; `fit.rs` the least-squares
+//! inverts them; `basins.rs` the drops as a CSV file reads them; `pddx.rs` as an AASHTO PDDX
+//! file reads them, and `read_drops`, which reads either; `fit.rs` the least-squares
 //! fit of a drop on liftoff's own finite model (a template scene), with confidence intervals;
 //! `transfer.rs` a joint drop's load transfer on that model; `survey.rs` every drop of a file,
 //! in parallel; `template.rs` what the template scene says of a drop before any fit (its
 //! panel, the nearest joint, the AREA reading corrected to the panel's size). `infinite`,
-//! `area` and `basins` import only `error` and `units`; `template` imports them and the
+//! `area` and `basins` import only `error` and `units`, `pddx` them too; `template` imports them and the
 //! scene; `fit` imports them, `template` and the entry point (`entry::run`) it solves
 //! through; `transfer` imports `fit`; `survey` imports both.
 
@@ -14,6 +15,7 @@ pub mod area;
 pub mod basins;
 pub mod fit;
 pub mod infinite;
+pub mod pddx;
 pub mod survey;
 pub mod template;
 pub mod transfer;
@@ -27,6 +29,7 @@ pub use fit::{
     fit_drop, model_basin, student_t975, Estimate, Fit, FitOptions, Termination, Unknown,
 };
 pub use infinite::{dimensionless_deflection, Subgrade};
+pub use pddx::{read_drops, read_pddx};
 pub use survey::{
     intercepts, survey, BackcalcMethod, DropResult, Intercept, Survey, SurveyOptions,
 };

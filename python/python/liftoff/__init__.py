@@ -446,8 +446,8 @@ def backcalc(
 ) -> Records:
     """Backcalculate the soil and the slab from deflectometer basins (``liftoff backcalc``).
 
-    ``basins``: a basin file's path, or its CSV text (one row a drop, the units in the column
-    names: README, "Backcalculation"). ``scene``: the template — the slab's size, thickness, ν
+    ``basins``: a basin file's path, or its text: CSV (one row a drop, the units in the column
+    names) or AASHTO PDDX (its drops read as interior ones): README, "Backcalculation". ``scene``: the template — the slab's size, thickness, ν
     and joints, and the soil whose modulus is fitted. ``method``: ``"fit"`` (least squares on
     liftoff's model, with the AREA reading beside it) or ``"area"``; ``fit``: the unknowns,
     ``"subgrade"`` (the soil's ``modulus`` k, or its ``youngs_modulus``), ``"slab"`` (E) and

@@ -44,7 +44,7 @@ pub(crate) enum Command {
     /// The least slab thickness that carries the scene's traffic: damage runs over a range of
     /// thicknesses (the design curve), the target bracketed and the bracket narrowed.
     Design(DesignArgs),
-    /// Backcalculate the soil and the slab from deflectometer basins (a CSV file) on a template
+    /// Backcalculate the soil and the slab from deflectometer basins (a CSV or PDDX file) on a template
     /// scene: the least-squares fit on liftoff's model with 95 % intervals, or the AREA method.
     Backcalc(BackcalcArgs),
     /// Regenerate the paper's Figs. 3–7 (SVG and PNG), paper.json and paper.md.
@@ -359,7 +359,8 @@ pub(crate) struct DesignArgs {
 /// The flags of `backcalc`.
 #[derive(clap::Args)]
 pub(crate) struct BackcalcArgs {
-    /// Basin file (CSV, one row a drop, the units in the column names: README, "Backcalculation").
+    /// Basin file: CSV (one row a drop, the units in the column names) or AASHTO PDDX (its
+    /// drops interior ones): README, "Backcalculation".
     pub(crate) basins: PathBuf,
     /// The template scene (TOML, or `example:NAME`): the slab's size, thickness, ν and joints,
     /// and the soil model whose modulus is fitted; its moduli are where a fit starts when the

@@ -406,7 +406,7 @@ fn backcalc(args: BackcalcArgs) -> Result<(), Failure> {
             source,
         })
     })?;
-    let drops = liftoff::backcalc::read_basins(&text, &path).map_err(Failure::from)?;
+    let drops = liftoff::backcalc::read_drops(&text, &path).map_err(Failure::from)?;
     let file = Source::from_arg(&args.scene)
         .parse()
         .map_err(|e| Failure::in_scene(&args.scene, e))?;
