@@ -143,7 +143,8 @@ impl Backend {
                         split: None,
                     });
                 }
-                let start = if lifted_at_start <= woodbury_limit(ops.k.rows()) {
+                let start = if lifted_at_start <= woodbury_limit(ops.k.rows(), chol.is_supernodal())
+                {
                     let (start, _) = ops.cache.get_or_try_init(|| -> Result<SpringsStart> {
                         let springs: Vec<f64> =
                             layout.bonded_springs.iter().map(|&(_, s)| s).collect();
@@ -325,7 +326,7 @@ impl Backend {
                         None => return Err(Error::numerical("penalty", "no split solver")),
                     }
                 } else {
-                    let limit = woodbury_limit(ops.k.rows());
+                    let limit = woodbury_limit(ops.k.rows(), chol.is_supernodal());
                     match factored {
                         Some(f) if f.changed(&springs).len() <= limit => {
                             let updates: Vec<(usize, f64)> = f

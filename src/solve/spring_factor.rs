@@ -12,6 +12,16 @@
 //! next step, whose changed points mostly repeat this one's, computes only the new ones.
 //! [`woodbury_limit`] says when a new factorisation is cheaper.
 //!
+//! **On a supernodal factor** A = Pᵀ L Lᵀ P (faer's choice for a plate's grid) the identity is
+//! split between the two triangles: with g = L⁻¹ P f and W = L⁻¹ P U,
+//!
+//! u = Pᵀ L⁻ᵀ (g − W r),   (diag(1/δ) + Wᵀ W) r = Wᵀ g,
+//!
+//! one solve's two halves and, per changed point, a forward solve of a unit vector, which
+//! touches only the supernodes on its path to the root (a few hundred of the factor's 20 000
+//! rows on `example:pavement-3x3`) instead of two full triangular solves. The columns of W and
+//! their dot products are kept as Z's are.
+//!
 //! **Between solves** ([`Carry`]): a pass of a load along a lane solves position after position
 //! on the same operators; each position's lifted region differs from the last one's near its
 //! edge only. The factor a solve ended with (and its columns) is handed to the next solve,
@@ -25,22 +35,32 @@ use std::sync::{Arc, Mutex};
 use faer::linalg::solvers::Solve;
 use faer::Mat;
 
-use super::linalg::{sparse_solve, SparseFactor};
+use super::linalg::{sparse_solve, ForwardColumn, SparseFactor};
 use crate::error::{Error, Result};
 
 /// Most changed springs a step solves by an update of the last factor. Measured on
 /// `example:pavement-3x3` (19 809 equations, two cores): a numeric factorisation and its solve
-/// take 17–23 ms, an update 3 ms plus 0.5 ms a new column, so updates pay up to about 30
+/// take 17–23 ms, an update 3 ms plus 0.5 ms a new full column, so updates pay up to about 30
 /// columns there. A factorisation grows like n^1.5 on a plate's grid and a column like n, so the
-/// break-even grows like √n: √n / 4, between 16 and 64.
-pub fn woodbury_limit(n: usize) -> usize {
-    ((n as f64).sqrt() / 4.0).clamp(16.0, 64.0) as usize
+/// break-even grows like √n: √n / 4, between 16 and 64, on a simplicial factor. On a supernodal
+/// one a column is a forward solve along one path of the elimination tree, a small part of a
+/// solve (see the module's description), and updates pay up to about √n points: on a damage run
+/// of 1 800 positions (session 18, pairs) √n took 0.88× the time of √n / 2, and 2√n 1.07–1.14×
+/// that of √n (the k × k system's factorisation grows like k³); √n, between 16 and 256.
+pub fn woodbury_limit(n: usize, supernodal: bool) -> usize {
+    let root = (n as f64).sqrt();
+    if supernodal {
+        root.clamp(16.0, 256.0) as usize
+    } else {
+        (root / 4.0).clamp(16.0, 64.0) as usize
+    }
 }
 
-/// Most Woodbury columns kept for one factor: about 32 MB of them (200 at 19 809 equations),
-/// never fewer than one step may need; past it only the current step's stay.
-fn max_columns(n: usize) -> usize {
-    (4_000_000 / n.max(1)).max(woodbury_limit(n))
+/// Most Woodbury columns kept for one factor: about 32 MB of full columns (200 at 19 809
+/// equations; the supernodal factor's forward columns are shorter), never fewer than one step
+/// may need; past it only the current step's stay.
+fn max_columns(n: usize, supernodal: bool) -> usize {
+    (4_000_000 / n.max(1)).max(woodbury_limit(n, supernodal))
 }
 
 /// A numeric factor of K + diag(springs on the pressure nodes' equations), with the Woodbury
@@ -52,8 +72,12 @@ pub(super) struct Factored {
     pub factor: Arc<SparseFactor>,
     /// Spring stiffness per pressure node that the factor was made with.
     pub springs: Vec<f64>,
-    /// Columns A⁻¹ e_eq, by equation.
+    /// Columns A⁻¹ e_eq, by equation (a simplicial factor).
     columns: HashMap<usize, Arc<Vec<f64>>>,
+    /// Columns L⁻¹ P e_eq, by equation, and their dot products by (smaller, larger) equation
+    /// (a supernodal factor).
+    forward: HashMap<usize, ForwardColumn>,
+    dots: HashMap<(usize, usize), f64>,
 }
 
 impl Factored {
@@ -63,6 +87,8 @@ impl Factored {
             factor,
             springs,
             columns: HashMap::new(),
+            forward: HashMap::new(),
+            dots: HashMap::new(),
         }
     }
 
@@ -81,6 +107,9 @@ impl Factored {
     /// A by Sherman–Morrison–Woodbury (see the module's description); columns not yet known are
     /// computed together and kept.
     pub fn woodbury_solve(&mut self, f: &[f64], updates: &[(usize, f64)]) -> Result<Vec<f64>> {
+        if self.factor.is_supernodal() {
+            return self.woodbury_split(f, updates);
+        }
         let n = f.len();
         let k = updates.len();
         let mut y = f.to_vec();
@@ -88,7 +117,7 @@ impl Factored {
         if k == 0 {
             return Ok(y);
         }
-        if self.columns.len() > max_columns(n) {
+        if self.columns.len() > max_columns(n, false) {
             // Keep memory bounded: the columns this step needs stay, the rest go.
             let wanted: std::collections::HashSet<usize> =
                 updates.iter().map(|&(i, _)| i).collect();
@@ -141,6 +170,68 @@ impl Factored {
     }
 }
 
+impl Factored {
+    /// [`woodbury_solve`](Self::woodbury_solve) on a supernodal factor, split between its
+    /// triangles (see the module's description).
+    fn woodbury_split(&mut self, f: &[f64], updates: &[(usize, f64)]) -> Result<Vec<f64>> {
+        let n = f.len();
+        let lost = || Error::numerical("penalty (low-rank update)", "not a supernodal factor");
+        let mut g = self.factor.forward(f).ok_or_else(lost)?;
+        let k = updates.len();
+        if k > 0 {
+            if self.forward.len() > max_columns(n, true) {
+                // Keep memory bounded: the columns this step needs stay, the rest go.
+                let wanted: std::collections::HashSet<usize> =
+                    updates.iter().map(|&(i, _)| i).collect();
+                self.forward.retain(|i, _| wanted.contains(i));
+                self.dots
+                    .retain(|(a, b), _| wanted.contains(a) && wanted.contains(b));
+            }
+            for &(i, _) in updates {
+                if !self.forward.contains_key(&i) {
+                    let column = self.factor.forward_unit(i).ok_or_else(lost)?;
+                    self.forward.insert(i, column);
+                }
+            }
+            let cols: Vec<&ForwardColumn> = updates
+                .iter()
+                .map(|(i, _)| self.forward.get(i).ok_or_else(lost))
+                .collect::<Result<_>>()?;
+            let mut m = Mat::<f64>::zeros(k, k);
+            for a in 0..k {
+                for b in a..k {
+                    let (i, j) = (updates[a].0, updates[b].0);
+                    let key = (i.min(j), i.max(j));
+                    let d = match self.dots.get(&key) {
+                        Some(&d) => d,
+                        None => {
+                            let d = cols[a].dot(cols[b]);
+                            self.dots.insert(key, d);
+                            d
+                        }
+                    };
+                    m[(a, b)] = d;
+                    m[(b, a)] = d;
+                }
+                m[(a, a)] += 1.0 / updates[a].1;
+            }
+            let mut rhs = Mat::<f64>::from_fn(k, 1, |a, _| cols[a].dot_dense(&g));
+            m.partial_piv_lu().solve_in_place(rhs.as_mut());
+            for (a, col) in cols.iter().enumerate() {
+                col.add_to(-rhs[(a, 0)], &mut g);
+            }
+        }
+        let u = self.factor.backward(g).ok_or_else(lost)?;
+        if u.iter().any(|v| !v.is_finite()) {
+            return Err(Error::numerical(
+                "penalty (low-rank update)",
+                "non-finite values",
+            ));
+        }
+        Ok(u)
+    }
+}
+
 /// What one penalty solve hands the next on the same operators (see the module's description):
 /// the Winkler spring system's last factor and its columns. Empty on every other route. One
 /// `Carry` serves one sequence of solves; solves running side by side each need their own.
@@ -190,8 +281,9 @@ mod tests {
     use super::*;
     use crate::solve::linalg::SparseCholesky;
 
-    /// A 1-D chain of springs (tridiagonal SPD) with extra diagonal springs: the update from the
-    /// factor of one diagonal equals a direct factorisation of the other, column cache or not.
+    /// A 1-D chain of springs (tridiagonal SPD) with extra diagonal springs, factored
+    /// simplicially: the update from the factor of one diagonal equals a direct factorisation of
+    /// the other, column cache or not.
     #[test]
     fn an_update_equals_a_new_factorisation_and_reuses_its_columns() {
         let n = 40;
@@ -210,6 +302,8 @@ mod tests {
         let a = matrix(&base);
         let chol = SparseCholesky::analyse_ordered(&a, None).expect("analysis");
         let factor = Arc::new(chol.factor(&a, "test").expect("factor"));
+        // A chain is factored simplicially: this test holds the full columns' path.
+        assert!(!factor.is_supernodal());
         let k = Arc::new(a);
         let mut f = Factored::new(k, factor, base.clone());
         let rhs: Vec<f64> = (0..n).map(|i| (i as f64 * 0.3).sin()).collect();
@@ -238,5 +332,90 @@ mod tests {
         }
         // 3, 17, 30, 31, 38: five columns computed, 3 and 17 once.
         assert_eq!(f.columns.len(), 5);
+    }
+
+    /// A plate-like grid (three unknowns a node, a 9-point stencil on 50 × 50 nodes, every
+    /// unknown of a node coupled to every unknown of its neighbours, SPD by its diagonal), whose
+    /// factor faer makes supernodal: the update split between the triangles equals a direct
+    /// factorisation of the changed matrix, for springs added and springs taken away, and its
+    /// forward columns are those of the full forward solve.
+    #[test]
+    fn a_split_update_on_a_supernodal_factor_equals_a_new_factorisation() {
+        let side = 50;
+        let n = 3 * side * side;
+        let matrix = |extra: &[f64]| -> sprs::CsMat<f64> {
+            let mut t = sprs::TriMat::new((n, n));
+            for i in 0..side {
+                for j in 0..side {
+                    let a = i * side + j;
+                    for da in 0..3 {
+                        t.add_triplet(3 * a + da, 3 * a + da, 8.5 + extra[3 * a + da]);
+                        for db in (da + 1)..3 {
+                            t.add_triplet(3 * a + da, 3 * a + db, -0.1);
+                            t.add_triplet(3 * a + db, 3 * a + da, -0.1);
+                        }
+                    }
+                    for (di, dj) in [(0, 1), (1, -1), (1, 0), (1, 1)] {
+                        let (p, q) = (i as i64 + di, j as i64 + dj);
+                        if p < side as i64 && (0..side as i64).contains(&q) {
+                            let b = p as usize * side + q as usize;
+                            for da in 0..3 {
+                                for db in 0..3 {
+                                    t.add_triplet(3 * a + da, 3 * b + db, -1.0 / 3.0);
+                                    t.add_triplet(3 * b + db, 3 * a + da, -1.0 / 3.0);
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+            t.to_csc()
+        };
+        let base: Vec<f64> = (0..n).map(|i| 0.5 + 0.001 * (i % 7) as f64).collect();
+        let a = matrix(&base);
+        let chol = SparseCholesky::analyse_ordered(&a, None).expect("analysis");
+        let factor = Arc::new(chol.factor(&a, "test").expect("factor"));
+        assert!(factor.is_supernodal(), "the test needs a supernodal factor");
+        // A forward column from the unit vector alone is the full forward solve's column.
+        for eq in [0, 777, n - 1] {
+            let mut e = vec![0.0; n];
+            e[eq] = 1.0;
+            let full = factor.forward(&e).expect("supernodal");
+            let column = factor.forward_unit(eq).expect("supernodal");
+            let mut sparse = vec![0.0; n];
+            column.add_to(1.0, &mut sparse);
+            // Round-off of a few hundred products of entries below 1 in size: 1e-13.
+            for (p, q) in sparse.iter().zip(&full) {
+                assert!((p - q).abs() <= 1e-13, "{p} vs {q}");
+            }
+            assert!((column.dot(&column) - crate::solve::linalg::dot(&full, &full)).abs() < 1e-13);
+        }
+        let mut f = Factored::new(Arc::new(a), factor, base.clone());
+        let rhs: Vec<f64> = (0..n).map(|i| (i as f64 * 0.37).cos()).collect();
+        for changed in [vec![5usize, 400, 401, 1210], vec![5, 400, 999, 2699, 1351]] {
+            let mut springs = base.clone();
+            for &i in &changed {
+                // Springs added (×40) and nearly removed (×1e-6), as a penalty step does.
+                springs[i] = if i % 2 == 0 { 20.0 } else { 5e-7 };
+            }
+            let updates: Vec<(usize, f64)> = f
+                .changed(&springs)
+                .into_iter()
+                .map(|j| (j, springs[j] - base[j]))
+                .collect();
+            let u = f.woodbury_solve(&rhs, &updates).expect("update");
+            let direct = chol.factor(&matrix(&springs), "test").expect("factor");
+            let mut v = rhs.clone();
+            sparse_solve(&direct, &mut v);
+            // Condition number below 1e3 (diagonal 8.5 + springs against off-diagonal sums of
+            // 8): 1e-11 relative is three orders above double precision's round-off through it.
+            let scale = v.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+            for (p, q) in u.iter().zip(&v) {
+                assert!((p - q).abs() <= 1e-11 * scale, "{p} vs {q}");
+            }
+        }
+        // Seven distinct points: seven forward columns, 5 and 400 computed once.
+        assert_eq!(f.forward.len(), 7);
+        assert!(f.columns.is_empty());
     }
 }
