@@ -17,7 +17,8 @@
 //!
 //! u = Pᵀ L⁻ᵀ (g − W r),   (diag(1/δ) + Wᵀ W) r = Wᵀ g,
 //!
-//! one solve's two halves and, per changed point, a forward solve of a unit vector, which
+//! one solve's two halves (the forward half once for the steps of a solve, which share f) and,
+//! per changed point, a forward solve of a unit vector, which
 //! touches only the supernodes on its path to the root (a few hundred of the factor's 20 000
 //! rows on `example:pavement-3x3`) instead of two full triangular solves. The columns of W and
 //! their dot products are kept as Z's are.
@@ -78,6 +79,9 @@ pub(super) struct Factored {
     /// (a supernodal factor).
     forward: HashMap<usize, ForwardColumn>,
     dots: HashMap<(usize, usize), f64>,
+    /// The last right-hand side f and its L⁻¹ P f (a supernodal factor): the steps of one solve
+    /// share f, so only the first of them solves forward.
+    last_rhs: Option<(Vec<f64>, Vec<f64>)>,
 }
 
 impl Factored {
@@ -89,6 +93,7 @@ impl Factored {
             columns: HashMap::new(),
             forward: HashMap::new(),
             dots: HashMap::new(),
+            last_rhs: None,
         }
     }
 
@@ -176,7 +181,14 @@ impl Factored {
     fn woodbury_split(&mut self, f: &[f64], updates: &[(usize, f64)]) -> Result<Vec<f64>> {
         let n = f.len();
         let lost = || Error::numerical("penalty (low-rank update)", "not a supernodal factor");
-        let mut g = self.factor.forward(f).ok_or_else(lost)?;
+        let mut g = match &self.last_rhs {
+            Some((rhs, g)) if rhs.as_slice() == f => g.clone(),
+            _ => {
+                let g = self.factor.forward(f).ok_or_else(lost)?;
+                self.last_rhs = Some((f.to_vec(), g.clone()));
+                g
+            }
+        };
         let k = updates.len();
         if k > 0 {
             if self.forward.len() > max_columns(n, true) {
