@@ -129,7 +129,9 @@ impl Picture for DesignCurve<'_> {
                     c3.stroke_width(LINE_WIDTH),
                 ))
                 .map_err(txt)?
-                .label(format!("least thickness {}", super::short(h)))
+                // To the table's four decimals: three significant digits would show the
+                // thickness a search step below (0.2775 m as 0.277).
+                .label(format!("least thickness {h:.4}"))
                 .legend(move |(x, y)| {
                     PathElement::new(vec![(x, y), (x + 20, y)], c3.stroke_width(LINE_WIDTH))
                 });
