@@ -54,6 +54,8 @@ use crate::units::{FOOT, INCH, POUND_FORCE};
 /// that is not blank or a comment: a `[Section]` heading is PDDX. `source` names the file in
 /// errors.
 pub fn read_drops(text: &str, source: &str) -> Result<Vec<Drop>> {
+    // A byte-order mark, as Windows tools write one, is not part of the text.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let first = text
         .lines()
         .map(str::trim)
@@ -501,6 +503,14 @@ DropData_0 = 40, 110, 80, 95, 62
                 assert!((x - y).abs() < 1e-15);
             }
         }
+    }
+
+    #[test]
+    fn a_byte_order_mark_does_not_hide_the_format() {
+        let d = read_drops(&format!("\u{feff}{FILE}"), "f.pdx").expect("pddx");
+        assert_eq!(d.len(), 3);
+        let csv = "\u{feff}station,load_kN,d0mm_um,d305mm_um\nA,40,100,90\n";
+        assert_eq!(read_drops(csv, "f.csv").expect("csv")[0].station, "A");
     }
 
     #[test]
