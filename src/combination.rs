@@ -218,6 +218,40 @@ pub(crate) fn assemble_for(problem: &Problem, models: &[Model], what: &str) -> R
     Ok(Operators::assemble_shared_with(models, toeplitz))
 }
 
+/// Runs a core may hold side by side on the iterative route ([`side_by_side`]).
+const RUNS_PER_CORE: usize = 5;
+
+/// How many of `runs` runs of positions (each a chain of warm-started solves) to solve side by
+/// side on `base`. On the iterative route (T by FFT) every conjugate-gradient product is a solve
+/// with the plate's factor, and threads on one assembly share those solves in batches
+/// ([`crate::solve::linalg::PlateInverse::apply`]: eight right-hand sides cost about 2.3 single
+/// ones on the half-space lane's plate, the factor read from memory once), so as many runs as
+/// there are — up to [`RUNS_PER_CORE`] a core and what `[solver] memory_limit` allows, each run
+/// holding its own iterative state ([`budget::iterative_bytes`]). Elsewhere the cores.
+pub(crate) fn side_by_side(problem: &Problem, base: &Operators, runs: usize) -> usize {
+    let cores = rayon::current_num_threads().max(1);
+    if !matches!(base.t.as_ref(), crate::foundation::Compliance::Toeplitz(_)) {
+        return cores;
+    }
+    let fit = (problem.memory_limit / budget::iterative_bytes(&base.mesh)).floor() as usize;
+    runs.min(RUNS_PER_CORE * cores).min(fit).max(cores)
+}
+
+/// `work` on a pool of `threads` threads when that is wider than rayon's own — a pool named
+/// [`crate::solve::linalg::SHARING_POOL`], on which the plate's solves batch ([`side_by_side`])
+/// — else on rayon's.
+pub(crate) fn on_threads<R: Send>(threads: usize, work: impl FnOnce() -> R + Send) -> Result<R> {
+    if threads <= rayon::current_num_threads() {
+        return Ok(work());
+    }
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .thread_name(|i| format!("{}-{i}", crate::solve::linalg::SHARING_POOL))
+        .build()
+        .map_err(|e| Error::numerical("threads", format!("a pool of {threads} threads: {e}")))?;
+    Ok(pool.install(work))
+}
+
 /// Where an extreme occurs and which combination gives it.
 #[derive(Debug, Clone, Serialize)]
 pub struct Extreme {

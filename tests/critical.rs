@@ -444,6 +444,63 @@ fn the_search_is_the_same_on_any_number_of_threads() {
     assert_eq!(drop_time(&part), drop_time(&one)[run..].to_vec());
 }
 
+/// On the iterative route (the half-space's T by FFT) the search runs its runs side by side on
+/// more threads than cores, which share the plate's solves in batches: called on one thread,
+/// its three runs (21 positions) go to a pool of three, whose solves batch whatever the
+/// machine's cores. Every position equals that position searched alone (a run of one, on one
+/// thread, nothing batched) to 1e-7 relative: each is a penalty solve whose conjugate
+/// gradients stop at 1e-10 relative (warm against cold start, batched against single
+/// triangular solves, which sum in another order), which leaves the stresses within ~1e-9;
+/// 1e-7 is that with a margin, far below any change a wrong batched answer would make.
+#[test]
+fn runs_side_by_side_on_the_iterative_route_share_solves_without_changing_answers() {
+    let night = SLAB
+        .replace(
+            "model = \"winkler\"\nmodulus = 27e6",
+            "model = \"half-space\"\nyoungs_modulus = 1e8\npoissons_ratio = 0.35",
+        )
+        .replace(
+            "poissons_ratio = 0.15",
+            "poissons_ratio = 0.15\nthermal_expansion = 1e-5",
+        )
+        .replace(
+            "[mesh]\nelements = [60, 48]",
+            "[[load]]\nkind = \"temperature\"\ndifference = -10.0\n[mesh]\nelements = [30, 24]\n[solver]\nroute = \"iterative\"",
+        );
+    assert!(night.contains("half-space") && night.contains("iterative"));
+    let file = problem(&night);
+    let one_thread = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .expect("pool");
+    let all = options([21, 1], true);
+    let search = one_thread
+        .install(|| critical(&file, &all, &liftoff::Monitor::NONE))
+        .expect("search");
+    assert_eq!(search.positions.len(), 21);
+    for (i, p) in search.positions.iter().enumerate() {
+        assert_eq!(p.outcome, RunOutcome::CONVERGED, "position {i}");
+        let alone = CriticalOptions {
+            indices: Some(vec![i]),
+            ..options([21, 1], true)
+        };
+        let a = one_thread
+            .install(|| critical(&file, &alone, &liftoff::Monitor::NONE))
+            .expect("alone");
+        let q = &a.positions[0];
+        for (name, x, y) in [
+            ("bottom", p.bottom, q.bottom),
+            ("top", p.top, q.top),
+            ("w_max", p.w_max, q.w_max),
+        ] {
+            assert!(
+                (x - y).abs() <= 1e-7 * x.abs().max(y.abs()),
+                "{name} at position {i}: side by side {x}, alone {y}"
+            );
+        }
+    }
+}
+
 /// Without `combination`, the search moves the load in the first combination it acts in: a
 /// combination ahead of it without the load's case (night curling alone) is passed over, and
 /// the one named in the result is the first with a factor on `traffic` ("axle"). One position

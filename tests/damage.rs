@@ -534,6 +534,45 @@ fn a_pass_that_does_not_converge_is_named_and_left_out() {
     );
 }
 
+/// On the iterative route (a half-space, T by FFT) the families run side by side on more threads
+/// than cores and share the plate's solves in batches: called on one thread, the four families
+/// (four climate bins) go to a pool of four. Its damage maps equal those of each family solved alone (a part of one
+/// family: nothing batched) merged, to 1e-9 of the largest damage ([`same_maps`]: the solver's
+/// tolerance between two runs of one problem, raised to the relation's power; batched and
+/// single triangular solves differ in round-off only).
+#[test]
+fn families_side_by_side_on_the_iterative_route_give_the_parts_damage() {
+    let text = slab(TWO_BINS)
+        .replace(
+            "model = \"winkler\"\nmodulus = 8.0e7",
+            "model = \"half-space\"\nyoungs_modulus = 1.0e8\npoissons_ratio = 0.35",
+        )
+        .replace("[solver]\n", "[solver]\nroute = \"iterative\"\n")
+        .replace(
+            "difference = -6.0\nshare = 0.4",
+            "difference = -6.0\nshare = 0.2\n[[climate.bin]]\ndifference = -3.0\nshare = 0.1\n[[climate.bin]]\ndifference = 4.0\nshare = 0.1",
+        );
+    assert!(text.contains("half-space") && text.contains("iterative"));
+    assert!(text.contains("difference = 4.0"));
+    let p = Problem::from_toml(&text).expect("scene");
+    let one_thread = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .expect("pool");
+    let whole = one_thread
+        .install(|| damage(&p, &Monitor::NONE))
+        .expect("damage");
+    assert!(whole.complete);
+    let part = |f: &[usize]| {
+        one_thread
+            .install(|| liftoff::study::damage_part(&p, f, &Monitor::NONE))
+            .expect("part")
+    };
+    let parts = (0..4).map(|f| part(&[f])).collect();
+    let merged = liftoff::study::damage_merge(&p, parts).expect("merge");
+    same_maps(&whole, &merged);
+}
+
 /// A run split by families over workers: each part solved on its own, carried as bytes, the
 /// parts merged — the same sums, passes and governing places as the one-process run, to the
 /// bit (each family is solved the same way wherever it runs). Parts that leave a family out,

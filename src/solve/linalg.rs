@@ -14,6 +14,7 @@ use faer::sparse::linalg::cholesky::{
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
 use faer::{Mat, MatMut, Par, Side};
 
+use super::combiner::Combiner;
 use crate::error::{Error, Result};
 use crate::operators::Operators;
 
@@ -383,6 +384,9 @@ pub struct PlateInverse {
     /// Reduced index of each equation (None for fixed ones).
     map: Vec<Option<usize>>,
     n_red: usize,
+    /// Solves asked for at once by several threads (positions solved side by side on one
+    /// assembly) run as one solve with several right-hand sides ([`Combiner`]).
+    combiner: Combiner<Vec<f64>>,
 }
 
 impl PlateInverse {
@@ -393,10 +397,19 @@ impl PlateInverse {
         let order = crate::mesh::equation_order(&ops.mesh, &ops.dofs, |e| map[e].is_some());
         let chol = SparseCholesky::analyse_ordered(&kr, Some(&order))?;
         let llt = chol.factor(&kr, "plate stiffness (generalised inverse)")?;
-        Ok(Self { llt, map, n_red })
+        Ok(Self {
+            llt,
+            map,
+            n_red,
+            combiner: Combiner::default(),
+        })
     }
 
-    /// K⁻ r for one vector.
+    /// K⁻ r for one vector. On a pool built to share these solves ([`SHARING_POOL`]: more
+    /// positions side by side than cores) it is solved in one batch with the vectors other
+    /// threads ask for at the same time; elsewhere alone: on a pool no wider than the cores the
+    /// threads' solves run each on its own core, which a batch would only serialise (measured:
+    /// 1.19× slower on two runs of the half-space lane).
     pub fn apply(&self, r: &[f64]) -> Vec<f64> {
         let mut red = vec![0.0; self.n_red];
         for (e, m) in self.map.iter().enumerate() {
@@ -404,7 +417,11 @@ impl PlateInverse {
                 red[*i] = r[e];
             }
         }
-        sparse_solve(&self.llt, &mut red);
+        if in_sharing_pool() {
+            red = self.combiner.run(red, |batch| self.solve_reduced(batch));
+        } else {
+            sparse_solve(&self.llt, &mut red);
+        }
         let mut out = vec![0.0; r.len()];
         for (e, m) in self.map.iter().enumerate() {
             if let Some(i) = m {
@@ -412,6 +429,27 @@ impl PlateInverse {
             }
         }
         out
+    }
+
+    /// The reduced system solved for each vector of `batch`, all in one solve.
+    fn solve_reduced(&self, mut batch: Vec<Vec<f64>>) -> Vec<Vec<f64>> {
+        if let [one] = batch.as_mut_slice() {
+            sparse_solve(&self.llt, one);
+            return batch;
+        }
+        let mut block = Mat::<f64>::from_fn(self.n_red, batch.len(), |i, j| batch[j][i]);
+        self.llt.solve_in_place(block.as_mut());
+        for (j, v) in batch.iter_mut().enumerate() {
+            for (i, x) in v.iter_mut().enumerate() {
+                *x = block[(i, j)];
+            }
+        }
+        batch
+    }
+
+    /// The widest batch of solves served so far (1: every solve was asked for alone).
+    pub fn widest_batch(&self) -> usize {
+        self.combiner.widest()
     }
 
     /// K⁻ R for the columns of a dense n_eq × m matrix, in place (rows of fixed equations are
@@ -436,6 +474,17 @@ impl PlateInverse {
             }
         }
     }
+}
+
+/// The name (a prefix) of the threads of a pool built to solve positions side by side on one
+/// assembly, whose plate solves [`PlateInverse::apply`] batches.
+pub const SHARING_POOL: &str = "liftoff-shared-solves";
+
+/// Whether this thread belongs to a pool named [`SHARING_POOL`].
+fn in_sharing_pool() -> bool {
+    std::thread::current()
+        .name()
+        .is_some_and(|n| n.starts_with(SHARING_POOL))
 }
 
 /// A dense Cholesky factor L (A = L Lᵀ) with the parallelism it was made with.

@@ -11,11 +11,12 @@
 //! `penalty.rs` (its linear steps in `penalty_step.rs`, `spring_factor.rs` (the Winkler factor's
 //! updates and its handoff between solves), `low_rank.rs` and the iterative route `iterative/`) and the QP solvers under `qp/`; below them all sit `solution.rs` (what a solve
 //! returns), `diagnostics.rs` (what each solver reports), `checks.rs` (feasibility, equilibrium,
-//! the discrete gap), `projection.rs` (the projection onto {σ ≥ 0, Cᵀσ = b}: the active-set QP's
+//! the discrete gap), `combiner.rs` (concurrent solves served as one batch), `projection.rs` (the projection onto {σ ≥ 0, Cᵀσ = b}: the active-set QP's
 //! and the feasibility check's) and `linalg.rs`.
 
 pub mod bonded;
 mod checks;
+mod combiner;
 mod diagnostics;
 mod dispatch;
 pub mod iterative;

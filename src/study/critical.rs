@@ -30,7 +30,7 @@ use super::critical_grid::{grid, Grid};
 pub use super::critical_grid::{Along, CriticalOptions, Edge, Footprint, JointLine};
 use super::RunOutcome;
 use crate::analysis;
-use crate::combination::assemble_for;
+use crate::combination::{assemble_for, on_threads, side_by_side};
 use crate::error::{Error, Result};
 use crate::model::{Model, SymmetryMode};
 use crate::monitor::{Cases, Monitor};
@@ -441,79 +441,91 @@ pub fn critical(
     let runs = runs(&picked);
     let cases = Cases::new(monitor, models.len());
     let inner = cases.inner();
-    let solved: Vec<Result<Vec<Position>>> = runs
-        .par_iter()
-        .map(|r| &work[r.clone()])
-        .map(|run| {
-            let mut out = Vec::with_capacity(run.len());
-            // The last two converged answers of the run and their points: a position in line
-            // with them, a step on, starts from their extrapolation (the lifted region moves
-            // with the load), any other from the last answer.
-            let mut last: Vec<([f64; 3], Vec<f64>)> = Vec::with_capacity(2);
-            // A warm run also hands each solve's last factor to the next ([`Carry`]).
-            let carry = Carry::new();
-            for &(i, model) in run {
-                let t = Instant::now();
-                let [x, y, heading] = points[i];
-                let ops = base.loaded(model);
-                let start = start_from(&last, points[i]);
-                let (warm, carried) = if options.warm {
-                    (start.as_deref(), Some(&carry))
-                } else {
-                    (None, None)
-                };
-                let result =
-                    analysis::run_carried(model, &ops, &problem.method, 0.0, warm, carried, &inner);
-                let position = match result {
-                    Err(e @ Error::Cancelled(_)) => return Err(e),
-                    Ok(r) => {
-                        let s = &r.summary;
-                        if s.converged {
-                            if last.len() == 2 {
-                                last.remove(0);
+    // On the iterative route more runs than cores, which share the plate's solves.
+    let threads = side_by_side(problem, &base, runs.len());
+    let solved: Vec<Result<Vec<Position>>> = on_threads(threads, || {
+        runs.par_iter()
+            .map(|r| &work[r.clone()])
+            .map(|run| {
+                let mut out = Vec::with_capacity(run.len());
+                // The last two converged answers of the run and their points: a position in line
+                // with them, a step on, starts from their extrapolation (the lifted region moves
+                // with the load), any other from the last answer.
+                let mut last: Vec<([f64; 3], Vec<f64>)> = Vec::with_capacity(2);
+                // A warm run also hands each solve's last factor to the next ([`Carry`]).
+                let carry = Carry::new();
+                for &(i, model) in run {
+                    let t = Instant::now();
+                    let [x, y, heading] = points[i];
+                    let ops = base.loaded(model);
+                    let start = start_from(&last, points[i]);
+                    let (warm, carried) = if options.warm {
+                        (start.as_deref(), Some(&carry))
+                    } else {
+                        (None, None)
+                    };
+                    let result = analysis::run_carried(
+                        model,
+                        &ops,
+                        &problem.method,
+                        0.0,
+                        warm,
+                        carried,
+                        &inner,
+                    );
+                    let position = match result {
+                        Err(e @ Error::Cancelled(_)) => return Err(e),
+                        Ok(r) => {
+                            let s = &r.summary;
+                            if s.converged {
+                                if last.len() == 2 {
+                                    last.remove(0);
+                                }
+                                last.push((points[i], r.solution.sigma.clone()));
                             }
-                            last.push((points[i], r.solution.sigma.clone()));
+                            Position {
+                                x,
+                                y,
+                                heading,
+                                outcome: RunOutcome::Solved(r.solution.status.kind()),
+                                iterations: s.iterations,
+                                bottom: s.stresses.bottom.value,
+                                bottom_at: [s.stresses.bottom.x, s.stresses.bottom.y],
+                                top: s.stresses.top.value,
+                                top_at: [s.stresses.top.x, s.stresses.top.y],
+                                w_max: s.w_max,
+                                contact_fraction: s.contact_fraction,
+                                joint_shear: largest(
+                                    s.joints.iter().map(|j| j.max_shear_per_length),
+                                ),
+                                dowel_force: largest(s.joints.iter().map(|j| j.max_dowel_force)),
+                                time_s: t.elapsed().as_secs_f64(),
+                            }
                         }
-                        Position {
+                        Err(e) => Position {
                             x,
                             y,
                             heading,
-                            outcome: RunOutcome::Solved(r.solution.status.kind()),
-                            iterations: s.iterations,
-                            bottom: s.stresses.bottom.value,
-                            bottom_at: [s.stresses.bottom.x, s.stresses.bottom.y],
-                            top: s.stresses.top.value,
-                            top_at: [s.stresses.top.x, s.stresses.top.y],
-                            w_max: s.w_max,
-                            contact_fraction: s.contact_fraction,
-                            joint_shear: largest(s.joints.iter().map(|j| j.max_shear_per_length)),
-                            dowel_force: largest(s.joints.iter().map(|j| j.max_dowel_force)),
+                            outcome: RunOutcome::Failed(e.kind()),
+                            iterations: 0,
+                            bottom: f64::NAN,
+                            bottom_at: [f64::NAN; 2],
+                            top: f64::NAN,
+                            top_at: [f64::NAN; 2],
+                            w_max: f64::NAN,
+                            contact_fraction: f64::NAN,
+                            joint_shear: None,
+                            dowel_force: None,
                             time_s: t.elapsed().as_secs_f64(),
-                        }
-                    }
-                    Err(e) => Position {
-                        x,
-                        y,
-                        heading,
-                        outcome: RunOutcome::Failed(e.kind()),
-                        iterations: 0,
-                        bottom: f64::NAN,
-                        bottom_at: [f64::NAN; 2],
-                        top: f64::NAN,
-                        top_at: [f64::NAN; 2],
-                        w_max: f64::NAN,
-                        contact_fraction: f64::NAN,
-                        joint_shear: None,
-                        dowel_force: None,
-                        time_s: t.elapsed().as_secs_f64(),
-                    },
-                };
-                cases.finish(&format!("({x:.2}, {y:.2}) m, {heading}°"))?;
-                out.push(position);
-            }
-            Ok(out)
-        })
-        .collect();
+                        },
+                    };
+                    cases.finish(&format!("({x:.2}, {y:.2}) m, {heading}°"))?;
+                    out.push(position);
+                }
+                Ok(out)
+            })
+            .collect()
+    })?;
     let mut positions = Vec::with_capacity(models.len());
     for part in solved {
         positions.extend(part?);

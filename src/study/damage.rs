@@ -60,7 +60,7 @@ use rayon::prelude::*;
 
 use super::RunOutcome;
 use crate::analysis;
-use crate::combination::assemble_for;
+use crate::combination::{assemble_for, on_threads, side_by_side};
 use crate::damage::plan::{Bin, DamagePlan};
 use crate::damage::relations::{DamageModel, Mepdg};
 use crate::error::{Error, Result};
@@ -285,134 +285,140 @@ fn solve_part(
     };
     // Each pass: the largest σ₁ of each face over its positions, per element; the middle
     // levels of a family from its ends where their contact sets agree.
-    let solved: Vec<Result<Vec<(usize, PassStress)>>> = families
-        .par_iter()
-        .map(|family| {
-            // The family's levels are solved position by position: at each position the
-            // lowest level (and with the interpolation the highest) starts from its own last
-            // two positions, extrapolated, and the factor its last solve ended with (`Carry`);
-            // every other level starts from the level below it at the same position — its
-            // pressures and its factor, which differ from its own at few points, so its steps
-            // are low-rank updates rather than factorisations.
-            let ends = plan.interpolate && family.len() >= 3;
-            let n = family.len();
-            // Solve order: the ends first when the middle may be interpolated from them.
-            let order: Vec<usize> = if ends {
-                let mut o = vec![0, n - 1];
-                o.extend(1..n - 1);
-                o
-            } else {
-                (0..n).collect()
-            };
-            let anchor = |j: usize| j == 0 || (ends && j == n - 1);
-            let base = base_of(bins[family[0]].climate);
-            // The corners' deflections at rest in this family's climate bin (empty: no
-            // erosion), and what a position's deflections there add to them.
-            let at_rest: &[f64] = rest
-                .get(bins[family[0]].climate)
-                .and_then(|r| r.as_deref())
-                .unwrap_or(&[]);
-            let caused =
-                |w: &[f64]| -> Vec<f64> { w.iter().zip(at_rest).map(|(a, b)| a - b).collect() };
-            let mut stress: Vec<PassStress> = vec![PassStress::default(); n];
-            let carries: Vec<Carry> = (0..n).map(|_| Carry::new()).collect();
-            // Each level's answers at its last two solved positions, for the extrapolation.
-            let mut last: Vec<[Option<Vec<f64>>; 2]> = vec![[None, None]; n];
-            let positions = passes[family[0]].len();
-            for p in 0..positions {
-                let mut kept: [Option<Kept>; 2] = [None, None];
-                // The answer at this position of the level solved just below, with its carry.
-                let mut below: Option<(usize, Vec<f64>)> = None;
-                for &j in &order {
-                    let i = family[j];
-                    if stress[j].outcome != RunOutcome::CONVERGED {
-                        continue;
-                    }
-                    if ends && !anchor(j) {
-                        if let [Some(lo), Some(hi)] = &kept {
-                            if lo.signature == hi.signature && lo.penalty == hi.penalty {
-                                let (a, b) = (level(family[0]), level(family[n - 1]));
-                                // Equal ends: every level between is the same load.
-                                let t = if b > a { (level(i) - a) / (b - a) } else { 0.0 };
-                                // The stress components are linear in the load; σ₁ is not: it
-                                // is taken from the interpolated components.
-                                let (bottom, top) =
-                                    (lo.bottom.mix(&hi.bottom, t), lo.top.mix(&hi.top, t));
-                                // The deflections are linear in the load on one contact set.
-                                let w: Vec<f64> = (lo.corners.iter().zip(&hi.corners))
-                                    .map(|(a, b)| (1.0 - t) * a + t * b)
-                                    .collect();
-                                stress[j].take(&bottom, &top, &lo.x, &lo.y, &caused(&w));
-                                stress[j].interpolated += 1;
-                                last[j] = [None, None];
-                                continue;
+    // On the iterative route more families than cores, which share the plate's solves.
+    let threads = bases
+        .first()
+        .map_or(1, |b| side_by_side(problem, b, families.len()));
+    let solved: Vec<Result<Vec<(usize, PassStress)>>> = on_threads(threads, || {
+        families
+            .par_iter()
+            .map(|family| {
+                // The family's levels are solved position by position: at each position the
+                // lowest level (and with the interpolation the highest) starts from its own last
+                // two positions, extrapolated, and the factor its last solve ended with (`Carry`);
+                // every other level starts from the level below it at the same position — its
+                // pressures and its factor, which differ from its own at few points, so its steps
+                // are low-rank updates rather than factorisations.
+                let ends = plan.interpolate && family.len() >= 3;
+                let n = family.len();
+                // Solve order: the ends first when the middle may be interpolated from them.
+                let order: Vec<usize> = if ends {
+                    let mut o = vec![0, n - 1];
+                    o.extend(1..n - 1);
+                    o
+                } else {
+                    (0..n).collect()
+                };
+                let anchor = |j: usize| j == 0 || (ends && j == n - 1);
+                let base = base_of(bins[family[0]].climate);
+                // The corners' deflections at rest in this family's climate bin (empty: no
+                // erosion), and what a position's deflections there add to them.
+                let at_rest: &[f64] = rest
+                    .get(bins[family[0]].climate)
+                    .and_then(|r| r.as_deref())
+                    .unwrap_or(&[]);
+                let caused =
+                    |w: &[f64]| -> Vec<f64> { w.iter().zip(at_rest).map(|(a, b)| a - b).collect() };
+                let mut stress: Vec<PassStress> = vec![PassStress::default(); n];
+                let carries: Vec<Carry> = (0..n).map(|_| Carry::new()).collect();
+                // Each level's answers at its last two solved positions, for the extrapolation.
+                let mut last: Vec<[Option<Vec<f64>>; 2]> = vec![[None, None]; n];
+                let positions = passes[family[0]].len();
+                for p in 0..positions {
+                    let mut kept: [Option<Kept>; 2] = [None, None];
+                    // The answer at this position of the level solved just below, with its carry.
+                    let mut below: Option<(usize, Vec<f64>)> = None;
+                    for &j in &order {
+                        let i = family[j];
+                        if stress[j].outcome != RunOutcome::CONVERGED {
+                            continue;
+                        }
+                        if ends && !anchor(j) {
+                            if let [Some(lo), Some(hi)] = &kept {
+                                if lo.signature == hi.signature && lo.penalty == hi.penalty {
+                                    let (a, b) = (level(family[0]), level(family[n - 1]));
+                                    // Equal ends: every level between is the same load.
+                                    let t = if b > a { (level(i) - a) / (b - a) } else { 0.0 };
+                                    // The stress components are linear in the load; σ₁ is not: it
+                                    // is taken from the interpolated components.
+                                    let (bottom, top) =
+                                        (lo.bottom.mix(&hi.bottom, t), lo.top.mix(&hi.top, t));
+                                    // The deflections are linear in the load on one contact set.
+                                    let w: Vec<f64> = (lo.corners.iter().zip(&hi.corners))
+                                        .map(|(a, b)| (1.0 - t) * a + t * b)
+                                        .collect();
+                                    stress[j].take(&bottom, &top, &lo.x, &lo.y, &caused(&w));
+                                    stress[j].interpolated += 1;
+                                    last[j] = [None, None];
+                                    continue;
+                                }
                             }
                         }
-                    }
-                    let own = match &last[j] {
-                        [Some(now), Some(before)] => {
-                            Some(now.iter().zip(before).map(|(a, b)| 2.0 * a - b).collect())
-                        }
-                        [Some(now), None] => Some(now.clone()),
-                        _ => None,
-                    };
-                    // A middle level: from the level below at this position when it was solved
-                    // here (its factor handed over), else from its own last positions.
-                    // (Starting a middle level from the ends' interpolation instead was tried: its
-                    // set is further from the factor handed over, and the run took 40 % longer.)
-                    // An anchor keeps its own carry for its next position; a middle level's is
-                    // wanted only by the level above it here, which takes it (memory: two
-                    // factors a family, not one a level).
-                    let (start, carry) = match &below {
-                        Some((k, sigma)) if !anchor(j) => (
-                            Some(sigma.clone()),
-                            if anchor(*k) {
-                                carries[*k].share()
-                            } else {
-                                carries[*k].take()
-                            },
-                        ),
-                        _ => (own, carries[j].share()),
-                    };
-                    let position = solve(&passes[i][p], base, start.as_deref(), &carry)?;
-                    stress[j].solves += 1;
-                    match position {
-                        Position::Failed(outcome) => {
-                            stress[j].outcome = outcome;
-                        }
-                        Position::Solved(r) => {
-                            carries[j].put_from(carry);
-                            let e = &r.report.elements;
-                            // One solved field a family, for the maps' grid (a field a level
-                            // was 0.9 GB on the 18 000-case run).
-                            if stress.iter().all(|s| s.field.is_none()) {
-                                stress[j].field = Some(r.report.field.clone());
+                        let own = match &last[j] {
+                            [Some(now), Some(before)] => {
+                                Some(now.iter().zip(before).map(|(a, b)| 2.0 * a - b).collect())
                             }
-                            let w = corners.map_or(Vec::new(), |c| c.read(&r.report.field));
-                            stress[j].take(&e.bottom.s1, &e.top.s1, &e.x, &e.y, &caused(&w));
-                            if ends && anchor(j) {
-                                kept[usize::from(j != 0)] = Some(Kept::of(&r, w));
+                            [Some(now), None] => Some(now.clone()),
+                            _ => None,
+                        };
+                        // A middle level: from the level below at this position when it was solved
+                        // here (its factor handed over), else from its own last positions.
+                        // (Starting a middle level from the ends' interpolation instead was tried: its
+                        // set is further from the factor handed over, and the run took 40 % longer.)
+                        // An anchor keeps its own carry for its next position; a middle level's is
+                        // wanted only by the level above it here, which takes it (memory: two
+                        // factors a family, not one a level).
+                        let (start, carry) = match &below {
+                            Some((k, sigma)) if !anchor(j) => (
+                                Some(sigma.clone()),
+                                if anchor(*k) {
+                                    carries[*k].share()
+                                } else {
+                                    carries[*k].take()
+                                },
+                            ),
+                            _ => (own, carries[j].share()),
+                        };
+                        let position = solve(&passes[i][p], base, start.as_deref(), &carry)?;
+                        stress[j].solves += 1;
+                        match position {
+                            Position::Failed(outcome) => {
+                                stress[j].outcome = outcome;
                             }
-                            let now = r.solution.sigma.clone();
-                            let previous = last[j][0].take();
-                            last[j] = [Some(now.clone()), previous];
-                            // The highest level, solved before the middle when they may be
-                            // interpolated, is not the one below them.
-                            if !(ends && j == n - 1) {
-                                below = Some((j, now));
+                            Position::Solved(r) => {
+                                carries[j].put_from(carry);
+                                let e = &r.report.elements;
+                                // One solved field a family, for the maps' grid (a field a level
+                                // was 0.9 GB on the 18 000-case run).
+                                if stress.iter().all(|s| s.field.is_none()) {
+                                    stress[j].field = Some(r.report.field.clone());
+                                }
+                                let w = corners.map_or(Vec::new(), |c| c.read(&r.report.field));
+                                stress[j].take(&e.bottom.s1, &e.top.s1, &e.x, &e.y, &caused(&w));
+                                if ends && anchor(j) {
+                                    kept[usize::from(j != 0)] = Some(Kept::of(&r, w));
+                                }
+                                let now = r.solution.sigma.clone();
+                                let previous = last[j][0].take();
+                                last[j] = [Some(now.clone()), previous];
+                                // The highest level, solved before the middle when they may be
+                                // interpolated, is not the one below them.
+                                if !(ends && j == n - 1) {
+                                    below = Some((j, now));
+                                }
                             }
                         }
                     }
                 }
-            }
-            let mut out = Vec::with_capacity(n);
-            for (j, s) in stress.into_iter().enumerate() {
-                cases.finish(&label(plan, &bins[family[j]]))?;
-                out.push((family[j], s));
-            }
-            Ok(out)
-        })
-        .collect();
+                let mut out = Vec::with_capacity(n);
+                for (j, s) in stress.into_iter().enumerate() {
+                    cases.finish(&label(plan, &bins[family[j]]))?;
+                    out.push((family[j], s));
+                }
+                Ok(out)
+            })
+            .collect()
+    })?;
     let mut part = DamagePart {
         bins: Vec::new(),
         stresses: Vec::new(),
