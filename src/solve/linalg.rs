@@ -130,7 +130,11 @@ impl SparseCholesky {
 impl SparseFactor {
     /// Solve A X = B in place for the columns of B.
     pub fn solve_in_place(&self, rhs: MatMut<'_, f64>) {
-        let par = faer::get_global_parallelism();
+        self.solve_in_place_with(rhs, faer::get_global_parallelism());
+    }
+
+    /// [`SparseFactor::solve_in_place`] with the parallelism `par`.
+    pub fn solve_in_place_with(&self, rhs: MatMut<'_, f64>, par: Par) {
         let mut mem = MemBuffer::new(
             self.symbolic
                 .solve_in_place_scratch::<f64>(rhs.ncols(), par),
@@ -431,14 +435,19 @@ impl PlateInverse {
         out
     }
 
-    /// The reduced system solved for each vector of `batch`, all in one solve.
+    /// The reduced system solved for each vector of `batch`, all in one solve. Sequential
+    /// whatever faer's global parallelism: a batch solved on rayon could, while waiting for a
+    /// stolen half, itself steal another position's plate solve, which would wait for this
+    /// batch — for itself.
     fn solve_reduced(&self, mut batch: Vec<Vec<f64>>) -> Vec<Vec<f64>> {
+        let n = self.n_red;
         if let [one] = batch.as_mut_slice() {
-            sparse_solve(&self.llt, one);
+            self.llt
+                .solve_in_place_with(MatMut::from_column_major_slice_mut(one, n, 1), Par::Seq);
             return batch;
         }
-        let mut block = Mat::<f64>::from_fn(self.n_red, batch.len(), |i, j| batch[j][i]);
-        self.llt.solve_in_place(block.as_mut());
+        let mut block = Mat::<f64>::from_fn(n, batch.len(), |i, j| batch[j][i]);
+        self.llt.solve_in_place_with(block.as_mut(), Par::Seq);
         for (j, v) in batch.iter_mut().enumerate() {
             for (i, x) in v.iter_mut().enumerate() {
                 *x = block[(i, j)];
