@@ -224,7 +224,7 @@ const RUNS_PER_CORE: usize = 5;
 /// How many of `runs` runs of positions (each a chain of warm-started solves) to solve side by
 /// side on `base`. On the iterative route (T by FFT) every conjugate-gradient product is a solve
 /// with the plate's factor, and threads on one assembly share those solves in batches
-/// ([`crate::solve::linalg::PlateInverse::apply`]: eight right-hand sides cost about 2.3 single
+/// ([`crate::solve::linalg::PlateInverse::apply`]: eight right-hand sides cost 1.6–2.2 single
 /// ones on the half-space lane's plate, the factor read from memory once), so as many runs as
 /// there are — up to [`RUNS_PER_CORE`] a core and what `[solver] memory_limit` allows, each run
 /// holding its own iterative state ([`budget::iterative_bytes`]). Elsewhere the cores.
