@@ -15,6 +15,16 @@
 //! not wrap: 4 forward and 4 inverse real 2-D FFTs and 16 spectral products per application,
 //! O(N log N) time and O(N) memory for N pressure nodes.
 //!
+//! Two things make the product cheaper than that count. The pair kernels are symmetric,
+//! c I_ab(d) = c I_ba(−d) (as [`symmetric`] stores them), and the spectrum of a real field
+//! reflected through the origin is the conjugate of its spectrum, so K̂_ba = conj(K̂_ab) where
+//! the offsets a product reads are symmetric about zero — on a whole plate (a reduced model
+//! reads from −(2n − 1) to n − 1 along its reduced direction, and its padding is not wide
+//! enough for the reflected range): there 10 spectra are kept and the 16 products read them in
+//! one pass. And a padded field is zero outside the whole plate's rows, and only the model's
+//! rows are read back: the row transforms of the other rows (about half of them on a whole
+//! plate) are skipped, their spectra zero.
+//!
 //! A symmetry-reduced model's T includes the settlement of the mirror images of its pressure
 //! (see [`super::pairs`]): that is the same correlation on the whole plate with the pressure
 //! extended by mirroring, σ(x) = σ(|x|) across each symmetry line. Only the model's own elements
@@ -83,8 +93,11 @@ pub struct ToeplitzCompliance {
     m: [usize; 2],
     /// Where the model's elements sit in the whole plate (n_d if reduced along d, else 0).
     shift: [usize; 2],
-    /// Kernel spectra, 16 of H2 × M1 (H2 = M2/2 + 1), index a·4 + b.
+    /// Kernel spectra of H2 × M1 (H2 = M2/2 + 1): on a whole plate the 10 with a ≤ b in
+    /// [`pair_index`]'s order (K̂_ba = conj(K̂_ab)), on a reduced model all 16 at a·4 + b.
     kernels: Vec<Vec<Complex<f64>>>,
+    /// Whether the offsets read are symmetric about zero, so that 10 spectra are kept.
+    mirrored: bool,
     /// On a jointed mesh, the unknown read at corner b of whole-plate element (I, J), at
     /// (b · N1 + I) · N2 + J; `None` on a plain grid (the node |I + b_x − shift| …).
     gather: Option<Vec<u32>>,
@@ -115,6 +128,7 @@ impl Clone for ToeplitzCompliance {
             m: self.m,
             shift: self.shift,
             kernels: self.kernels.clone(),
+            mirrored: self.mirrored,
             gather: self.gather.clone(),
             diag: self.diag.clone(),
             r2c: self.r2c.clone(),
@@ -132,6 +146,12 @@ impl Clone for ToeplitzCompliance {
 /// symmetrised the same way, entry by entry.
 fn symmetric(table: &PairTable, di: isize, dj: isize, a: usize, b: usize) -> f64 {
     0.5 * (table.get(di, dj, a, b) + table.get(-di, -dj, b, a))
+}
+
+/// Where the spectrum of the pair kernel (a, b), a ≤ b, is kept among the 10.
+fn pair_index(a: usize, b: usize) -> usize {
+    debug_assert!(a <= b && b < 4);
+    a * 4 - a * (a + 1) / 2 + b
 }
 
 /// Whole-plate node positions (I, J) that the model node (i, j) stands for: itself, and its
@@ -192,6 +212,7 @@ impl ToeplitzCompliance {
             m,
             shift,
             kernels: Vec::new(),
+            mirrored: shift == [0, 0],
             gather: gather_map(mesh, shift),
             diag: Vec::new(),
             r2c,
@@ -213,10 +234,14 @@ impl ToeplitzCompliance {
             (full[1] - 1 - shift[1]) as isize,
         ];
         let wrap = |d: isize, len: usize| (-d).rem_euclid(len as isize) as usize;
+        debug_assert_eq!(op.mirrored, lo[0] == -hi[0] && lo[1] == -hi[1]);
         let mut kernels = Vec::with_capacity(16);
         let mut field = vec![0.0; m[0] * m[1]];
         for a in 0..4 {
             for b in 0..4 {
+                if op.mirrored && b < a {
+                    continue;
+                }
                 field.iter_mut().for_each(|v| *v = 0.0);
                 for di in lo[0]..=hi[0] {
                     let row = wrap(di, m[0]) * m[1];
@@ -225,7 +250,7 @@ impl ToeplitzCompliance {
                     }
                 }
                 let mut spec = vec![Complex::new(0.0, 0.0); h2 * m[0]];
-                op.forward(&mut field, &mut spec, &mut scratch);
+                op.forward(&mut field, m[0], &mut spec, &mut scratch);
                 kernels.push(spec);
             }
         }
@@ -294,36 +319,47 @@ impl ToeplitzCompliance {
         }
     }
 
-    /// Real field (M1 × M2, row-major) → spectrum [k2][k1]. Destroys `field`.
-    fn forward(&self, field: &mut [f64], spec: &mut [Complex<f64>], s: &mut Scratch) {
+    /// Real field (M1 × M2, row-major) → spectrum [k2][k1]. Only the first `rows` rows are
+    /// read: the others are taken as zero (their row transforms skipped). Destroys `field`.
+    fn forward(&self, field: &mut [f64], rows: usize, spec: &mut [Complex<f64>], s: &mut Scratch) {
         let [m1, m2] = self.m;
         let h2 = m2 / 2 + 1;
-        for i in 0..m1 {
+        let rows = rows.min(m1);
+        for i in 0..rows {
             let input = &mut field[i * m2..(i + 1) * m2];
             let output = &mut s.rows[i * h2..(i + 1) * h2];
             // Lengths match the plan by construction; the transform cannot fail.
             let _ = self.r2c.process_with_scratch(input, output, &mut s.work);
         }
-        for i in 0..m1 {
-            for k in 0..h2 {
-                spec[k * m1 + i] = s.rows[i * h2 + k];
+        let zero = Complex::new(0.0, 0.0);
+        for (k, column) in spec.chunks_exact_mut(m1).enumerate() {
+            for (i, v) in column[..rows].iter_mut().enumerate() {
+                *v = s.rows[i * h2 + k];
             }
+            column[rows..].iter_mut().for_each(|v| *v = zero);
         }
         self.fwd.process_with_scratch(spec, &mut s.work);
     }
 
-    /// Spectrum [k2][k1] → real field (M1 × M2), scaled by 1/(M1 M2). Destroys `spec`.
-    fn inverse(&self, spec: &mut [Complex<f64>], field: &mut [f64], s: &mut Scratch) {
+    /// Spectrum [k2][k1] → real field (M1 × M2), scaled by 1/(M1 M2), on the rows `read` only
+    /// (the others are left as they were). Destroys `spec`.
+    fn inverse(
+        &self,
+        spec: &mut [Complex<f64>],
+        field: &mut [f64],
+        read: std::ops::Range<usize>,
+        s: &mut Scratch,
+    ) {
         let [m1, m2] = self.m;
         let h2 = m2 / 2 + 1;
         self.inv.process_with_scratch(spec, &mut s.work);
         let scale = 1.0 / (m1 * m2) as f64;
-        for k in 0..h2 {
-            for i in 0..m1 {
-                s.rows[i * h2 + k] = spec[k * m1 + i] * scale;
+        for (k, column) in spec.chunks_exact(m1).enumerate() {
+            for i in read.clone() {
+                s.rows[i * h2 + k] = column[i] * scale;
             }
         }
-        for i in 0..m1 {
+        for i in read {
             let input = &mut s.rows[i * h2..(i + 1) * h2];
             // A real field's spectrum is real at k2 = 0 and (M2 even) at the Nyquist index; drop
             // the round-off there, which the real inverse transform refuses.
@@ -356,8 +392,7 @@ impl ToeplitzCompliance {
     }
 
     fn apply_with(&self, x: &[f64], y: &mut [f64], s: &mut Scratch) {
-        let [m1, m2] = self.m;
-        let h2 = m2 / 2 + 1;
+        let m2 = self.m[1];
         let full = self.mesh.full_elements();
         let shift = self.shift;
         let nx1 = self.mesh.nodes_x();
@@ -368,7 +403,12 @@ impl ToeplitzCompliance {
         let mut spec = std::mem::take(&mut s.spec);
         let mut out = std::mem::take(&mut s.out);
         for (b, field) in real.iter_mut().enumerate() {
-            field.iter_mut().for_each(|v| *v = 0.0);
+            // The gather writes every cell of the whole plate; of the rest only the padding of
+            // its rows is read (the row transforms of the other rows are skipped), and the
+            // last product's outputs and the transforms' scratch use leave it dirty.
+            for row in field.chunks_exact_mut(m2).take(full[0]) {
+                row[full[1]..].iter_mut().for_each(|v| *v = 0.0);
+            }
             if let Some(gather) = &self.gather {
                 let at = &gather[b * full[0] * full[1]..(b + 1) * full[0] * full[1]];
                 // A cell outside a shaped plate reads no pressure (DEAD).
@@ -390,21 +430,12 @@ impl ToeplitzCompliance {
             }
         }
         for b in 0..4 {
-            self.forward(&mut real[b], &mut spec[b], s);
+            self.forward(&mut real[b], full[0], &mut spec[b], s);
         }
-        // y_a = Σ_b K_ab w_b, frequency by frequency.
-        let len = h2 * m1;
+        self.products(&spec, &mut out);
+        let read = shift[0]..shift[0] + self.mesh.nx;
         for (a, o) in out.iter_mut().enumerate() {
-            let k = &self.kernels[a * 4..a * 4 + 4];
-            for f in 0..len {
-                o[f] = k[0][f] * spec[0][f]
-                    + k[1][f] * spec[1][f]
-                    + k[2][f] * spec[2][f]
-                    + k[3][f] * spec[3][f];
-            }
-        }
-        for (a, o) in out.iter_mut().enumerate() {
-            self.inverse(o, &mut real[a], s);
+            self.inverse(o, &mut real[a], read.clone(), s);
         }
         // Scatter: node i collects y_a of each model element having it as local node a.
         y.iter_mut().for_each(|v| *v = 0.0);
@@ -426,6 +457,49 @@ impl ToeplitzCompliance {
         s.real = real;
         s.spec = spec;
         s.out = out;
+    }
+
+    /// y_a = Σ_b K̂_ab w_b, frequency by frequency.
+    fn products(&self, spec: &[Vec<Complex<f64>>], out: &mut [Vec<Complex<f64>>]) {
+        if !self.mirrored {
+            for (a, o) in out.iter_mut().enumerate() {
+                let k = &self.kernels[a * 4..a * 4 + 4];
+                for f in 0..o.len() {
+                    o[f] = k[0][f] * spec[0][f]
+                        + k[1][f] * spec[1][f]
+                        + k[2][f] * spec[2][f]
+                        + k[3][f] * spec[3][f];
+                }
+            }
+            return;
+        }
+        // One pass over the 10 kept spectra (K̂_ba = conj(K̂_ab)).
+        let k = &self.kernels;
+        let [k00, k01, k02, k03, k11, k12, k13, k22, k23, k33] = [
+            &k[pair_index(0, 0)],
+            &k[pair_index(0, 1)],
+            &k[pair_index(0, 2)],
+            &k[pair_index(0, 3)],
+            &k[pair_index(1, 1)],
+            &k[pair_index(1, 2)],
+            &k[pair_index(1, 3)],
+            &k[pair_index(2, 2)],
+            &k[pair_index(2, 3)],
+            &k[pair_index(3, 3)],
+        ];
+        let [w0, w1, w2, w3] = [&spec[0], &spec[1], &spec[2], &spec[3]];
+        let [o0, o1, o2, o3] = out else {
+            return;
+        };
+        for f in 0..o0.len() {
+            let (a, b, c, d) = (w0[f], w1[f], w2[f], w3[f]);
+            let (p01, p02, p03) = (k01[f], k02[f], k03[f]);
+            let (p12, p13, p23) = (k12[f], k13[f], k23[f]);
+            o0[f] = k00[f] * a + p01 * b + p02 * c + p03 * d;
+            o1[f] = p01.conj() * a + k11[f] * b + p12 * c + p13 * d;
+            o2[f] = p02.conj() * a + p12.conj() * b + k22[f] * c + p23 * d;
+            o3[f] = p03.conj() * a + p13.conj() * b + p23.conj() * c + k33[f] * d;
+        }
     }
 
     /// T_ij from the pair table, summing the model element pairs and their mirror images.
@@ -537,7 +611,8 @@ fn gather_map(mesh: &Mesh, shift: [usize; 2]) -> Option<Vec<u32>> {
     Some(gather)
 }
 
-/// Bytes a [`ToeplitzCompliance`] of `mesh` holds: 16 kernel spectra and 8 work arrays of the
+/// Bytes a [`ToeplitzCompliance`] of `mesh` holds: 16 kernel spectra (10 on a whole plate) and
+/// 8 work arrays of the
 /// padded grid, the pair table while it is built (16 doubles per whole-plate offset), and the
 /// diagonal.
 pub fn toeplitz_bytes(mesh: &Mesh) -> usize {
@@ -547,7 +622,8 @@ pub fn toeplitz_bytes(mesh: &Mesh) -> usize {
         fft_size(full[1] + mesh.ny - 1),
     ];
     let h2 = m[1] / 2 + 1;
-    let spectra = (16 + 4 + 4 + 1) * h2 * m[0] * 16;
+    let kernels = if mesh.sym_x || mesh.sym_y { 16 } else { 10 };
+    let spectra = (kernels + 4 + 4 + 1) * h2 * m[0] * 16;
     let real = 4 * m[0] * m[1] * 8;
     let table = full[0] * full[1] * 16 * 8;
     let gather = if mesh.topo.is_some() {
