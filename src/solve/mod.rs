@@ -12,7 +12,8 @@
 //! updates and its handoff between solves), `low_rank.rs` and the iterative route `iterative/`) and the QP solvers under `qp/`; below them all sit `solution.rs` (what a solve
 //! returns), `diagnostics.rs` (what each solver reports), `checks.rs` (feasibility, equilibrium,
 //! the discrete gap), `combiner.rs` (concurrent solves served as one batch), `projection.rs` (the projection onto {σ ≥ 0, Cᵀσ = b}: the active-set QP's
-//! and the feasibility check's) and `linalg.rs`.
+//! and the feasibility check's), `linalg.rs` and, on it, `supernodal.rs` (a supernodal factor's
+//! triangles one at a time).
 
 pub mod bonded;
 mod checks;
@@ -30,6 +31,7 @@ pub mod qp;
 pub mod rigid_split;
 mod solution;
 mod spring_factor;
+pub mod supernodal;
 
 pub use checks::{check_equilibrium, check_feasible, discrete_gap, EQUILIBRIUM_TOLERANCE};
 pub use diagnostics::{ActiveSetDiagnostics, CgReport, KktResiduals, QpDiagnostics};

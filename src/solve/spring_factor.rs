@@ -36,7 +36,8 @@ use std::sync::{Arc, Mutex};
 use faer::linalg::solvers::Solve;
 use faer::Mat;
 
-use super::linalg::{sparse_solve, ForwardColumn, SparseFactor};
+use super::linalg::{sparse_solve, SparseFactor};
+use super::supernodal::ForwardColumn;
 use crate::error::{Error, Result};
 
 /// Most changed springs a step solves by an update of the last factor. Measured on
