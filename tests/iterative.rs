@@ -285,3 +285,44 @@ fn the_solver_flag_selects_the_route() {
         "auto takes the matrix-free QP there"
     );
 }
+
+/// `[solver] cg_tolerance` reaches the penalty's confirming solves: at 1e-8 the answer is the
+/// default's (1e-10) to what a residual of 1e-8 allows — the error in σ is about κ·1e-8 of its
+/// scale, and the contact set is confirmed all the same; 1e-5 relative leaves room for the
+/// conditioning (on this case the difference is 6e-8) — its last step's residual is below 1e-8
+/// but not forced below 1e-10 (8e-9 against 6e-11 here), and it takes no more CG iterations
+/// than the default (93 against 102 here).
+#[test]
+fn the_cg_tolerance_key_sets_the_confirming_solves() {
+    let scene = |extra: &str| {
+        let text = liftoff::examples::scene("paper-halfspace").unwrap_or_default();
+        let text = text.replace("elements = [16, 16]", "elements = [48, 48]");
+        let text = text.replace(
+            "[solver]",
+            &format!("[solver]\nroute = \"iterative\"\n{extra}"),
+        );
+        Problem::from_toml(&text).unwrap_or_else(|e| panic!("scene ({extra}): {e}"))
+    };
+    let (default, loose) = (scene(""), scene("cg_tolerance = 1e-8"));
+    match (&default.method, &loose.method) {
+        (Method::Penalty(d), Method::Penalty(l)) => {
+            assert_eq!(d.cg.tolerance, 1e-10, "the default");
+            assert_eq!(l.cg.tolerance, 1e-8, "the key");
+        }
+        other => panic!("the paper's scene is solved by the penalty: {other:?}"),
+    }
+    let ops = Operators::assemble_with(&default.model, true);
+    let a = liftoff::solve(&ops, &default.method).expect("default tolerance");
+    let b = liftoff::solve(&ops, &loose.method).expect("cg_tolerance = 1e-8");
+    assert!(a.status.converged() && b.status.converged());
+    let ds = rel_diff(&b.sigma, &a.sigma);
+    assert!(ds < 1e-5, "σ differs by {ds:e}");
+    let last = |s: &Solution| s.history.last().and_then(|h| h.cg).expect("CG report");
+    assert!(last(&b).residual <= 1e-8, "residual {}", last(&b).residual);
+    assert!(last(&a).residual <= 1e-10, "residual {}", last(&a).residual);
+    let (na, nb) = (
+        a.info.cg_iterations.expect("CG count"),
+        b.info.cg_iterations.expect("CG count"),
+    );
+    assert!(nb <= na, "1e-8 took {nb} CG iterations, 1e-10 {na}");
+}

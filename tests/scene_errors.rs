@@ -66,6 +66,16 @@ fn bad_values_name_their_field() {
             "[solver]\nmax_iterations = 0\n[mesh]",
             "solver.max_iterations",
         ),
+        (
+            "[mesh]",
+            "[solver]\ncg_tolerance = 1e-3\n[mesh]",
+            "solver.cg_tolerance",
+        ),
+        (
+            "[mesh]",
+            "[solver]\ncg_tolerance = 0.0\n[mesh]",
+            "solver.cg_tolerance",
+        ),
     ];
     for (from, to, field) in cases {
         assert!(BASE.contains(from), "case setup: {from}");

@@ -196,9 +196,25 @@ fn solver(s: &SolverSpec) -> Result<(Method, f64)> {
             format!("must lie in 1..=10000, got {}", s.max_iterations),
         ));
     }
+    let mut cg = penalty.cg;
+    if let Some(t) = s.cg_tolerance {
+        // Tighter than 1e-14 the residual cannot fall in double precision; looser than the
+        // loose steps' 1e-4 the confirming solve would not confirm the set.
+        if !(1e-14..=cg.loose_tolerance).contains(&t) {
+            return Err(Error::invalid(
+                "solver.cg_tolerance",
+                format!(
+                    "must lie in 1e-14 ..= {:e}, got {t}; the default is {:e} (1e-8 gives stresses to about 7 digits, faster)",
+                    cg.loose_tolerance, cg.tolerance
+                ),
+            ));
+        }
+        cg.tolerance = t;
+    }
     let penalty = PenaltySettings {
         max_iterations: s.max_iterations as usize,
         start: s.start,
+        cg,
         ..penalty
     };
     let method = match s.contact {
