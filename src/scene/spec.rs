@@ -479,7 +479,8 @@ pub struct SolverSpec {
     #[serde(default)]
     pub start: Start,
     /// The penalty's confirming conjugate-gradient tolerance on the iterative route (default
-    /// 1e-10; 1e-8 is about 1.2× faster with stresses to about 7 digits, BENCHMARKS.md).
+    /// 1e-10; 1e-8 took 0.81–0.91× the time on the half-space lane, stresses to 8e-8,
+    /// BENCHMARKS.md).
     #[serde(default)]
     pub cg_tolerance: Option<f64>,
 }
