@@ -612,9 +612,8 @@ fn gather_map(mesh: &Mesh, shift: [usize; 2]) -> Option<Vec<u32>> {
 }
 
 /// Bytes a [`ToeplitzCompliance`] of `mesh` holds: 16 kernel spectra (10 on a whole plate) and
-/// 8 work arrays of the
-/// padded grid, the pair table while it is built (16 doubles per whole-plate offset), and the
-/// diagonal.
+/// 8 work arrays of the padded grid, the pair table while it is built (16 doubles per
+/// whole-plate offset), and the diagonal.
 pub fn toeplitz_bytes(mesh: &Mesh) -> usize {
     let full = mesh.full_elements();
     let m = [
