@@ -152,4 +152,33 @@ mod tests {
         let exact = 1.0 / (3.0 * 3f64.sqrt());
         assert!((g - exact).abs() < 1e-4 * exact, "{g} vs {exact}");
     }
+
+    /// A published interior deflection: Huang, *Pavement Analysis and Design*, 2nd ed. (2004),
+    /// the examples of §4.1 (pp. 151–160; E = 4·10⁶ psi, ν = 0.15, h = 10 in, k = 100 pci, a
+    /// 10 000 lb load on a disk of 6 in radius): ℓ = 42.97 in, interior deflection 0.0067 in
+    /// (the values as transcribed in the test file of a course site, ictuillinois/CEE-406,
+    /// `westergaard/equations.test.mjs`). The book gives two digits: the Hankel integral must
+    /// round to them (within half a unit of the last, 0.75 %). Westergaard's closed form with
+    /// the disk's correction, Δ = P/(8kℓ²)·{1 + [ln(a/2ℓ) + γ − 5/4](a/ℓ)²/(2π)} (γ − 5/4 =
+    /// −0.673), is the expansion of the same integral to second order in α = a/ℓ: it must
+    /// agree to O(α⁴) ≈ 4e-4 here (0.1 % allowed).
+    #[test]
+    fn a_published_interior_deflection() {
+        let (e, nu, h, k, p, a): (f64, f64, f64, f64, f64, f64) =
+            (4.0e6, 0.15, 10.0, 100.0, 10_000.0, 6.0);
+        let l = (e * h.powi(3) / (12.0 * (1.0 - nu * nu) * k)).powf(0.25);
+        assert!((l - 42.97).abs() < 0.005, "ℓ = {l}");
+        let alpha = a / l;
+        let w = p / (k * l * l) * dimensionless_deflection(Subgrade::DenseLiquid, 0.0, alpha);
+        assert!((w - 0.0067).abs() <= 0.00005, "interior deflection {w} in");
+        let gamma = 0.577_215_664_901_532_9;
+        let westergaard = p / (8.0 * k * l * l)
+            * (1.0
+                + ((alpha / 2.0).ln() + gamma - 1.25) * alpha * alpha
+                    / (2.0 * std::f64::consts::PI));
+        assert!(
+            (w - westergaard).abs() < 1e-3 * westergaard,
+            "{w} against Westergaard's {westergaard}"
+        );
+    }
 }
