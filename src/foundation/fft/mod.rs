@@ -72,11 +72,11 @@ pub fn fft_size(n: usize) -> usize {
 /// Buffers of one application, reused from call to call.
 struct Scratch {
     /// Four element fields (real, M1 × M2), then the four outputs.
-    real: Vec<Vec<f64>>,
+    real: [Vec<f64>; 4],
     /// Their spectra, [k2][k1] (H2 × M1).
-    spec: Vec<Vec<Complex<f64>>>,
+    spec: [Vec<Complex<f64>>; 4],
     /// The four output spectra.
-    out: Vec<Vec<Complex<f64>>>,
+    out: [Vec<Complex<f64>>; 4],
     /// One row-transform result (M1 × H2), transposed into `spec`.
     rows: Vec<Complex<f64>>,
     /// Work space of the transforms.
@@ -311,9 +311,9 @@ impl ToeplitzCompliance {
             .max(self.fwd.get_inplace_scratch_len())
             .max(self.inv.get_inplace_scratch_len());
         Scratch {
-            real: vec![vec![0.0; m1 * m2]; 4],
-            spec: vec![vec![Complex::new(0.0, 0.0); h2 * m1]; 4],
-            out: vec![vec![Complex::new(0.0, 0.0); h2 * m1]; 4],
+            real: std::array::from_fn(|_| vec![0.0; m1 * m2]),
+            spec: std::array::from_fn(|_| vec![Complex::new(0.0, 0.0); h2 * m1]),
+            out: std::array::from_fn(|_| vec![Complex::new(0.0, 0.0); h2 * m1]),
             rows: vec![Complex::new(0.0, 0.0); m1 * h2],
             work: vec![Complex::new(0.0, 0.0); work],
         }
@@ -460,7 +460,7 @@ impl ToeplitzCompliance {
     }
 
     /// y_a = Σ_b K̂_ab w_b, frequency by frequency.
-    fn products(&self, spec: &[Vec<Complex<f64>>], out: &mut [Vec<Complex<f64>>]) {
+    fn products(&self, spec: &[Vec<Complex<f64>>; 4], out: &mut [Vec<Complex<f64>>; 4]) {
         if !self.mirrored {
             for (a, o) in out.iter_mut().enumerate() {
                 let k = &self.kernels[a * 4..a * 4 + 4];
@@ -488,9 +488,7 @@ impl ToeplitzCompliance {
             &k[pair_index(3, 3)],
         ];
         let [w0, w1, w2, w3] = [&spec[0], &spec[1], &spec[2], &spec[3]];
-        let [o0, o1, o2, o3] = out else {
-            return;
-        };
+        let [o0, o1, o2, o3] = out;
         for f in 0..o0.len() {
             let (a, b, c, d) = (w0[f], w1[f], w2[f], w3[f]);
             let (p01, p02, p03) = (k01[f], k02[f], k03[f]);
