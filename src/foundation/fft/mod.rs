@@ -106,7 +106,10 @@ pub struct ToeplitzCompliance {
     c2r: Arc<dyn ComplexToReal<f64>>,
     fwd: Arc<dyn Fft<f64>>,
     inv: Arc<dyn Fft<f64>>,
-    scratch: Mutex<Option<Scratch>>,
+    /// Work buffers kept between products: one set per product that ran at the same time as
+    /// others (runs solved side by side share T), so that no product allocates and clears its
+    /// own after the first.
+    scratch: Mutex<Vec<Scratch>>,
 }
 
 impl std::fmt::Debug for ToeplitzCompliance {
@@ -135,7 +138,7 @@ impl Clone for ToeplitzCompliance {
             c2r: self.c2r.clone(),
             fwd: self.fwd.clone(),
             inv: self.inv.clone(),
-            scratch: Mutex::new(None),
+            scratch: Mutex::new(Vec::new()),
         }
     }
 }
@@ -219,7 +222,7 @@ impl ToeplitzCompliance {
             c2r,
             fwd,
             inv,
-            scratch: Mutex::new(None),
+            scratch: Mutex::new(Vec::new()),
         };
         let mut scratch = op.new_scratch();
         // Offsets d = (source − target) in whole-plate elements: d ∈ [−(shift + n − 1), full −
@@ -256,7 +259,10 @@ impl ToeplitzCompliance {
         }
         op.kernels = kernels;
         op.diag = op.diagonal(table);
-        *op.scratch.get_mut().unwrap_or_else(|e| e.into_inner()) = Some(scratch);
+        op.scratch
+            .get_mut()
+            .unwrap_or_else(|e| e.into_inner())
+            .push(scratch);
         op
     }
 
@@ -290,7 +296,8 @@ impl ToeplitzCompliance {
         &self.diag
     }
 
-    /// Bytes held: kernel spectra, one set of scratch buffers, the diagonal.
+    /// Bytes held: kernel spectra, one set of scratch buffers (and one more for each product
+    /// that ran beside another, the most that ran at once), the diagonal.
     pub fn bytes(&self) -> usize {
         toeplitz_bytes(&self.mesh)
     }
@@ -379,16 +386,15 @@ impl ToeplitzCompliance {
 
     /// y = T x into a caller's buffer.
     pub fn apply_into(&self, x: &[f64], y: &mut [f64]) {
-        // Borrow the kept buffers without holding the lock while computing: concurrent products
-        // (combinations solved side by side share T) make their own.
-        let kept = self
-            .scratch
-            .lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .take();
+        // Borrow a kept set of buffers without holding the lock while computing: a product that
+        // finds none (all in use by concurrent products) makes its own, kept after it.
+        let kept = self.scratch.lock().unwrap_or_else(|e| e.into_inner()).pop();
         let mut s = kept.unwrap_or_else(|| self.new_scratch());
         self.apply_with(x, y, &mut s);
-        *self.scratch.lock().unwrap_or_else(|e| e.into_inner()) = Some(s);
+        self.scratch
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .push(s);
     }
 
     fn apply_with(&self, x: &[f64], y: &mut [f64], s: &mut Scratch) {
