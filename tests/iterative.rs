@@ -326,3 +326,89 @@ fn the_cg_tolerance_key_sets_the_confirming_solves() {
     );
     assert!(nb <= na, "1e-8 took {nb} CG iterations, 1e-10 {na}");
 }
+
+/// A penalty step that solves the last step's system again to a tighter tolerance (the
+/// iteration confirming a set) carries on with the last step's conjugate gradients, and a step
+/// whose weights changed starts from the last answer with the products the last step ended
+/// with (`IterativeSchur::solve_pressures`). Carrying on is the same iteration: a loose solve
+/// and its tight continuation take exactly the iterations of one tight solve from the same
+/// start and end on its σ (the same operations in the same order: measured equal to the bit;
+/// 1e-13 allowed). A start from known products skips only a round-off move onto the
+/// equilibrium: against a fresh solve from the same σ it may differ by what two solves to the
+/// tight tolerance may (each within about the preconditioned system's condition number times
+/// 1e-10 of the exact σ): measured 9e-13, 1e-8 allowed. Paper's case at 32², quarter model;
+/// penalty weights at ε̄ = 1e-5 on the points the bonded solve puts in tension, then on those
+/// and a ring about the centre.
+#[test]
+fn a_confirming_solve_carries_on_the_last_iteration() {
+    use liftoff::solve::iterative::IterativeSchur;
+    use liftoff::CgSettings;
+    let p = paper(32);
+    let ops = Operators::assemble_with(&p.model, true);
+    let monitor = liftoff::Monitor::NONE;
+    let n = ops.n_sigma();
+    assert_eq!(ops.constraints.g.rows(), n, "nodal constraints");
+    let rows: Vec<Vec<(usize, f64)>> = (0..n).map(|k| vec![(k, 1.0)]).collect();
+    let weight = |k: usize| ops.foundation_constant * ops.constraints.weights[k] / 1e-5;
+    let bonded = liftoff::solve(&ops, &Method::Bonded).expect("bonded");
+    let first: Vec<f64> = (0..n)
+        .map(|k| {
+            if bonded.sigma[k] < 0.0 {
+                weight(k)
+            } else {
+                0.0
+            }
+        })
+        .collect();
+    assert!(
+        first.iter().any(|&d| d > 0.0),
+        "the bonded plate pulls somewhere"
+    );
+    let second: Vec<f64> = (0..n)
+        .map(|k| {
+            let (x, y) = ops.constraints.points[k];
+            let ring = (0.3..0.4).contains(&x.hypot(y));
+            if first[k] > 0.0 || ring {
+                weight(k)
+            } else {
+                0.0
+            }
+        })
+        .collect();
+    let new = || IterativeSchur::new(&ops, CgSettings::default()).expect("iterative system");
+
+    let mut carried = new();
+    let (_, _, loose) = carried
+        .solve_pressures(&ops, &rows, &first, Some(1e-4), &monitor)
+        .expect("loose solve");
+    let (sigma_b, _, tight) = carried
+        .solve_pressures(&ops, &rows, &first, None, &monitor)
+        .expect("tight solve, carried on");
+    let (sigma_c, _, fresh) = new()
+        .solve_pressures(&ops, &rows, &first, None, &monitor)
+        .expect("tight solve");
+    assert!(
+        loose.iterations > 0 && tight.iterations > 0,
+        "{loose:?} {tight:?}"
+    );
+    assert_eq!(
+        loose.iterations + tight.iterations,
+        fresh.iterations,
+        "loose then carried on against one tight solve"
+    );
+    assert!(tight.residual <= 1e-10, "{tight:?}");
+    let d = rel_diff(&sigma_b, &sigma_c);
+    assert!(d <= 1e-13, "carried on against one tight solve: {d:e}");
+
+    let (sigma_d, _, next) = carried
+        .solve_pressures(&ops, &rows, &second, None, &monitor)
+        .expect("tight solve, other weights, from known products");
+    let mut restarted = new();
+    restarted.warm_start(&sigma_b);
+    let (sigma_e, _, _) = restarted
+        .solve_pressures(&ops, &rows, &second, None, &monitor)
+        .expect("tight solve, other weights, fresh start");
+    assert!(next.iterations > 0 && next.residual <= 1e-10, "{next:?}");
+    let d = rel_diff(&sigma_d, &sigma_e);
+    assert!(d <= 1e-8, "known products against a fresh start: {d:e}");
+}

@@ -104,7 +104,9 @@ fn stage(
         }
         let (u, sigma, alpha, cg) = out;
         *t_solves += ts.elapsed().as_secs_f64();
-        finite(&u, "penalty iteration")?;
+        if let Some(u) = &u {
+            finite(u, "penalty iteration")?;
+        }
         finite(&sigma, "penalty iteration")?;
         let gs = ops.g_times(&sigma);
         let next: Vec<bool> = gs.iter().map(|&v| v < 0.0).collect();
@@ -138,12 +140,12 @@ fn stage(
                 // The step's answer is the minimiser of the energy with this set's springs;
                 // the iterate goes to the energy's minimum on the way there, and the next set
                 // is the iterate's.
-                d.advance(ops, &penalised, epsilon, &u, &sigma, &alpha, gs);
+                d.advance(ops, &penalised, epsilon, u.as_deref(), &sigma, &alpha, gs);
                 let mut moved: Vec<bool> = d.gs.iter().map(|&v| v < 0.0).collect();
                 if moved == penalised {
                     // The minimum fell on a kink of the set (measure zero, but rounding finds
                     // it): the same set would give the same answer. Take the full step.
-                    *d = Damped::new(ops, &penalised, epsilon, &u, &sigma, &alpha);
+                    *d = Damped::new(ops, &penalised, epsilon, u.as_deref(), &sigma, &alpha);
                     moved = next;
                 }
                 last = Some((u, sigma, alpha));
@@ -178,7 +180,14 @@ fn stage(
                 // A cycle of exact (tight) solves: the full steps overshoot. Go on from this
                 // step's answer with damped steps, which cannot cycle.
                 if let Some((u, sigma, alpha)) = &last {
-                    damped = Some(Damped::new(ops, &penalised, epsilon, u, sigma, alpha));
+                    damped = Some(Damped::new(
+                        ops,
+                        &penalised,
+                        epsilon,
+                        u.as_deref(),
+                        sigma,
+                        alpha,
+                    ));
                     penalised = next;
                     continue;
                 }
@@ -196,6 +205,15 @@ fn stage(
         // Out of steps while damped: the iterate, the best point the steps reached.
         (Status::IterationLimit { .. }, Some(d)) => (d.u, d.sigma, d.alpha),
         _ => last.ok_or_else(|| Error::numerical("penalty iteration", "no iteration was run"))?,
+    };
+    // The iterative route forms u for the point the stage ends on only (a plate solve a step).
+    let u = match u {
+        Some(u) => u,
+        None => {
+            let u = backend.displacements(ops, &sigma, &alpha)?;
+            finite(&u, "penalty iteration")?;
+            u
+        }
     };
     if status == Status::Converged {
         status = tension_check(ops, &sigma, epsilon);
@@ -227,7 +245,8 @@ fn stage(
 /// iteration converges (globally convergent damped semismooth Newton); near the answer the
 /// full step is taken and the set settles.
 struct Damped {
-    u: Vec<f64>,
+    /// None on the iterative route, which forms u at the end ([`Backend::displacements`]).
+    u: Option<Vec<f64>>,
     sigma: Vec<f64>,
     alpha: Vec<f64>,
     /// Gσ at the iterate.
@@ -242,14 +261,14 @@ impl Damped {
         ops: &Operators,
         set: &[bool],
         epsilon: f64,
-        u: &[f64],
+        u: Option<&[f64]>,
         sigma: &[f64],
         alpha: &[f64],
     ) -> Damped {
         let gs = ops.g_times(sigma);
         let h = spring_side(ops, set, epsilon, &gs);
         Damped {
-            u: u.to_vec(),
+            u: u.map(<[f64]>::to_vec),
             sigma: sigma.to_vec(),
             alpha: alpha.to_vec(),
             gs,
@@ -265,7 +284,7 @@ impl Damped {
         ops: &Operators,
         set: &[bool],
         epsilon: f64,
-        u: &[f64],
+        u: Option<&[f64]>,
         sigma: &[f64],
         alpha: &[f64],
         gs: Vec<f64>,
@@ -279,7 +298,9 @@ impl Damped {
                 *x += t * (y - *x);
             }
         };
-        blend(&mut self.u, u);
+        if let (Some(a), Some(b)) = (self.u.as_mut(), u) {
+            blend(a, b);
+        }
         blend(&mut self.sigma, sigma);
         blend(&mut self.alpha, alpha);
         blend(&mut self.gs, &gs);

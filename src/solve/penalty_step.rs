@@ -251,6 +251,23 @@ impl Backend {
         }
     }
 
+    /// u = K⁻(f − Bσ) + Rα of a step whose [`Backend::solve`] left it out (the iterative
+    /// route); the other backends form it with σ.
+    pub(super) fn displacements(
+        &self,
+        ops: &Operators,
+        sigma: &[f64],
+        alpha: &[f64],
+    ) -> Result<Vec<f64>> {
+        match self {
+            Backend::Iterative(sys) => Ok(sys.displacements(ops, sigma, alpha)),
+            _ => Err(Error::numerical(
+                "penalty",
+                "only the iterative route leaves the displacements to be formed",
+            )),
+        }
+    }
+
     /// Start the iterative route's first step from the pressures `sigma` (the other backends
     /// solve directly and need no start).
     pub(super) fn warm_start(&mut self, sigma: &[f64]) {
@@ -273,15 +290,15 @@ impl Backend {
     ) -> Result<StepOut> {
         if let Backend::Iterative(sys) = self {
             let weights = penalty_weights(ops, penalised, epsilon);
-            let step = sys.solve(ops, rows, &weights, level, monitor)?;
-            return Ok((step.u, step.sigma, step.alpha, Some(step.cg)));
+            let (sigma, alpha, cg) = sys.solve_pressures(ops, rows, &weights, level, monitor)?;
+            return Ok((None, sigma, alpha, Some(cg)));
         }
         if let Backend::Schur(sys, low_rank) = self {
             let weights = penalty_weights(ops, penalised, epsilon);
             let solver = low_rank.prepare(&sys.s, rows, &weights)?;
             let (sigma, alpha) = saddle_solve(&solver, &sys.h, &sys.c, &sys.rf)?;
             let u = sys.displacements(ops, &sigma, &alpha);
-            return Ok((u, sigma, alpha, None));
+            return Ok((Some(u), sigma, alpha, None));
         }
         let extra = penalty_entries(ops, rows, penalised, epsilon);
         let extra = &extra[..];
@@ -357,7 +374,7 @@ impl Backend {
                     .zip(&ops.gap0)
                     .map(|((&(eq, b), &c), &g0)| (b * u[eq] - g0) / c)
                     .collect();
-                Ok((u, sigma, Vec::new(), None))
+                Ok((Some(u), sigma, Vec::new(), None))
             }
             Backend::Saddle {
                 m,
@@ -398,7 +415,7 @@ impl Backend {
                 lu.solve_in_place(rhs.as_mut());
                 let u = (0..n).map(|i| rhs[(i, 0)]).collect();
                 let sigma = (n..total).map(|i| rhs[(i, 0)]).collect();
-                Ok((u, sigma, Vec::new(), None))
+                Ok((Some(u), sigma, Vec::new(), None))
             }
             Backend::Schur(..) | Backend::Iterative(..) => Err(Error::numerical(
                 "penalty",
@@ -408,8 +425,10 @@ impl Backend {
     }
 }
 
-/// u, σ, α of a penalty step and, on the iterative route, its CG account.
-type StepOut = (Vec<f64>, Vec<f64>, Vec<f64>, Option<CgReport>);
+/// u, σ, α of a penalty step and, on the iterative route, its CG account. u is None on the
+/// iterative route, where it costs a plate solve that only the step the iteration ends on
+/// needs: [`Backend::displacements`] forms it from σ and α (it is affine in them).
+type StepOut = (Option<Vec<f64>>, Vec<f64>, Vec<f64>, Option<CgReport>);
 
 /// d_k = c w_k / ε̄ on the penalised constraint points, 0 elsewhere.
 pub(super) fn penalty_weights(ops: &Operators, penalised: &[bool], epsilon: f64) -> Vec<f64> {

@@ -66,7 +66,41 @@ struct Solved {
     /// S σ (without penalty).
     s_sigma: Vec<f64>,
     cg: CgReport,
+    /// Where the iteration stopped: its residual r, its next direction p and rᵀz.
+    state: (Vec<f64>, Vec<f64>, f64),
 }
+
+/// The last penalty step's answer with its products, and where its conjugate gradients
+/// stopped: the next step starts there without a product when its set changed, and goes on
+/// with the same iteration when it solves the same system to a tighter tolerance.
+struct Last {
+    /// The weights it solved with (bitwise: the same system only if equal).
+    weights: Vec<f64>,
+    sigma: Vec<f64>,
+    t_sigma: Vec<f64>,
+    s_sigma: Vec<f64>,
+    /// r, p and rᵀz where the iteration stopped.
+    state: (Vec<f64>, Vec<f64>, f64),
+}
+
+/// How the projected PCG begins.
+enum Begin {
+    /// From σ, moved onto the equilibrium, its products formed.
+    Fresh,
+    /// From σ whose products T σ and S σ are these (the last step's answer): no product is
+    /// formed unless σ must be moved onto the equilibrium (more than round-off) or the start is
+    /// abandoned for the fallback.
+    Known(Vec<f64>, Vec<f64>),
+    /// The last step's iteration on the same system, carried on: the iterates are the ones a
+    /// single solve to the tighter tolerance would have made.
+    Resume(Box<Last>),
+}
+
+/// A start σ whose equilibrium defect |Rᵀf − Cᵀσ| is at most this fraction of |Rᵀf| is not
+/// moved, so the products it was given stay exact: the iterates keep Cᵀσ fixed up to
+/// round-off (the projections are refined twice, [`Preconditioner::project`]), and a move of
+/// this size changes σ far below any tolerance the iteration is asked for (1e-14 at the least).
+const KEPT_DEFECT: f64 = 1e-13;
 
 /// The Schur system of the half-space with a matrix-free T, ready for penalty steps.
 pub struct IterativeSchur {
@@ -87,6 +121,9 @@ pub struct IterativeSchur {
     exact: bool,
     /// The last step's σ, the next one's start.
     warm: Option<Vec<f64>>,
+    /// The last penalty step's answer, products and stopping point (None after a start from
+    /// elsewhere or a face solve); its σ is `warm`.
+    last: Option<Last>,
     /// The penalty weights of the solve that gave `warm` (empty: none, or a start from
     /// elsewhere).
     warm_weights: Vec<f64>,
@@ -255,6 +292,7 @@ impl IterativeSchur {
             springs,
             exact,
             warm: None,
+            last: None,
             warm_weights: Vec::new(),
             cached: Some(bonded),
             time_plate,
@@ -274,18 +312,6 @@ impl IterativeSchur {
         );
         let sp = tp.iter().zip(&plate).map(|(a, b)| a + b).collect();
         (tp, sp)
-    }
-
-    /// A p = T p + BᵀK⁻B p + Σ_k d_k g_k g_kᵀ p.
-    fn apply(
-        &mut self,
-        ops: &Operators,
-        rows: &[Vec<(usize, f64)>],
-        weights: &[f64],
-        p: &[f64],
-    ) -> Vec<f64> {
-        let (_, sp) = self.t_and_s_times(ops, p);
-        penalised(&sp, rows, weights, p)
     }
 
     /// The preconditioner for penalty weights on `rows` and the points `held` at zero (empty:
@@ -316,7 +342,8 @@ impl IterativeSchur {
     /// `fallback` instead where `sigma`'s residual exceeds the loads' (relative residual above
     /// one: a worse start than none). Where the preconditioner is the matrix itself (`exact`:
     /// Winkler springs on the model's own plate) the start is the direct solution
-    /// σ = M⁻¹(h + Cα), and CG only confirms it.
+    /// σ = M⁻¹(h + Cα), and CG only confirms it. `begin` says what is known of the start
+    /// ([`Begin`]; `Resume` ignores `sigma` and `fallback`).
     #[allow(clippy::too_many_arguments)]
     fn cg(
         &mut self,
@@ -325,6 +352,7 @@ impl IterativeSchur {
         rows: &[Vec<(usize, f64)>],
         weights: &[f64],
         (mut sigma, mut fallback): (Vec<f64>, Option<Vec<f64>>),
+        mut begin: Begin,
         tol: f64,
         stage: &str,
         monitor: &Monitor<'_>,
@@ -336,6 +364,7 @@ impl IterativeSchur {
             // σ = M⁻¹h on the free points, then along M⁻¹C onto the equilibrium below.
             sigma = self.springs.solve(&pre.inv_d, &pre.factor, &h);
             fallback = None;
+            begin = Begin::Fresh;
         }
         let h_norm = dot(&h, &h).max(f64::MIN_POSITIVE).sqrt();
         let scale = match pre.scale {
@@ -347,37 +376,58 @@ impl IterativeSchur {
                 v
             }
         };
-        let (mut sigma, mut t_sigma, mut s_sigma, mut r, mut z, mut rz, mut residual) = loop {
-            pre.mask(&mut sigma);
-            // Start: σ moved onto Cᵀσ = Rᵀf along M⁻¹C.
-            {
-                let defect: Vec<f64> = (0..pre.c.len())
-                    .map(|a| self.rf[a] - dot(&pre.c[a], &sigma))
-                    .collect();
-                let s = pre.small.solve(&defect);
-                for (a, &sa) in s.iter().enumerate() {
-                    for (x, ci) in sigma.iter_mut().zip(&pre.minv_c[a]) {
-                        *x += sa * ci;
+        let (mut sigma, mut t_sigma, mut s_sigma, mut r, mut p, mut rz) = match begin {
+            Begin::Resume(last) => {
+                let (r, p, rz) = last.state;
+                (last.sigma, last.t_sigma, last.s_sigma, r, p, rz)
+            }
+            begin => {
+                let mut known = match begin {
+                    Begin::Known(t, s) if !pre.held.iter().any(|&h| h) => Some((t, s)),
+                    _ => None,
+                };
+                loop {
+                    pre.mask(&mut sigma);
+                    // Start: σ moved onto Cᵀσ = Rᵀf along M⁻¹C (not when the defect is
+                    // round-off and the products are known).
+                    let defect: Vec<f64> = (0..pre.c.len())
+                        .map(|a| self.rf[a] - dot(&pre.c[a], &sigma))
+                        .collect();
+                    let size = |v: &[f64]| dot(v, v).sqrt();
+                    if known.is_none() || size(&defect) > KEPT_DEFECT * size(&self.rf) {
+                        known = None;
+                        let s = pre.small.solve(&defect);
+                        for (a, &sa) in s.iter().enumerate() {
+                            for (x, ci) in sigma.iter_mut().zip(&pre.minv_c[a]) {
+                                *x += sa * ci;
+                            }
+                        }
+                    }
+                    let (t_sigma, s_sigma) = match known.take() {
+                        Some(products) => products,
+                        None => self.t_and_s_times(ops, &sigma),
+                    };
+                    let mut r: Vec<f64> = penalised(&s_sigma, rows, weights, &sigma)
+                        .iter()
+                        .zip(&self.h)
+                        .map(|(a, b)| a - b)
+                        .collect();
+                    pre.mask(&mut r);
+                    pre.deflate(&mut r);
+                    let z = pre.project(&self.springs, &r);
+                    let rz = dot(&r, &z);
+                    let residual = rz.max(0.0).sqrt() / scale;
+                    match fallback.take() {
+                        Some(other) if residual > 1.0 => sigma = other,
+                        _ => {
+                            let p: Vec<f64> = z.iter().map(|v| -v).collect();
+                            break (sigma, t_sigma, s_sigma, r, p, rz);
+                        }
                     }
                 }
             }
-            let (t_sigma, s_sigma) = self.t_and_s_times(ops, &sigma);
-            let mut r: Vec<f64> = penalised(&s_sigma, rows, weights, &sigma)
-                .iter()
-                .zip(&self.h)
-                .map(|(a, b)| a - b)
-                .collect();
-            pre.mask(&mut r);
-            pre.deflate(&mut r);
-            let z = pre.project(&self.springs, &r);
-            let rz = dot(&r, &z);
-            let residual = rz.max(0.0).sqrt() / scale;
-            match fallback.take() {
-                Some(other) if residual > 1.0 => sigma = other,
-                _ => break (sigma, t_sigma, s_sigma, r, z, rz, residual),
-            }
         };
-        let mut p: Vec<f64> = z.iter().map(|v| -v).collect();
+        let mut residual = rz.max(0.0).sqrt() / scale;
         let mut iterations = 0;
         while residual > tol {
             monitor.check(stage)?;
@@ -390,7 +440,8 @@ impl IterativeSchur {
                     ),
                 ));
             }
-            let mut ap = self.apply(ops, rows, weights, &p);
+            let (_, sp) = self.t_and_s_times(ops, &p);
+            let mut ap = penalised(&sp, rows, weights, &p);
             pre.mask(&mut ap);
             let pap = dot(&p, &ap);
             if pap == 0.0 && dot(&p, &p) <= f64::MIN_POSITIVE.sqrt() {
@@ -410,7 +461,7 @@ impl IterativeSchur {
                 r[i] += step * ap[i];
             }
             pre.deflate(&mut r);
-            z = pre.project(&self.springs, &r);
+            let z = pre.project(&self.springs, &r);
             let rz_new = dot(&r, &z);
             let beta = rz_new / rz;
             rz = rz_new;
@@ -449,6 +500,7 @@ impl IterativeSchur {
                 residual,
                 true_residual,
             },
+            state: (r, p, rz),
         })
     }
 
@@ -463,7 +515,35 @@ impl IterativeSchur {
         level: Option<f64>,
         monitor: &Monitor<'_>,
     ) -> Result<Step> {
+        let (sigma, alpha, cg) = self.solve_pressures(ops, rows, weights, level, monitor)?;
+        let u = self.displacements(ops, &sigma, &alpha);
+        Ok(Step {
+            u,
+            sigma,
+            alpha,
+            cg,
+        })
+    }
+
+    /// [`Self::solve`] without the displacements (one plate solve, which the penalty iteration
+    /// needs only for the step it ends on: [`Self::displacements`]): σ, α and the CG account.
+    /// A step that solves the last step's system again to a tighter tolerance (the same
+    /// weights: the penalty iteration confirming a set) carries on with the last step's
+    /// iteration; one whose weights changed starts from the last answer with its products.
+    pub fn solve_pressures(
+        &mut self,
+        ops: &Operators,
+        rows: &[Vec<(usize, f64)>],
+        weights: &[f64],
+        level: Option<f64>,
+        monitor: &Monitor<'_>,
+    ) -> Result<(Vec<f64>, Vec<f64>, CgReport)> {
         let mut pre = self.preconditioner(rows, weights, &[])?;
+        let begin = match self.last.take() {
+            Some(last) if last.weights == weights => Begin::Resume(Box::new(last)),
+            Some(last) => Begin::Known(last.t_sigma, last.s_sigma),
+            None => Begin::Fresh,
+        };
         let start = self
             .warm
             .clone()
@@ -494,21 +574,23 @@ impl IterativeSchur {
             rows,
             weights,
             (start, Some(other)),
+            begin,
             tol,
             "iterative penalty step (conjugate gradients)",
             monitor,
         );
         self.cached = Some(pre);
         let solved = out?;
-        let u = self.displacements(ops, &solved.sigma, &solved.alpha);
         self.warm = Some(solved.sigma.clone());
         self.warm_weights = weights.to_vec();
-        Ok(Step {
-            u,
-            sigma: solved.sigma,
-            alpha: solved.alpha,
-            cg: solved.cg,
-        })
+        self.last = Some(Last {
+            weights: weights.to_vec(),
+            sigma: solved.sigma.clone(),
+            t_sigma: solved.t_sigma,
+            s_sigma: solved.s_sigma,
+            state: solved.state,
+        });
+        Ok((solved.sigma, solved.alpha, solved.cg))
     }
 
     /// Minimise ½σᵀSσ − hᵀσ subject to Cᵀσ = Rᵀf and σ = 0 on the `held` points, from
@@ -523,12 +605,14 @@ impl IterativeSchur {
         monitor: &Monitor<'_>,
     ) -> Result<Face> {
         let mut pre = self.preconditioner(&[], &[], held)?;
+        self.last = None;
         let out = self.cg(
             ops,
             &mut pre,
             &[],
             &[],
             (start.to_vec(), None),
+            Begin::Fresh,
             tol,
             "matrix-free QP (conjugate gradients on the free points)",
             monitor,
@@ -553,6 +637,7 @@ impl IterativeSchur {
     /// pressures on the same operators) instead of zero.
     pub fn warm_start(&mut self, sigma: &[f64]) {
         self.warm = Some(sigma.to_vec());
+        self.last = None;
         self.warm_weights.clear();
     }
 
