@@ -24,11 +24,9 @@
 //! Each step starts from the previous step's σ (warm start), so the later penalty steps, which
 //! change a few points, take few iterations; steps whose set is still moving are solved to a
 //! loose tolerance ([`CgSettings::loose_tolerance`]), then to a medium one once the set repeats
-//! there, and the penalty iteration confirms a set only with a tight solve. A tighter solve of
-//! the same system (the set repeated) carries on with the last solve's iteration instead of
-//! starting a new one, and a step whose set changed starts from the last answer with the products
-//! T σ and S σ formed at the end of the last solve; the displacements are formed once, for the
-//! step the iteration ends on.
+//! there, and the penalty iteration confirms a set only with a tight solve. A step starts from
+//! the last answer with the products T σ and S σ its solve ended with (no product to form), and
+//! the displacements are formed once, for the step the iteration ends on.
 //!
 //! **Face solves** ([`IterativeSchur::solve_face`]) serve the matrix-free QP
 //! ([`super::qp::active_set`]): the same system without penalty, with a set of pressures held at

@@ -66,21 +66,19 @@ struct Solved {
     /// S σ (without penalty).
     s_sigma: Vec<f64>,
     cg: CgReport,
-    /// Where the iteration stopped: its residual r, its next direction p and rᵀz.
-    state: (Vec<f64>, Vec<f64>, f64),
 }
 
-/// The last penalty step's answer with its products, and where its conjugate gradients
-/// stopped: the next step starts there without a product when its set changed, and goes on
-/// with the same iteration when it solves the same system to a tighter tolerance.
+/// The products T σ and S σ that the last penalty step's solve ended with (formed from its
+/// answer σ itself, which is `warm`): the next step starts there without forming them again.
+///
+/// (Carrying on with the last step's iteration itself — its residual and direction — when the
+/// next step solves the same system to a tighter tolerance was tried and dropped: the
+/// recurrence's residual drifts from the true one under stiff penalty springs, and a restart
+/// from the true residual is what kept the penalty's answer converging to the QP's as ε̄ → 0 —
+/// `tests/exactness.rs` found V 1.4e-6 off at ε̄ = 1e-8 on a layer with it, worse than at 1e-6.)
 struct Last {
-    /// The weights it solved with (bitwise: the same system only if equal).
-    weights: Vec<f64>,
-    sigma: Vec<f64>,
     t_sigma: Vec<f64>,
     s_sigma: Vec<f64>,
-    /// r, p and rᵀz where the iteration stopped.
-    state: (Vec<f64>, Vec<f64>, f64),
 }
 
 /// How the projected PCG begins.
@@ -91,9 +89,6 @@ enum Begin {
     /// formed unless σ must be moved onto the equilibrium (more than round-off) or the start is
     /// abandoned for the fallback.
     Known(Vec<f64>, Vec<f64>),
-    /// The last step's iteration on the same system, carried on: the iterates are the ones a
-    /// single solve to the tighter tolerance would have made.
-    Resume(Box<Last>),
 }
 
 /// A start σ whose equilibrium defect |Rᵀf − Cᵀσ| is at most this fraction of |Rᵀf| is not
@@ -121,8 +116,8 @@ pub struct IterativeSchur {
     exact: bool,
     /// The last step's σ, the next one's start.
     warm: Option<Vec<f64>>,
-    /// The last penalty step's answer, products and stopping point (None after a start from
-    /// elsewhere or a face solve); its σ is `warm`.
+    /// The last penalty step's answer and its products (None after a start from elsewhere or
+    /// a face solve); its σ is `warm`.
     last: Option<Last>,
     /// The penalty weights of the solve that gave `warm` (empty: none, or a start from
     /// elsewhere).
@@ -314,6 +309,18 @@ impl IterativeSchur {
         (tp, sp)
     }
 
+    /// A p = T p + BᵀK⁻B p + Σ_k d_k g_k g_kᵀ p.
+    fn apply(
+        &mut self,
+        ops: &Operators,
+        rows: &[Vec<(usize, f64)>],
+        weights: &[f64],
+        p: &[f64],
+    ) -> Vec<f64> {
+        let (_, sp) = self.t_and_s_times(ops, p);
+        penalised(&sp, rows, weights, p)
+    }
+
     /// The preconditioner for penalty weights on `rows` and the points `held` at zero (empty:
     /// none): the cached one if it was made for them, else a new factorisation.
     fn preconditioner(
@@ -343,7 +350,7 @@ impl IterativeSchur {
     /// one: a worse start than none). Where the preconditioner is the matrix itself (`exact`:
     /// Winkler springs on the model's own plate) the start is the direct solution
     /// σ = M⁻¹(h + Cα), and CG only confirms it. `begin` says what is known of the start
-    /// ([`Begin`]; `Resume` ignores `sigma` and `fallback`).
+    /// ([`Begin`]).
     #[allow(clippy::too_many_arguments)]
     fn cg(
         &mut self,
@@ -376,58 +383,47 @@ impl IterativeSchur {
                 v
             }
         };
-        let (mut sigma, mut t_sigma, mut s_sigma, mut r, mut p, mut rz) = match begin {
-            Begin::Resume(last) => {
-                let (r, p, rz) = last.state;
-                (last.sigma, last.t_sigma, last.s_sigma, r, p, rz)
-            }
-            begin => {
-                let mut known = match begin {
-                    Begin::Known(t, s) if !pre.held.iter().any(|&h| h) => Some((t, s)),
-                    _ => None,
-                };
-                loop {
-                    pre.mask(&mut sigma);
-                    // Start: σ moved onto Cᵀσ = Rᵀf along M⁻¹C (not when the defect is
-                    // round-off and the products are known).
-                    let defect: Vec<f64> = (0..pre.c.len())
-                        .map(|a| self.rf[a] - dot(&pre.c[a], &sigma))
-                        .collect();
-                    let size = |v: &[f64]| dot(v, v).sqrt();
-                    if known.is_none() || size(&defect) > KEPT_DEFECT * size(&self.rf) {
-                        known = None;
-                        let s = pre.small.solve(&defect);
-                        for (a, &sa) in s.iter().enumerate() {
-                            for (x, ci) in sigma.iter_mut().zip(&pre.minv_c[a]) {
-                                *x += sa * ci;
-                            }
-                        }
-                    }
-                    let (t_sigma, s_sigma) = match known.take() {
-                        Some(products) => products,
-                        None => self.t_and_s_times(ops, &sigma),
-                    };
-                    let mut r: Vec<f64> = penalised(&s_sigma, rows, weights, &sigma)
-                        .iter()
-                        .zip(&self.h)
-                        .map(|(a, b)| a - b)
-                        .collect();
-                    pre.mask(&mut r);
-                    pre.deflate(&mut r);
-                    let z = pre.project(&self.springs, &r);
-                    let rz = dot(&r, &z);
-                    let residual = rz.max(0.0).sqrt() / scale;
-                    match fallback.take() {
-                        Some(other) if residual > 1.0 => sigma = other,
-                        _ => {
-                            let p: Vec<f64> = z.iter().map(|v| -v).collect();
-                            break (sigma, t_sigma, s_sigma, r, p, rz);
-                        }
+        let mut known = match begin {
+            Begin::Known(t, s) if !pre.held.iter().any(|&h| h) => Some((t, s)),
+            _ => None,
+        };
+        let (mut sigma, mut t_sigma, mut s_sigma, mut r, mut z, mut rz, mut residual) = loop {
+            pre.mask(&mut sigma);
+            // Start: σ moved onto Cᵀσ = Rᵀf along M⁻¹C (not when the defect is round-off and
+            // the products are known).
+            let defect: Vec<f64> = (0..pre.c.len())
+                .map(|a| self.rf[a] - dot(&pre.c[a], &sigma))
+                .collect();
+            let size = |v: &[f64]| dot(v, v).sqrt();
+            if known.is_none() || size(&defect) > KEPT_DEFECT * size(&self.rf) {
+                known = None;
+                let s = pre.small.solve(&defect);
+                for (a, &sa) in s.iter().enumerate() {
+                    for (x, ci) in sigma.iter_mut().zip(&pre.minv_c[a]) {
+                        *x += sa * ci;
                     }
                 }
             }
+            let (t_sigma, s_sigma) = match known.take() {
+                Some(products) => products,
+                None => self.t_and_s_times(ops, &sigma),
+            };
+            let mut r: Vec<f64> = penalised(&s_sigma, rows, weights, &sigma)
+                .iter()
+                .zip(&self.h)
+                .map(|(a, b)| a - b)
+                .collect();
+            pre.mask(&mut r);
+            pre.deflate(&mut r);
+            let z = pre.project(&self.springs, &r);
+            let rz = dot(&r, &z);
+            let residual = rz.max(0.0).sqrt() / scale;
+            match fallback.take() {
+                Some(other) if residual > 1.0 => sigma = other,
+                _ => break (sigma, t_sigma, s_sigma, r, z, rz, residual),
+            }
         };
-        let mut residual = rz.max(0.0).sqrt() / scale;
+        let mut p: Vec<f64> = z.iter().map(|v| -v).collect();
         let mut iterations = 0;
         while residual > tol {
             monitor.check(stage)?;
@@ -440,8 +436,7 @@ impl IterativeSchur {
                     ),
                 ));
             }
-            let (_, sp) = self.t_and_s_times(ops, &p);
-            let mut ap = penalised(&sp, rows, weights, &p);
+            let mut ap = self.apply(ops, rows, weights, &p);
             pre.mask(&mut ap);
             let pap = dot(&p, &ap);
             if pap == 0.0 && dot(&p, &p) <= f64::MIN_POSITIVE.sqrt() {
@@ -461,7 +456,7 @@ impl IterativeSchur {
                 r[i] += step * ap[i];
             }
             pre.deflate(&mut r);
-            let z = pre.project(&self.springs, &r);
+            z = pre.project(&self.springs, &r);
             let rz_new = dot(&r, &z);
             let beta = rz_new / rz;
             rz = rz_new;
@@ -500,7 +495,6 @@ impl IterativeSchur {
                 residual,
                 true_residual,
             },
-            state: (r, p, rz),
         })
     }
 
@@ -527,9 +521,7 @@ impl IterativeSchur {
 
     /// [`Self::solve`] without the displacements (one plate solve, which the penalty iteration
     /// needs only for the step it ends on: [`Self::displacements`]): σ, α and the CG account.
-    /// A step that solves the last step's system again to a tighter tolerance (the same
-    /// weights: the penalty iteration confirming a set) carries on with the last step's
-    /// iteration; one whose weights changed starts from the last answer with its products.
+    /// A step after another starts from its answer with the products its solve ended with.
     pub fn solve_pressures(
         &mut self,
         ops: &Operators,
@@ -540,7 +532,6 @@ impl IterativeSchur {
     ) -> Result<(Vec<f64>, Vec<f64>, CgReport)> {
         let mut pre = self.preconditioner(rows, weights, &[])?;
         let begin = match self.last.take() {
-            Some(last) if last.weights == weights => Begin::Resume(Box::new(last)),
             Some(last) => Begin::Known(last.t_sigma, last.s_sigma),
             None => Begin::Fresh,
         };
@@ -584,11 +575,8 @@ impl IterativeSchur {
         self.warm = Some(solved.sigma.clone());
         self.warm_weights = weights.to_vec();
         self.last = Some(Last {
-            weights: weights.to_vec(),
-            sigma: solved.sigma.clone(),
             t_sigma: solved.t_sigma,
             s_sigma: solved.s_sigma,
-            state: solved.state,
         });
         Ok((solved.sigma, solved.alpha, solved.cg))
     }
