@@ -10,7 +10,7 @@
 //! away from weakly active points (σ below 1e-7 of the peak in either solution, where an
 //! interior-point method leaves O(√tolerance)).
 
-mod common;
+use crate::common;
 use common::*;
 use liftoff::method::{QpForm, QpSettings, QpSolver, Route};
 use liftoff::solve::{solve, Solution};

@@ -348,3 +348,45 @@ fn serde_names_match_choice_names() {
         wrong.join("\n  ")
     );
 }
+
+/// Every `tests/X.rs` is a module of the one test binary, `tests/suite.rs` (`autotests =
+/// false`: cargo no longer finds test files by itself, so a file left out would never run).
+#[test]
+fn every_test_file_is_a_module_of_the_suite() {
+    let tests = root().join("tests");
+    let suite = std::fs::read_to_string(tests.join("suite.rs")).expect("tests/suite.rs");
+    let declared: BTreeSet<String> = suite
+        .lines()
+        .filter_map(|l| l.trim().strip_prefix("mod "))
+        .filter_map(|l| l.strip_suffix(';'))
+        .map(str::to_string)
+        .collect();
+    let mut missing = Vec::new();
+    let mut entries: Vec<PathBuf> = std::fs::read_dir(&tests)
+        .expect("tests/")
+        .map(|e| e.expect("directory entry").path())
+        .collect();
+    entries.sort();
+    for p in entries {
+        let (Some(stem), Some("rs")) = (
+            p.file_stem().and_then(|s| s.to_str()),
+            p.extension().and_then(|s| s.to_str()),
+        ) else {
+            continue;
+        };
+        if stem != "suite" && !declared.contains(stem) {
+            missing.push(format!("tests/{stem}.rs"));
+        }
+    }
+    assert!(
+        missing.is_empty(),
+        "not modules of tests/suite.rs, so never run: {missing:?}; add `mod NAME;` there"
+    );
+    // And the other way: every module declared is a file (or the folder `common/`).
+    for name in &declared {
+        assert!(
+            tests.join(format!("{name}.rs")).is_file() || tests.join(name).join("mod.rs").is_file(),
+            "tests/suite.rs declares `mod {name};` but there is no tests/{name}.rs"
+        );
+    }
+}

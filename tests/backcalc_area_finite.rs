@@ -7,8 +7,8 @@
 //! what the correction must give back on the small slabs is that reading, and the shear's
 //! share, common to both, cancels.
 
+use crate::common;
 use liftoff::backcalc::{area_method, crovetti_factors, finite_slab, Basin, Subgrade};
-mod common;
 
 /// 200 mm of concrete on k = 60 MN/m³: ℓ = 0.764 m, h/ℓ = 0.26; a 40 kN drop on the 150 mm
 /// plate.

@@ -3,7 +3,7 @@
 //! integral, `common::infinite`), the true values of basins made with known moduli, and the
 //! coverage that a 95 % interval must have over noisy basins.
 
-mod common;
+use crate::common;
 
 use liftoff::backcalc::{
     area_method, fit_drop, model_basin, Basin, Drop, FitOptions, Location, Subgrade, Termination,

@@ -5,7 +5,7 @@
 //! fixed square — an integral of an integrable pressure — converges; the default side is the plate's thickness;
 //! a given side is kept, a bad one refused (E67, in tests/errors.rs).
 
-mod common;
+use crate::common;
 
 use common::run;
 use liftoff::post::Bearing;

@@ -1,6 +1,6 @@
 //! Bonded (bilateral) solves against closed forms and invariants.
 
-mod common;
+use crate::common;
 use common::*;
 
 /// Westergaard (1926): an infinite thin plate on a Winkler subgrade under a point load F deflects

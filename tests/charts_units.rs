@@ -5,7 +5,7 @@
 //! rigidity D = E h³ / (12 (1 − ν²)), P = a quarter of the load resultant, L = half the length),
 //! not from the library's scales.
 
-mod common;
+use crate::common;
 
 use liftoff::output::tables::solve_table;
 use liftoff::output::write_all;

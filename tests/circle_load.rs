@@ -9,7 +9,7 @@
 //! D∇⁴w = (1 − D∇²/S)(q − k w) in Hankel space; S → ∞ is Kirchhoff's plate, whose centre
 //! deflection under a point load P is Westergaard's P / (8 √(kD)).
 
-mod common;
+use crate::common;
 
 use liftoff::Problem;
 

@@ -1,6 +1,6 @@
 //! The command-line tool end to end: bundled examples, outputs, exit codes, no partial files.
 
-mod common;
+use crate::common;
 
 use std::path::Path;
 use std::process::Command;

@@ -1,7 +1,7 @@
 //! The contact boundary located inside the element (`liftoff::post::boundary`): its convergence
 //! against closed forms derived here, and the geometry of the boundary, area and extents.
 
-mod common;
+use crate::common;
 use common::*;
 
 use liftoff::metrics::loglog_fit;

@@ -7,7 +7,7 @@ use liftoff::scene::Overrides;
 use liftoff::study::RunOutcome;
 use liftoff::study::{critical, CriticalOptions};
 
-mod common;
+use crate::common;
 
 /// A 4.5 m × 3.6 m × 0.25 m slab on k = 27 MN/m³ (L/ℓ ≈ 4), its weight and an 80 kN axle with
 /// dual tires travelling along x; unbonded contact.

@@ -9,7 +9,7 @@
 //!   wavenumber-domain integration.
 //! - Quarter and full models, dense and FFT routes, penalty and QP, SI and dimensionless.
 
-mod common;
+use crate::common;
 use liftoff::foundation::layer::{Base, LayerTable};
 use liftoff::foundation::Compliance;
 use liftoff::method::{Method, PenaltySettings};

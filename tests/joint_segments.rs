@@ -2,7 +2,7 @@
 //! Winkler springs is three separate plates, and a segment that runs the plate's whole width
 //! is the line across it.
 
-mod common;
+use crate::common;
 
 use common::run_toml;
 use liftoff::scene::Overrides;

@@ -17,7 +17,7 @@
 use liftoff::post::Report;
 use liftoff::Analysis;
 
-mod common;
+use crate::common;
 
 fn solve(text: &str) -> Analysis {
     common::run(text)

@@ -8,7 +8,7 @@
 use liftoff::post::{JointReport, Report};
 use liftoff::{analyse, Analysis, Problem};
 
-mod common;
+use crate::common;
 
 /// Parse, validate and solve (tests only: panics with the scene's error).
 fn solve(text: &str) -> Analysis {

@@ -19,7 +19,7 @@ use liftoff::post::{JointReport, Report};
 use liftoff::Analysis;
 use nalgebra::{Complex, DMatrix, DVector};
 
-mod common;
+use crate::common;
 
 /// Parse, validate and solve (tests only: panics with the scene's error or when the solve did
 /// not converge).

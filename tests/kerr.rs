@@ -4,7 +4,7 @@
 
 use liftoff::Analysis;
 
-mod common;
+use crate::common;
 
 fn solve(text: &str) -> Analysis {
     common::run(text)

@@ -7,7 +7,7 @@
 //! subgrade K = 50 MPa/m, so D = E H³ / (12 (1 − ν²)) = 2.083e7 N·m and the radius of relative
 //! stiffness ℓ = (D/K)^¼ = 0.803 m. Fields of an SI report are physical (m, Pa, N·m/m).
 
-mod common;
+use crate::common;
 use common::node_at;
 use liftoff::combination::{self, CombinationRun};
 use liftoff::error::Error;

@@ -5,7 +5,7 @@
 
 use liftoff::model::Load;
 
-mod common;
+use crate::common;
 
 fn scene(gamma: f64, s: f64, method: &str) -> String {
     common::point_scene(

@@ -7,7 +7,7 @@ use liftoff::method::Start;
 use liftoff::scene::Overrides;
 use liftoff::{Monitor, Outcome, Source};
 
-mod common;
+use crate::common;
 
 fn solve(source: &Source<'_>, extra: Overrides) -> liftoff::Analysis {
     let p = liftoff::load(source, &extra).expect("scene");

@@ -3,7 +3,7 @@
 //! as it shrinks; the re-entrant corner's moment grows under refinement at the rate plate
 //! theory gives.
 
-mod common;
+use crate::common;
 
 use common::{max_abs, max_abs_diff, run_source, run_toml};
 use liftoff::entry::Outcome;

@@ -7,7 +7,7 @@
 //!   same soil, computed in the wavenumber domain (symbol below), with its convergence rate.
 //! - Quarter and full models, dense and FFT routes, penalty and QP.
 
-mod common;
+use crate::common;
 use liftoff::foundation::Compliance;
 use liftoff::method::{Method, PenaltySettings};
 use liftoff::quadrature::GaussRule;

@@ -5,7 +5,7 @@
 
 use liftoff::Analysis;
 
-mod common;
+use crate::common;
 
 const PLATE: &str = "[plate]\nlength = 4.5\nwidth = 3.6\nthickness = 0.25\nyoungs_modulus = 30e9\npoissons_ratio = 0.15\nthermal_expansion = 1e-5\n[foundation]\nmodel = \"winkler\"\nmodulus = 27e6\n[[load]]\nkind = \"uniform\"\npressure = 6e3\n";
 

@@ -2,7 +2,7 @@
 
 use liftoff::{Error, Problem};
 
-mod common;
+use crate::common;
 use common::BASE;
 
 fn rejected(text: &str) -> String {

@@ -10,7 +10,7 @@
 //! tolerance, not with the tolerance itself. That bound is asserted first, then plain relative
 //! differences (see `RELATIVE`).
 
-mod common;
+use crate::common;
 use common::*;
 use liftoff::foundation::Compliance;
 use liftoff::method::QpSettings;

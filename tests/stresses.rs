@@ -11,7 +11,7 @@
 use liftoff::post::Report;
 use liftoff::Analysis;
 
-mod common;
+use crate::common;
 
 const E: f64 = 30e9;
 const NU: f64 = 0.15;

@@ -1,7 +1,7 @@
 //! The method studies of `liftoff::study`: the speed–accuracy tradeoff and the stability sweep,
 //! on small meshes (the penalty limit ε̄ → 0 is tests/penalty_limit.rs).
 
-mod common;
+use crate::common;
 
 use liftoff::budget;
 use liftoff::foundation::FoundationKind;

@@ -13,7 +13,7 @@
 
 use liftoff::post::Report;
 
-mod common;
+use crate::common;
 
 const E: f64 = 30e9;
 const NU: f64 = 0.15;

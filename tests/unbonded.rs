@@ -1,6 +1,6 @@
 //! Unbonded contact: penalty iteration and QP on the same operators.
 
-mod common;
+use crate::common;
 use common::*;
 use liftoff::method::MethodKind;
 use liftoff::model::ConstraintPoints;

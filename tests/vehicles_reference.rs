@@ -10,7 +10,7 @@ use liftoff::post::Report;
 use liftoff::scene::Overrides;
 use liftoff::study::{critical, CriticalOptions, RunOutcome};
 
-mod common;
+use crate::common;
 
 use common::infinite::{Plate, Rect};
 

@@ -10,7 +10,7 @@
 //! edge's disturbance decays like e^(−βx) and is e^(−12.6) ≈ 3e-6 of its size 15 m in, at the
 //! centre and at the corners' distance from a mid-edge.
 
-mod common;
+use crate::common;
 use common::node_at;
 use liftoff::error::Error;
 use liftoff::method::{Contact, MethodKind};
