@@ -68,27 +68,29 @@ struct Solved {
     cg: CgReport,
 }
 
-/// The products T σ and S σ that the last penalty step's solve ended with (formed from its
-/// answer σ itself, which is `warm`): the next step starts there without forming them again.
+/// Where the next penalty step starts: the last step's answer σ, the penalty weights of the
+/// solve that gave it, and the products its solve ended with — or a σ handed in from a
+/// neighbouring solve ([`IterativeSchur::warm_start`]: no weights, no products).
+struct Last {
+    sigma: Vec<f64>,
+    /// The penalty weights of the solve that gave σ (empty: none, or a start from elsewhere).
+    weights: Vec<f64>,
+    /// T σ and S σ as that solve ended with them (None: σ came from elsewhere, or a face solve
+    /// ran since).
+    products: Option<Products>,
+}
+
+/// The products T σ and S σ (without penalty) of one σ, formed by the solve that ended on it:
+/// the next step starts there without forming them again.
 ///
 /// (Carrying on with the last step's iteration itself — its residual and direction — when the
 /// next step solves the same system to a tighter tolerance was tried and dropped: the
 /// recurrence's residual drifts from the true one under stiff penalty springs, and a restart
 /// from the true residual is what kept the penalty's answer converging to the QP's as ε̄ → 0 —
 /// `tests/exactness.rs` found V 1.4e-6 off at ε̄ = 1e-8 on a layer with it, worse than at 1e-6.)
-struct Last {
+struct Products {
     t_sigma: Vec<f64>,
     s_sigma: Vec<f64>,
-}
-
-/// How the projected PCG begins.
-enum Begin {
-    /// From σ, moved onto the equilibrium, its products formed.
-    Fresh,
-    /// From σ whose products T σ and S σ are these (the last step's answer): no product is
-    /// formed unless σ must be moved onto the equilibrium (more than round-off) or the start is
-    /// abandoned for the fallback.
-    Known(Vec<f64>, Vec<f64>),
 }
 
 /// A start σ whose equilibrium defect |Rᵀf − Cᵀσ| is at most this fraction of |Rᵀf| is not
@@ -114,14 +116,8 @@ pub struct IterativeSchur {
     /// The preconditioner is the matrix itself: a diagonal T and lumped coupling, springs
     /// exactly T on the model's own plate (and the penalty, diagonal with nodal constraints).
     exact: bool,
-    /// The last step's σ, the next one's start.
-    warm: Option<Vec<f64>>,
-    /// The last penalty step's answer and its products (None after a start from elsewhere or
-    /// a face solve); its σ is `warm`.
+    /// The next penalty step's start (None: zero pressure).
     last: Option<Last>,
-    /// The penalty weights of the solve that gave `warm` (empty: none, or a start from
-    /// elsewhere).
-    warm_weights: Vec<f64>,
     /// The last preconditioner, reused while its weights and held set stay (the first is the
     /// bonded one, factored beside the plate).
     cached: Option<Preconditioner>,
@@ -286,9 +282,7 @@ impl IterativeSchur {
             t_diag,
             springs,
             exact,
-            warm: None,
             last: None,
-            warm_weights: Vec::new(),
             cached: Some(bonded),
             time_plate,
             factorisations: usize::from(fresh_springs),
@@ -349,8 +343,9 @@ impl IterativeSchur {
     /// `fallback` instead where `sigma`'s residual exceeds the loads' (relative residual above
     /// one: a worse start than none). Where the preconditioner is the matrix itself (`exact`:
     /// Winkler springs on the model's own plate) the start is the direct solution
-    /// σ = M⁻¹(h + Cα), and CG only confirms it. `begin` says what is known of the start
-    /// ([`Begin`]).
+    /// σ = M⁻¹(h + Cα), and CG only confirms it. `known`: the products T σ and S σ of `sigma`
+    /// (the last step's answer), which are not formed again unless σ must be moved onto the
+    /// equilibrium (more than round-off) or the start is abandoned for the fallback.
     #[allow(clippy::too_many_arguments)]
     fn cg(
         &mut self,
@@ -359,7 +354,7 @@ impl IterativeSchur {
         rows: &[Vec<(usize, f64)>],
         weights: &[f64],
         (mut sigma, mut fallback): (Vec<f64>, Option<Vec<f64>>),
-        mut begin: Begin,
+        known: Option<Products>,
         tol: f64,
         stage: &str,
         monitor: &Monitor<'_>,
@@ -371,7 +366,6 @@ impl IterativeSchur {
             // σ = M⁻¹h on the free points, then along M⁻¹C onto the equilibrium below.
             sigma = self.springs.solve(&pre.inv_d, &pre.factor, &h);
             fallback = None;
-            begin = Begin::Fresh;
         }
         let h_norm = dot(&h, &h).max(f64::MIN_POSITIVE).sqrt();
         let scale = match pre.scale {
@@ -383,10 +377,8 @@ impl IterativeSchur {
                 v
             }
         };
-        let mut known = match begin {
-            Begin::Known(t, s) if !pre.held.iter().any(|&h| h) => Some((t, s)),
-            _ => None,
-        };
+        // Known products are used for an inexact preconditioner's start with no held point.
+        let mut known = known.filter(|_| !self.exact && !pre.held.iter().any(|&h| h));
         let (mut sigma, mut t_sigma, mut s_sigma, mut r, mut z, mut rz, mut residual) = loop {
             pre.mask(&mut sigma);
             // Start: σ moved onto Cᵀσ = Rᵀf along M⁻¹C (not when the defect is round-off and
@@ -405,7 +397,7 @@ impl IterativeSchur {
                 }
             }
             let (t_sigma, s_sigma) = match known.take() {
-                Some(products) => products,
+                Some(p) => (p.t_sigma, p.s_sigma),
                 None => self.t_and_s_times(ops, &sigma),
             };
             let mut r: Vec<f64> = penalised(&s_sigma, rows, weights, &sigma)
@@ -531,14 +523,15 @@ impl IterativeSchur {
         monitor: &Monitor<'_>,
     ) -> Result<(Vec<f64>, Vec<f64>, CgReport)> {
         let mut pre = self.preconditioner(rows, weights, &[])?;
-        let begin = match self.last.take() {
-            Some(last) => Begin::Known(last.t_sigma, last.s_sigma),
-            None => Begin::Fresh,
+        // The start is kept should this step fail; its products are handed on (and gone).
+        let (start, before, known) = match &mut self.last {
+            Some(last) => (
+                last.sigma.clone(),
+                last.weights.clone(),
+                last.products.take(),
+            ),
+            None => (vec![0.0; ops.n_sigma()], Vec::new(), None),
         };
-        let start = self
-            .warm
-            .clone()
-            .unwrap_or_else(|| vec![0.0; ops.n_sigma()]);
         // The last answer's tension at a newly penalised point meets the soft springs'
         // compliance c w/ε̄ there: a start residual of order 1/ε̄ against loads of order one. Where that is worse than
         // no start (on a stiff plate over a membrane-like soil it grew to ~10⁷⁰ times the
@@ -548,8 +541,7 @@ impl IterativeSchur {
         // loose solves of soft plates build on the O(ε̄) tension it keeps).
         let mut other = start.clone();
         for (k, &d) in weights.iter().enumerate() {
-            let before = self.warm_weights.get(k).copied().unwrap_or(0.0);
-            if d > 10.0 * before {
+            if d > 10.0 * before.get(k).copied().unwrap_or(0.0) {
                 let gs: f64 = rows[k].iter().map(|&(i, v)| v * other[i]).sum();
                 if gs < 0.0 {
                     for &(i, _) in &rows[k] {
@@ -565,18 +557,20 @@ impl IterativeSchur {
             rows,
             weights,
             (start, Some(other)),
-            begin,
+            known,
             tol,
             "iterative penalty step (conjugate gradients)",
             monitor,
         );
         self.cached = Some(pre);
         let solved = out?;
-        self.warm = Some(solved.sigma.clone());
-        self.warm_weights = weights.to_vec();
         self.last = Some(Last {
-            t_sigma: solved.t_sigma,
-            s_sigma: solved.s_sigma,
+            sigma: solved.sigma.clone(),
+            weights: weights.to_vec(),
+            products: Some(Products {
+                t_sigma: solved.t_sigma,
+                s_sigma: solved.s_sigma,
+            }),
         });
         Ok((solved.sigma, solved.alpha, solved.cg))
     }
@@ -593,14 +587,16 @@ impl IterativeSchur {
         monitor: &Monitor<'_>,
     ) -> Result<Face> {
         let mut pre = self.preconditioner(&[], &[], held)?;
-        self.last = None;
+        if let Some(last) = &mut self.last {
+            last.products = None;
+        }
         let out = self.cg(
             ops,
             &mut pre,
             &[],
             &[],
             (start.to_vec(), None),
-            Begin::Fresh,
+            None,
             tol,
             "matrix-free QP (conjugate gradients on the free points)",
             monitor,
@@ -624,9 +620,11 @@ impl IterativeSchur {
     /// Start the next penalty step's conjugate gradients from `sigma` (a neighbouring solve's
     /// pressures on the same operators) instead of zero.
     pub fn warm_start(&mut self, sigma: &[f64]) {
-        self.warm = Some(sigma.to_vec());
-        self.last = None;
-        self.warm_weights.clear();
+        self.last = Some(Last {
+            sigma: sigma.to_vec(),
+            weights: Vec::new(),
+            products: None,
+        });
     }
 
     /// The conjugate-gradient settings.
