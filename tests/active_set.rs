@@ -190,7 +190,11 @@ fn equals_clarabel_on_the_paper_halfspace_case() {
     let text = paper_halfspace();
     let clarabel = qp(QpSolver::Clarabel);
     let active = qp(QpSolver::ActiveSet);
-    for (mesh, symmetry) in [(32, "none"), (32, "auto"), (64, "none"), (64, "auto")] {
+    // The whole plate at 32 per side and the finer mesh on the quarter model (1 089 pressure
+    // points). The whole plate at 64 (4 225 points, a dense interior-point QP of that size) was
+    // dropped: 41 s of clarabel alone, over two minutes beside the other tests, and no feature
+    // the two cases here do not hold.
+    for (mesh, symmetry) in [(32, "none"), (32, "auto"), (64, "auto")] {
         let p = problem(&text, mesh, symmetry);
         let ops = Operators::assemble(&p.model);
         let what = format!("half-space {mesh} per side, {symmetry}");
