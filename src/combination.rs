@@ -237,9 +237,9 @@ pub(crate) fn side_by_side(problem: &Problem, base: &Operators, runs: usize) -> 
     runs.min(RUNS_PER_CORE * cores).min(fit).max(cores)
 }
 
-/// `work` on a pool of `threads` threads when that is wider than rayon's own — a pool named
-/// [`crate::solve::linalg::SHARING_POOL`], on which the plate's solves batch ([`side_by_side`])
-/// — else on rayon's.
+/// `work` on a pool of `threads` threads when that is wider than rayon's own — a pool whose
+/// threads are marked ([`crate::solve::linalg::mark_sharing_thread`]) so that the plate's solves
+/// batch on it ([`side_by_side`]) — else on rayon's.
 pub(crate) fn on_threads<R: Send>(threads: usize, work: impl FnOnce() -> R + Send) -> Result<R> {
     if threads <= rayon::current_num_threads() {
         return Ok(work());
@@ -247,6 +247,7 @@ pub(crate) fn on_threads<R: Send>(threads: usize, work: impl FnOnce() -> R + Sen
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .thread_name(|i| format!("{}-{i}", crate::solve::linalg::SHARING_POOL))
+        .start_handler(|_| crate::solve::linalg::mark_sharing_thread())
         .build()
         .map_err(|e| Error::numerical("threads", format!("a pool of {threads} threads: {e}")))?;
     Ok(pool.install(work))
@@ -506,4 +507,25 @@ fn argmin(v: &[f64]) -> Option<usize> {
     (0..v.len())
         .filter(|&a| !v[a].is_nan())
         .min_by(|&a, &b| v[a].total_cmp(&v[b]))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::on_threads;
+    use crate::solve::linalg::in_sharing_pool;
+
+    /// A pool wider than rayon's marks every one of its threads as sharing the plate's solves
+    /// (so they batch); work that fits rayon's own pool runs there, unmarked.
+    #[test]
+    fn a_wider_pool_marks_its_threads_as_sharing() {
+        let wide = rayon::current_num_threads() + 2;
+        let marked = on_threads(wide, || rayon::broadcast(|_| in_sharing_pool()))
+            .unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(marked.len(), wide);
+        assert!(marked.iter().all(|&m| m), "{marked:?}");
+        let own = on_threads(1, || rayon::broadcast(|_| in_sharing_pool()))
+            .unwrap_or_else(|e| panic!("{e}"));
+        assert!(own.iter().all(|&m| !m), "{own:?}");
+        assert!(!in_sharing_pool(), "the calling thread is not marked");
+    }
 }

@@ -2,6 +2,7 @@
 //! factor's two triangular halves apart are [`super::supernodal`]'s), the generalised inverse of
 //! the free plate's stiffness, and dense Cholesky.
 
+use std::cell::Cell;
 use std::sync::Arc;
 
 use faer::dyn_stack::{MemBuffer, MemStack};
@@ -257,7 +258,7 @@ impl PlateInverse {
         })
     }
 
-    /// K⁻ r for one vector. On a pool built to share these solves ([`SHARING_POOL`]: more
+    /// K⁻ r for one vector. On a pool built to share these solves ([`mark_sharing_thread`]: more
     /// positions side by side than cores) it is solved in one batch with the vectors other
     /// threads ask for at the same time; elsewhere alone: on a pool no wider than the cores the
     /// threads' solves run each on its own core, which a batch would only serialise (measured:
@@ -329,14 +330,25 @@ impl PlateInverse {
 }
 
 /// The name (a prefix) of the threads of a pool built to solve positions side by side on one
-/// assembly, whose plate solves [`PlateInverse::apply`] batches.
+/// assembly: a label for profilers and debuggers; what marks such a thread is
+/// [`mark_sharing_thread`].
 pub const SHARING_POOL: &str = "liftoff-shared-solves";
 
-/// Whether this thread belongs to a pool named [`SHARING_POOL`].
-fn in_sharing_pool() -> bool {
-    std::thread::current()
-        .name()
-        .is_some_and(|n| n.starts_with(SHARING_POOL))
+thread_local! {
+    /// Whether this thread is one of a pool built to solve positions side by side on one
+    /// assembly, whose plate solves [`PlateInverse::apply`] batches.
+    static SHARING: Cell<bool> = const { Cell::new(false) };
+}
+
+/// Marks this thread as one of a sharing pool's (its start handler calls this on each of its
+/// threads): from then on its plate solves batch with the other threads'.
+pub fn mark_sharing_thread() {
+    SHARING.with(|s| s.set(true));
+}
+
+/// Whether this thread was marked by [`mark_sharing_thread`].
+pub(crate) fn in_sharing_pool() -> bool {
+    SHARING.with(Cell::get)
 }
 
 /// A dense Cholesky factor L (A = L Lᵀ) with the parallelism it was made with.
