@@ -342,7 +342,7 @@ thread_local! {
 
 /// Marks this thread as one of a sharing pool's (its start handler calls this on each of its
 /// threads): from then on its plate solves batch with the other threads'.
-pub fn mark_sharing_thread() {
+pub(crate) fn mark_sharing_thread() {
     SHARING.with(|s| s.set(true));
 }
 
