@@ -86,26 +86,35 @@ pub struct CgSettings {
     pub tolerance: f64,
     /// The tolerance of the penalty steps whose set is still changing: the set is confirmed by
     /// a solve at `tolerance`, so this only has to get the signs of the pressures right.
+    /// A decade tighter where the preconditioner rests on a shear layer.
     pub loose_tolerance: f64,
     /// Cap on iterations per linear solve.
     pub max_iterations: usize,
-    /// λ: the preconditioner's Winkler springs are λ·diag(T).
+    /// λ: the preconditioner's Winkler springs are λ·diag(T) (where no shear layer is fitted,
+    /// and on penalised points).
     pub spring_scale: f64,
+    /// Put the preconditioner's plate on springs and a shear layer fitted to T's symbol rather
+    /// than on the springs λ·diag(T), on a continuum soil
+    /// ([`crate::solve::iterative`]'s `shear_layer`).
+    pub shear_layer: bool,
     /// Put the preconditioner's plate on a grid twice as coarse (when the element counts are
     /// even): a quarter of the equations to factor and solve.
     pub coarse_plate: bool,
 }
 
 impl Default for CgSettings {
-    /// Tolerance 1e-10 (σ to ~1e-9 of the direct solve), 1e-4 while the set moves, at most
-    /// 2000 iterations, the coarse plate with λ = 0.2 (the fewest iterations on the paper's
-    /// half-space case at 128 and 256 elements per side among λ = 0.02 … 2, BENCHMARKS.md).
+    /// Tolerance 1e-10 (σ to ~1e-9 of the direct solve), 1e-4 while the set moves (1e-5 on the
+    /// shear layer, [`crate::solve::iterative::IterativeSchur::loose_tolerance`]), at most 2000
+    /// iterations, the coarse plate on a shear layer; λ = 0.2 where springs stand in (the
+    /// fewest iterations on the paper's half-space case at 128 and 256 elements per side among
+    /// λ = 0.02 … 2, BENCHMARKS.md).
     fn default() -> Self {
         Self {
             tolerance: 1e-10,
             loose_tolerance: 1e-4,
             max_iterations: 2000,
             spring_scale: 0.2,
+            shear_layer: true,
             coarse_plate: true,
         }
     }
@@ -329,7 +338,7 @@ pub struct ActiveSetSettings {
 
 impl Default for ActiveSetSettings {
     /// KKT to 1e-10, at most 500 outer iterations, CG to 1e-12 (σ to ~1e-10 of the exact
-    /// discrete solution) and 1e-4 while the set moves.
+    /// discrete solution) and 1e-4 while the set moves (1e-5 on the shear layer).
     fn default() -> Self {
         Self {
             tolerance: 1e-10,

@@ -244,7 +244,7 @@ impl Backend {
         match self {
             Backend::Iterative(sys) => {
                 let s = sys.settings();
-                let loose = s.loose_tolerance.max(s.tolerance);
+                let loose = sys.loose_tolerance();
                 vec![loose, MEDIUM_TOLERANCE.clamp(s.tolerance, loose)]
             }
             _ => Vec::new(),

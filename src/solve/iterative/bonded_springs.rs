@@ -70,7 +70,7 @@ pub fn bonded_from_springs(
         let y: Vec<f64> = ops
             .gap0
             .iter()
-            .zip(&pre.inv_d)
+            .zip(&pre.w.diag)
             .map(|(a, d)| a * d)
             .collect();
         loads.push(ops.b_times(&y));
@@ -91,7 +91,7 @@ pub fn bonded_from_springs(
     let mut sigma: Vec<f64> = ops
         .bt_times(v_f)
         .iter()
-        .zip(&pre.inv_d)
+        .zip(&pre.w.diag)
         .map(|(a, d)| a * d)
         .collect();
     if let Some(vg) = v_g {
@@ -99,7 +99,7 @@ pub fn bonded_from_springs(
         for ((s, (g, b)), d) in sigma
             .iter_mut()
             .zip(ops.gap0.iter().zip(ops.bt_times(vg)))
-            .zip(&pre.inv_d)
+            .zip(&pre.w.diag)
         {
             *s -= d * (g - b);
         }

@@ -40,6 +40,7 @@
 mod bonded_springs;
 mod preconditioner;
 mod schur;
+mod shear_layer;
 pub mod springs;
 
 pub use crate::method::CgSettings;

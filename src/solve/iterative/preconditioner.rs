@@ -1,17 +1,18 @@
 //! The preconditioner of the projected PCG for one penalised set (and held set): the plate on
-//! springs ([`super::springs`]) with the penalty's diagonal, and the projections that keep the
-//! iterates on the equilibrium.
+//! springs or on a shear layer ([`super::springs`], [`super::shear_layer`]) with the penalty's
+//! diagonal, and the projections that keep the iterates on the equilibrium.
 
-use super::springs::SpringPlate;
+use super::shear_layer::{self, ShearLayer};
+use super::springs::{SpringPlate, Springs};
 use crate::error::Result;
 use crate::solve::linalg::{dot, SmallSpd, SparseFactor};
 
 /// The preconditioner of one penalised set (and held set).
 #[derive(Clone)]
 pub(super) struct Preconditioner {
-    /// 1/D per pressure node (0 on held points).
-    pub(super) inv_d: Vec<f64>,
-    /// Factor of K_r + B_L D⁻¹ B_Lᵀ.
+    /// The foundation W (W_jj = 0 on held points).
+    pub(super) w: Springs,
+    /// Factor of K_r + Q W Qᵀ.
     pub(super) factor: SparseFactor,
     /// The rigid-mode columns C restricted to the free points.
     pub(super) c: Vec<Vec<f64>>,
@@ -33,30 +34,27 @@ pub(super) struct Preconditioner {
 
 impl Preconditioner {
     /// The preconditioner for penalty weights on `rows` and the points `held` at zero (empty:
-    /// none), with springs `spring_scale`·diag(T) on the plate `springs`.
+    /// none) on the plate `springs`: its foundation the shear `layer` where one is fitted,
+    /// springs `spring_scale`·diag(T) otherwise ([`shear_layer::springs`]).
     pub(super) fn new(
         springs: &SpringPlate,
-        t_diag: &[f64],
+        (t_diag, spring_scale): (&[f64], f64),
+        layer: Option<&ShearLayer>,
         c_full: &[Vec<f64>],
-        spring_scale: f64,
         (rows, weights): (&Rows, &[f64]),
         held: &[bool],
     ) -> Result<Self> {
-        let mut d: Vec<f64> = t_diag.iter().map(|t| spring_scale * t).collect();
+        let mut pen = vec![0.0; t_diag.len()];
         for (k, &w) in weights.iter().enumerate() {
             if w != 0.0 {
                 for &(i, v) in &rows[k] {
-                    d[i] += w * v * v;
+                    pen[i] += w * v * v;
                 }
             }
         }
         let is_held = |i: usize| held.get(i).copied().unwrap_or(false);
-        let inv_d: Vec<f64> = d
-            .iter()
-            .enumerate()
-            .map(|(i, v)| if is_held(i) { 0.0 } else { 1.0 / v })
-            .collect();
-        let factor = springs.factor(&inv_d)?;
+        let w = shear_layer::springs(springs, layer, (t_diag, spring_scale), &pen, is_held);
+        let factor = springs.factor(&w)?;
         let c: Vec<Vec<f64>> = c_full
             .iter()
             .map(|col| {
@@ -66,12 +64,12 @@ impl Preconditioner {
                     .collect()
             })
             .collect();
-        let (minv_c, plate_c) = springs.solve_many(&inv_d, &factor, &c);
+        let (minv_c, plate_c) = springs.solve_many(&w, &factor, &c);
         let m = c.len();
         let small = SmallSpd::new(m, |a, b| dot(&c[a], &minv_c[b]));
         let ctc = SmallSpd::new(m, |a, b| dot(&c[a], &c[b]));
         Ok(Self {
-            inv_d,
+            w,
             factor,
             c,
             minv_c,
@@ -94,7 +92,7 @@ impl Preconditioner {
     /// first (Gould, Hribar & Nocedal's iterative refinement), which otherwise lets Cᵀσ drift.
     /// `springs` is the plate it was made on.
     pub(super) fn project(&self, springs: &SpringPlate, r: &[f64]) -> Vec<f64> {
-        let mut z = springs.solve(&self.inv_d, &self.factor, r);
+        let mut z = springs.solve(&self.w, &self.factor, r);
         for _ in 0..2 {
             let ctz: Vec<f64> = self.c.iter().map(|c| dot(c, &z)).collect();
             let s = self.small.solve(&ctz);

@@ -5,6 +5,7 @@ use std::sync::Arc;
 use std::time::Instant;
 
 use super::preconditioner::Preconditioner;
+use super::shear_layer::{self, ShearLayer};
 use super::springs::{coarse_resolves, SpringPlate};
 use crate::error::{Error, Result};
 use crate::foundation::Compliance;
@@ -113,6 +114,8 @@ pub struct IterativeSchur {
     t_diag: Vec<f64>,
     /// The preconditioner's plate on springs.
     springs: Arc<SpringPlate>,
+    /// The preconditioner's shear layer (None: springs λ·diag(T)).
+    layer: Option<Arc<ShearLayer>>,
     /// The preconditioner is the matrix itself: a diagonal T and lumped coupling, springs
     /// exactly T on the model's own plate (and the penalty, diagonal with nodal constraints).
     exact: bool,
@@ -134,9 +137,21 @@ pub struct IterativeSchur {
 /// scale): the plate on springs and the bonded preconditioner (no held points, no penalty, its
 /// CG scale not yet set), where the penalty and the active-set iteration both start.
 pub(super) struct SpringSetup {
-    key: (bool, f64),
+    key: SetupKey,
     pub(super) springs: Arc<SpringPlate>,
+    pub(super) layer: Option<Arc<ShearLayer>>,
     pub(super) bonded: Preconditioner,
+}
+
+/// The settings a [`SpringSetup`] was made for: coarse plate, spring scale, shear layer.
+type SetupKey = (bool, f64, bool);
+
+fn setup_key(settings: &CgSettings) -> SetupKey {
+    (
+        settings.coarse_plate,
+        settings.spring_scale,
+        settings.shear_layer,
+    )
 }
 
 /// The plate's own factor (its rigid modes fixed), cached per assembly beside [`SpringSetup`].
@@ -149,12 +164,27 @@ impl SpringSetup {
     fn new(ops: &Operators, settings: CgSettings, t_diag: &[f64], c: &[Vec<f64>]) -> Result<Self> {
         // The coarse plate only where it carries the plate's compliance (a nearly membrane
         // plate needs the fine one).
-        let springs = SpringPlate::new(ops, settings.coarse_plate && coarse_resolves(ops))?;
-        let bonded =
-            Preconditioner::new(&springs, t_diag, c, settings.spring_scale, (&[], &[]), &[])?;
+        let layer = settings
+            .shear_layer
+            .then(|| shear_layer::fit(ops, t_diag))
+            .flatten();
+        let springs = SpringPlate::new(
+            ops,
+            settings.coarse_plate && coarse_resolves(ops),
+            layer.is_some(),
+        )?;
+        let bonded = Preconditioner::new(
+            &springs,
+            (t_diag, settings.spring_scale),
+            layer.as_ref(),
+            c,
+            (&[], &[]),
+            &[],
+        )?;
         Ok(Self {
-            key: (settings.coarse_plate, settings.spring_scale),
+            key: setup_key(&settings),
             springs: Arc::new(springs),
+            layer: layer.map(Arc::new),
             bonded,
         })
     }
@@ -167,7 +197,7 @@ impl SpringSetup {
         t_diag: &[f64],
         c: &[Vec<f64>],
     ) -> Result<(Arc<Self>, bool)> {
-        let key = (settings.coarse_plate, settings.spring_scale);
+        let key = setup_key(&settings);
         match ops
             .cache
             .get_or_try_init(|| Self::new(ops, settings, t_diag, c))?
@@ -223,7 +253,7 @@ impl IterativeSchur {
         // parallel) would otherwise block it while the factorisations' own rayon jobs wait for
         // a free worker — a deadlock. (The cache's lock is held while it computes, so the two
         // are made outside it and stored after.)
-        let key = (settings.coarse_plate, settings.spring_scale);
+        let key = setup_key(&settings);
         let have_springs = cached::<SpringSetup>(ops);
         let have_plate = cached::<PlateSetup>(ops);
         let ((plate, fresh_plate), (setup, fresh_springs)) = match (have_plate, have_springs) {
@@ -260,6 +290,7 @@ impl IterativeSchur {
         };
         let kinv = plate.kinv.clone();
         let springs = setup.springs.clone();
+        let layer = setup.layer.clone();
         let bonded = setup.bonded.clone();
         let time_plate = if fresh_plate { plate.time_plate } else { 0.0 };
         let exact = matches!(ops.t.as_ref(), Compliance::Diagonal(_))
@@ -281,6 +312,7 @@ impl IterativeSchur {
             rf,
             t_diag,
             springs,
+            layer,
             exact,
             last: None,
             cached: Some(bonded),
@@ -331,9 +363,9 @@ impl IterativeSchur {
         self.factorisations += 1;
         Preconditioner::new(
             &self.springs,
-            &self.t_diag,
+            (&self.t_diag, self.settings.spring_scale),
+            self.layer.as_deref(),
             &self.c,
-            self.settings.spring_scale,
             (rows, weights),
             held,
         )
@@ -364,7 +396,7 @@ impl IterativeSchur {
         pre.mask(&mut h);
         if self.exact {
             // σ = M⁻¹h on the free points, then along M⁻¹C onto the equilibrium below.
-            sigma = self.springs.solve(&pre.inv_d, &pre.factor, &h);
+            sigma = self.springs.solve(&pre.w, &pre.factor, &h);
             fallback = None;
         }
         let h_norm = dot(&h, &h).max(f64::MIN_POSITIVE).sqrt();
@@ -630,6 +662,26 @@ impl IterativeSchur {
     /// The conjugate-gradient settings.
     pub fn settings(&self) -> CgSettings {
         self.settings
+    }
+
+    /// The tolerance of the solves while a set moves: [`CgSettings::loose_tolerance`], a decade
+    /// tighter on the shear layer (never tighter than the confirming tolerance). From the last
+    /// answer the layer reaches 1e-4 in one or two iterations, too few to carry the pressures
+    /// near the contact edge to their signs: the set then wandered (25 penalty steps of 1–2
+    /// iterations on the half-space lane's first position, where 1e-5 takes 6 and springs at
+    /// 1e-4 took 7; BENCHMARKS.md, session 23).
+    pub fn loose_tolerance(&self) -> f64 {
+        let loose = if self.layer.is_some() {
+            0.1 * self.settings.loose_tolerance
+        } else {
+            self.settings.loose_tolerance
+        };
+        loose.max(self.settings.tolerance)
+    }
+
+    /// Whether the preconditioner's plate rests on a shear layer fitted to T (else on springs).
+    pub fn shear_layer(&self) -> bool {
+        self.layer.is_some()
     }
 
     /// Whether the preconditioner is the matrix itself (so a tight solve costs about one CG

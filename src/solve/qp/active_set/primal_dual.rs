@@ -73,7 +73,7 @@ impl Run<'_> {
         let mut level = if sys.exact() {
             tight_tol
         } else {
-            cg.loose_tolerance.max(tight_tol)
+            sys.loose_tolerance()
         };
         // (fewest points changed by a step so far, steps since).
         let mut wander = (usize::MAX, 0usize);
