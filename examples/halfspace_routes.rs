@@ -6,6 +6,10 @@
 //!
 //!     cargo run --release --example halfspace_routes -- [--sizes 32,64,128] [--dense-max 128]
 //!         [--springs 0.05] [--tol 1e-10] [--loose 1e-4] [--no-iterative] [--fine-plate]
+//!         [--no-shear-layer]
+//!
+//! `--springs` is λ of the preconditioner's springs λ·diag(T): on penalised points only, unless
+//! `--no-shear-layer` puts the plate on springs everywhere (the preconditioner before session 23).
 //!
 //! Run one route per process (`--dense-max 0`, or `--no-iterative`) to read its peak memory
 //! (VmHWM, printed) on its own.
@@ -66,6 +70,7 @@ fn main() {
     let loose: f64 = arg(&args, "--loose").unwrap_or(1e-4);
     let iterative = !args.iter().any(|a| a == "--no-iterative");
     let coarse = !args.iter().any(|a| a == "--fine-plate");
+    let shear_layer = !args.iter().any(|a| a == "--no-shear-layer");
     let text = liftoff::examples::scene("paper-halfspace").unwrap_or_default();
     for &n in &sizes {
         let n = n as usize;
@@ -107,6 +112,7 @@ fn main() {
                     tolerance: tol,
                     loose_tolerance: loose,
                     coarse_plate: coarse,
+                    shear_layer,
                     spring_scale: lambda,
                     ..CgSettings::default()
                 },

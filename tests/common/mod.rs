@@ -5,7 +5,7 @@ pub mod infinite;
 
 use liftoff::model::ConstraintPoints;
 use liftoff::post::Report;
-use liftoff::study::{eps_sweep, log_space};
+use liftoff::study::{eps_sweep, log_space, StabilityRow};
 use liftoff::{analyse, Analysis, Problem};
 
 /// A dimensionless scene with one point load (s, t) and the given groups.
@@ -227,4 +227,26 @@ contact = "bonded"
         .iter()
         .map(|&x| f.at(&f.w, cx + x, cy).expect("on the plate"))
         .collect()
+}
+
+/// Why a converged row of the stability study breaks what every converged run holds, or None:
+/// equilibrium within the analysis's tolerance, a contact fraction in (0, 1], at least one
+/// iteration — a QP whose start is its answer takes none (a plate balanced on one node: one
+/// feasible pressure, under 1 % contact) —, and the QP's pressures ≥ −1e-9 (its round-off). NaN
+/// fails each. (tests/studies.rs and tests/stability_gamma.rs hold their rows to it.)
+pub fn converged_row_fault(r: &StabilityRow) -> Option<String> {
+    let qp = r.method.name() == "qp";
+    if r.equilibrium.is_nan() || r.equilibrium > liftoff::solve::EQUILIBRIUM_TOLERANCE {
+        return Some(format!("equilibrium {:e}", r.equilibrium));
+    }
+    if !(r.contact_fraction > 0.0 && r.contact_fraction <= 1.0) {
+        return Some(format!("contact fraction {}", r.contact_fraction));
+    }
+    if r.iterations == 0 && !(qp && r.contact_fraction < 0.01) {
+        return Some("no iteration".to_string());
+    }
+    if qp && (r.min_pressure.is_nan() || r.min_pressure < -1e-9) {
+        return Some(format!("QP min σ {:e}", r.min_pressure));
+    }
+    None
 }
