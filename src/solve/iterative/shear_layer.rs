@@ -16,11 +16,13 @@
 //! to 2–3). A Pasternak layer is this W's continuum: springs k and a membrane of tension G.
 //!
 //! The fit reads T's symbol from one product: the column u = T e₀ of a node e₀ near the middle
-//! of the model, T̂(ξ) = Σ_i u_i cos(ξ · (x_i − x₀)), at wavenumbers along both axes and the
-//! diagonal from the grid's (π/h) down to 1/(2ℓ) (ℓ the plate's radius of relative stiffness:
-//! below it the plate dominates and the sum's truncation by the plate's size does not matter).
-//! k minimises the ratio max/min of T̂(ξ)(k + ℓ̂(ξ)) over those samples; s centres that ratio
-//! on one (its geometric mean).
+//! of the model, tapered to zero over the outer half of its distance R to the model's edge,
+//! T̂(ξ) = Σ_i u_i cos(ξ · (x_i − x₀)), at wavenumbers along both axes and the diagonal from the
+//! grid's (π/h) down to 1/(2ℓ) (ℓ the plate's radius of relative stiffness: below it the plate
+//! dominates) but not below [`READABLE`]/R (where the plate's edge cuts the sum). k minimises
+//! the ratio max/min of T̂(ξ)(k + ℓ̂(ξ)) over those samples, no smaller than the lowest sample's
+//! ℓ̂ (below the samples the layer is springs); s centres that ratio on one (its geometric
+//! mean).
 
 use super::springs::{SpringPlate, Springs};
 use crate::operators::Operators;
