@@ -14,16 +14,19 @@
 //! On that subspace BᵀK⁻B does not depend on which generalised inverse K⁻ is (Bp is orthogonal to
 //! the rigid modes), so the iteration sees the true plate compliance.
 //!
-//! **Preconditioner: the plate on springs** ([`springs`]): M = D + QᵀK_p⁻Q with D the
-//! springs λ·diag(T) (a Winkler bed matched to the half-space's own point stiffness) plus the
-//! penalty's diagonal, and K_p the plate — by default on a grid twice as coarse. M holds the
-//! plate exactly at the long wavelengths where it dominates A (its free edges and its low
-//! modes) and the penalty exactly where it is diagonal (nodal constraints), so only the
-//! half-space's non-local part is left to the iteration; M⁻¹ is one sparse solve.
+//! **Preconditioner: the plate on a sparse foundation** ([`springs`]): M = W⁻¹ + QᵀK_p⁻Q with
+//! W, on a continuum soil, springs and a shear layer fitted to T's symbol (`shear_layer`: it
+//! falls with T's 1/|ξ| where T dominates A, which springs cannot), springs 1/(λ t_jj + d_j)
+//! on the penalised points (the penalty's diagonal), and K_p the plate — by default on a grid
+//! twice as coarse. M holds the plate exactly at the long wavelengths where it dominates A (its
+//! free edges and its low modes) and the penalty exactly where it is diagonal (nodal
+//! constraints), so only the half-space's non-local part is left to the iteration; M⁻¹ is one
+//! sparse solve. Without the layer (`CgSettings::shear_layer` off, a model under 16 elements a
+//! side, a local soil) W is the springs λ·diag(T) everywhere.
 //!
 //! Each step starts from the previous step's σ (warm start), so the later penalty steps, which
 //! change a few points, take few iterations; steps whose set is still moving are solved to a
-//! loose tolerance ([`CgSettings::loose_tolerance`]), then to a medium one once the set repeats
+//! loose tolerance ([`IterativeSchur::loose_tolerance`]), then to a medium one once the set repeats
 //! there, and the penalty iteration confirms a set only with a tight solve. A step starts from
 //! the last answer with the products T σ and S σ its solve ended with (no product to form), and
 //! the displacements are formed once, for the step the iteration ends on.
