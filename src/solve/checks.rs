@@ -51,7 +51,8 @@ pub fn check_feasible(ops: &Operators) -> Result<()> {
     // acts at the centroid of its shape function (coupling B), so with nodal constraints the
     // reachable resultants are the bounding box of those centroids — for the consistent
     // (half-space) coupling a third of an element inside the plate edge.
-    let c: Vec<Vec<f64>> = ops.rigid.iter().map(|r| ops.bt_times(r)).collect();
+    let columns = mode_columns(ops);
+    let c = &columns.0;
     let nodal = ops.constraints.kind == ConstraintPoints::Nodal;
     let m = &ops.mesh;
     let bounds = |k: usize, lo: f64, hi: f64| {
@@ -162,15 +163,16 @@ pub fn check_feasible_jointed(ops: &Operators) -> Result<()> {
     if ops.constraints.kind != ConstraintPoints::Nodal {
         return Ok(());
     }
+    let columns = mode_columns(ops);
     for c in 0..n_clusters {
-        let modes: Vec<&Vec<f64>> = ops
+        let (modes, cols): (Vec<&Vec<f64>>, Vec<Vec<f64>>) = ops
             .rigid
             .iter()
+            .zip(&columns.0)
             .zip(&ops.rigid_clusters)
             .filter(|(_, &k)| k == c)
-            .map(|(r, _)| r)
-            .collect();
-        let cols: Vec<Vec<f64>> = modes.iter().map(|r| ops.bt_times(r)).collect();
+            .map(|((r, col), _)| (r, col.clone()))
+            .unzip();
         let b: Vec<f64> = modes.iter().map(|r| linalg::dot(r, &ops.f)).collect();
         let zeros = vec![0.0; ops.n_sigma()];
         // The projection answers fast; when it does not converge, refuse only on a proof: b
@@ -185,6 +187,24 @@ pub fn check_feasible_jointed(ops: &Operators) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// Bᵀ r for every rigid mode r of the operators (the balance each mode asks of the nodal
+/// pressures), made once per assembly and kept in its cache: every load checked on it reads the
+/// same.
+struct ModeColumns(Vec<Vec<f64>>);
+
+fn mode_columns(ops: &Operators) -> std::sync::Arc<ModeColumns> {
+    match ops
+        .cache
+        .get_or_try_init::<_, std::convert::Infallible>(|| {
+            Ok(ModeColumns(
+                ops.rigid.iter().map(|r| ops.bt_times(r)).collect(),
+            ))
+        }) {
+        Ok((columns, _)) => columns,
+        Err(never) => match never {},
+    }
 }
 
 /// Relative distance of a cluster's load from the balances non-negative pressures can give
