@@ -17,7 +17,7 @@ use super::bonded::{saddle_solve, SchurSystem};
 use super::diagnostics::CgReport;
 use super::iterative::{CgSettings, IterativeSchur};
 use super::linalg::{diagonal_positions, lumped_coupling};
-use super::linalg::{faer_view, sparse_solve, SparseCholesky, SparseFactor};
+use super::linalg::{faer_view, SparseCholesky, SparseFactor};
 use super::low_rank::LowRankSchur;
 use super::rigid_split::{needs_split, RigidSplit};
 use super::spring_factor::{woodbury_limit, Carry, Factored};
@@ -360,10 +360,12 @@ impl Backend {
                                 k.data_mut()[layout.diag[eq]] += springs[j];
                             }
                             let llt = chol.factor(k, "penalised Winkler system")?;
-                            let mut u = rhs;
-                            sparse_solve(&llt, &mut u);
-                            *factored =
-                                Some(Factored::new(ops.k.clone(), Arc::new(llt), springs.clone()));
+                            // Solved as an update of nothing: a supernodal factor keeps the
+                            // forward half of f for the next steps and solves.
+                            let mut fresh =
+                                Factored::new(ops.k.clone(), Arc::new(llt), springs.clone());
+                            let u = fresh.woodbury_solve(&rhs, &[])?;
+                            *factored = Some(fresh);
                             u
                         }
                     }

@@ -19,9 +19,11 @@
 //!
 //! one solve's two halves (the forward half once for the steps of a solve, which share f) and,
 //! per changed point, a forward solve of a unit vector, which touches only the supernodes on
-//! its path to the root instead of two full triangular solves of the whole factor (1.5 % of a
-//! damage run's time, session 18's profile). The columns of W and their dot products are kept
-//! as Z's are.
+//! its path to the root instead of two full triangular solves of the whole factor. The new
+//! columns of a step are solved together ([`SparseFactor::forward_units`]): the supernodes near
+//! the root, which every path reaches and which hold most of a column's work, are then read
+//! once a step, not once a column (a damage run's columns: 12 % of its time one at a time, 3 %
+//! together, session 24's profile). The columns of W and their dot products are kept as Z's are.
 //!
 //! **Between solves** ([`Carry`]): a pass of a load along a lane solves position after position
 //! on the same operators; each position's lifted region differs from the last one's near its
@@ -184,8 +186,20 @@ impl Factored {
         let lost = || Error::numerical("penalty (low-rank update)", "not a supernodal factor");
         let mut g = match &self.last_rhs {
             Some((rhs, g)) if rhs.as_slice() == f => g.clone(),
-            _ => {
-                let g = self.factor.forward(f).ok_or_else(lost)?;
+            last => {
+                // A load moved along a lane changes f where it was and where it is only: then
+                // L⁻¹ P f is the last one's plus the forward solve of the sparse difference.
+                let moved = last.as_ref().and_then(|(rhs, g)| {
+                    let delta = sparse_difference(f, rhs, n / SPARSE_SHARE)?;
+                    let mut column = self.factor.forward_sparse(&[delta])?;
+                    let mut g = g.clone();
+                    column.pop()?.add_to(1.0, &mut g);
+                    Some(g)
+                });
+                let g = match moved {
+                    Some(g) => g,
+                    None => self.factor.forward(f).ok_or_else(lost)?,
+                };
                 self.last_rhs = Some((f.to_vec(), g.clone()));
                 g
             }
@@ -200,9 +214,14 @@ impl Factored {
                 self.dots
                     .retain(|(a, b), _| wanted.contains(a) && wanted.contains(b));
             }
-            for &(i, _) in updates {
-                if !self.forward.contains_key(&i) {
-                    let column = self.factor.forward_unit(i).ok_or_else(lost)?;
+            let missing: Vec<usize> = updates
+                .iter()
+                .map(|&(i, _)| i)
+                .filter(|i| !self.forward.contains_key(i))
+                .collect();
+            if !missing.is_empty() {
+                let columns = self.factor.forward_units(&missing).ok_or_else(lost)?;
+                for (i, column) in missing.into_iter().zip(columns) {
                     self.forward.insert(i, Arc::new(column));
                 }
             }
@@ -243,6 +262,26 @@ impl Factored {
         }
         Ok(u)
     }
+}
+
+/// A right-hand side that differs from the last one's in at most n / `SPARSE_SHARE` equations
+/// has its forward half updated by a sparse forward solve of the difference (the union of its
+/// entries' paths), not solved afresh: an axle moved to its next position changes a few hundred
+/// of a slab's twenty thousand equations.
+const SPARSE_SHARE: usize = 20;
+
+/// The entries of f − last that are not zero, if there are at most `limit` of them.
+fn sparse_difference(f: &[f64], last: &[f64], limit: usize) -> Option<Vec<(usize, f64)>> {
+    let mut delta = Vec::new();
+    for (i, (a, b)) in f.iter().zip(last).enumerate() {
+        if a != b {
+            if delta.len() == limit {
+                return None;
+            }
+            delta.push((i, a - b));
+        }
+    }
+    Some(delta)
 }
 
 /// What one penalty solve hands the next on the same operators (see the module's description):
@@ -403,6 +442,37 @@ mod tests {
             }
             assert!((column.dot(&column) - crate::solve::linalg::dot(&full, &full)).abs() < 1e-13);
         }
+        // Columns solved together (paths that share the supernodes near the root, two in one
+        // supernode) are each the full forward solve's column, to the same round-off.
+        let eqs = [777, 0, 778, n - 1, 1351];
+        let together = factor.forward_units(&eqs).expect("supernodal");
+        assert_eq!(together.len(), eqs.len());
+        for (&eq, column) in eqs.iter().zip(&together) {
+            let mut e = vec![0.0; n];
+            e[eq] = 1.0;
+            let full = factor.forward(&e).expect("supernodal");
+            let mut sparse = vec![0.0; n];
+            column.add_to(1.0, &mut sparse);
+            for (p, q) in sparse.iter().zip(&full) {
+                assert!((p - q).abs() <= 1e-13, "{p} vs {q}");
+            }
+        }
+        // A sparse vector's forward solve is the dense one's.
+        let entries = vec![(3, 0.5), (1200, -2.0), (n - 2, 1.5)];
+        let mut dense = vec![0.0; n];
+        for &(i, v) in &entries {
+            dense[i] = v;
+        }
+        let full = factor.forward(&dense).expect("supernodal");
+        let column = factor
+            .forward_sparse(&[entries])
+            .expect("supernodal")
+            .remove(0);
+        let mut sparse = vec![0.0; n];
+        column.add_to(1.0, &mut sparse);
+        for (p, q) in sparse.iter().zip(&full) {
+            assert!((p - q).abs() <= 1e-13, "{p} vs {q}");
+        }
         let mut f = Factored::new(Arc::new(a), factor, base.clone());
         let rhs: Vec<f64> = (0..n).map(|i| (i as f64 * 0.37).cos()).collect();
         for changed in [vec![5usize, 400, 401, 1210], vec![5, 400, 999, 2699, 1351]] {
@@ -426,6 +496,25 @@ mod tests {
             for (p, q) in u.iter().zip(&v) {
                 assert!((p - q).abs() <= 1e-11 * scale, "{p} vs {q}");
             }
+        }
+        // A load moved: f differs from the last one in a few equations, and the forward half is
+        // updated by the difference's sparse solve (n / SPARSE_SHARE = 375 entries allowed).
+        let mut moved = rhs.clone();
+        for i in [10, 11, 1500, 2650] {
+            moved[i] += 3.0;
+        }
+        assert!(sparse_difference(&moved, &rhs, n / SPARSE_SHARE).is_some());
+        let mut springs = base.clone();
+        springs[5] = 20.0;
+        let u = f
+            .woodbury_solve(&moved, &[(5, springs[5] - base[5])])
+            .expect("update");
+        let direct = chol.factor(&matrix(&springs), "test").expect("factor");
+        let mut v = moved.clone();
+        sparse_solve(&direct, &mut v);
+        let scale = v.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+        for (p, q) in u.iter().zip(&v) {
+            assert!((p - q).abs() <= 1e-11 * scale, "{p} vs {q}");
         }
         // Seven distinct points: seven forward columns, 5 and 400 computed once.
         assert_eq!(f.forward.len(), 7);
