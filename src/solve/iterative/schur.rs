@@ -679,11 +679,6 @@ impl IterativeSchur {
         loose.max(self.settings.tolerance)
     }
 
-    /// Whether the preconditioner's plate rests on a shear layer fitted to T (else on springs).
-    pub fn shear_layer(&self) -> bool {
-        self.layer.is_some()
-    }
-
     /// Whether the preconditioner is the matrix itself (so a tight solve costs about one CG
     /// iteration more than a loose one).
     pub fn exact(&self) -> bool {

@@ -30,7 +30,7 @@ use crate::solve::linalg::{reduce, SparseCholesky, SparseFactor};
 
 /// The preconditioner's foundation W over the pressure nodes: W_jj, and W_ij on the plate's
 /// links ([`SpringPlate::links`]; none: springs only, W = diag).
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub struct Springs {
     /// W_jj (0 on held points).
     pub diag: Vec<f64>,
