@@ -20,6 +20,7 @@ use std::collections::HashMap;
 use faer::Mat;
 
 use super::linalg::{dense_cholesky, DenseLlt, SpdSolve};
+use super::spring_factor::missing_keys;
 use crate::error::{Error, Result};
 
 /// Most changed points solved by an update: past n/8 columns the triangular solves cost about as
@@ -131,11 +132,7 @@ impl LowRankSchur {
             .as_mut()
             .ok_or_else(|| Error::numerical("penalty (low-rank update)", "no factor"))?;
         // New columns A⁻¹ g_k, solved together.
-        let missing: Vec<usize> = changed
-            .iter()
-            .map(|&(k, _)| k)
-            .filter(|k| !base.columns.contains_key(k))
-            .collect();
+        let missing = missing_keys(&changed, &base.columns);
         if !missing.is_empty() {
             let mut z = Mat::<f64>::zeros(n, missing.len());
             for (c, &k) in missing.iter().enumerate() {

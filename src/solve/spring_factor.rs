@@ -131,11 +131,7 @@ impl Factored {
                 updates.iter().map(|&(i, _)| i).collect();
             self.columns.retain(|i, _| wanted.contains(i));
         }
-        let missing: Vec<usize> = updates
-            .iter()
-            .map(|&(i, _)| i)
-            .filter(|i| !self.columns.contains_key(i))
-            .collect();
+        let missing = missing_keys(updates, &self.columns);
         if !missing.is_empty() {
             let mut z = Mat::<f64>::zeros(n, missing.len());
             for (c, &i) in missing.iter().enumerate() {
@@ -214,11 +210,7 @@ impl Factored {
                 self.dots
                     .retain(|(a, b), _| wanted.contains(a) && wanted.contains(b));
             }
-            let missing: Vec<usize> = updates
-                .iter()
-                .map(|&(i, _)| i)
-                .filter(|i| !self.forward.contains_key(i))
-                .collect();
+            let missing = missing_keys(updates, &self.forward);
             if !missing.is_empty() {
                 let columns = self.factor.forward_units(&missing).ok_or_else(lost)?;
                 for (i, column) in missing.into_iter().zip(columns) {
@@ -262,6 +254,15 @@ impl Factored {
         }
         Ok(u)
     }
+}
+
+/// The indices of `updates` (index, value) that `have` holds no column for, in their order.
+pub(super) fn missing_keys<V>(updates: &[(usize, f64)], have: &HashMap<usize, V>) -> Vec<usize> {
+    updates
+        .iter()
+        .map(|&(i, _)| i)
+        .filter(|i| !have.contains_key(i))
+        .collect()
 }
 
 /// A right-hand side that differs from the last one's in at most n / `SPARSE_SHARE` equations
