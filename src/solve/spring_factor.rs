@@ -445,8 +445,9 @@ mod tests {
             }
             assert!((column.dot(&column) - crate::solve::linalg::dot(&full, &full)).abs() < 1e-13);
         }
-        // Columns solved together (paths that share the supernodes near the root, two in one
-        // supernode) are each the full forward solve's column, to the same round-off.
+        // Columns solved together (paths that share the supernodes near the root, neighbouring
+        // equations among them, given out of order) are each the full forward solve's column,
+        // to the same round-off.
         let eqs = [777, 0, 778, n - 1, 1351];
         let together = factor.forward_units(&eqs).expect("supernodal");
         assert_eq!(together.len(), eqs.len());
