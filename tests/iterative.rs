@@ -333,7 +333,8 @@ fn the_cg_tolerance_key_sets_the_confirming_solves() {
 /// (`warm_start`, which forms them) it may differ by what two solves to the tight tolerance may
 /// (each within about the preconditioned system's condition number times 1e-10 of the exact
 /// σ): measured 2e-14 and 8e-13, 1e-8 allowed. Both cases the penalty iteration meets: the same weights solved again to
-/// a tighter tolerance (a set confirmed), and other weights (the set changed). Paper's case at
+/// a tighter tolerance (a set confirmed), and other weights (the set changed) — after a loose
+/// step, whose products are the iterations' updates, not formed again. Paper's case at
 /// 32², quarter model; penalty weights at ε̄ = 1e-5 on the points the bonded solve puts in
 /// tension, then on those and a ring about the centre.
 #[test]
@@ -376,13 +377,28 @@ fn a_step_starts_from_the_last_answers_products() {
     let new = || IterativeSchur::new(&ops, CgSettings::default()).expect("iterative system");
 
     let mut steps = new();
-    let (mut before, _, _) = steps
+    steps
+        .solve_pressures(&ops, &rows, &second, Some(1e-4), &monitor)
+        .expect("loose solve");
+    // A loose step from the last answer's products: one product an iteration and none for its
+    // answer, whose products are the iterations' updates, not formed again.
+    let made = steps.products;
+    let (mut before, _, loose) = steps
         .solve_pressures(&ops, &rows, &first, Some(1e-4), &monitor)
         .expect("loose solve");
+    assert!(loose.iterations > 0, "{loose:?}");
+    assert_eq!(steps.products - made, loose.iterations, "{loose:?}");
     for (weights, what) in [(&first, "the same weights"), (&second, "other weights")] {
+        let made = steps.products;
         let (known, _, cg) = steps
             .solve_pressures(&ops, &rows, weights, None, &monitor)
             .unwrap_or_else(|e| panic!("{what}, from known products: {e}"));
+        // A confirming solve: one product an iteration and its answer's formed afresh; with
+        // the same weights the start's are the ones handed over (with others the start may be
+        // abandoned for zero pressure at the new springs' pulling points, one product more).
+        if what == "the same weights" {
+            assert_eq!(steps.products - made, cg.iterations + 1, "{what}: {cg:?}");
+        }
         let mut fresh = new();
         fresh.warm_start(&before);
         let (reference, _, _) = fresh

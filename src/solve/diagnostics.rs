@@ -99,6 +99,9 @@ pub struct CgReport {
     pub iterations: usize,
     /// Final relative preconditioned residual.
     pub residual: f64,
-    /// Relative residual ‖Aσ − Cα − h‖ / ‖h‖ of the returned solution, recomputed.
+    /// Relative residual ‖Aσ − Cα − h‖ / ‖h‖ of the returned solution: recomputed (a fresh
+    /// product) on solves to the settings' tolerance; on a penalty step solved to the loose one,
+    /// from the products the iterations updated (no plate solve spent on a step that only has to
+    /// give the pressures' signs; the confirming solve recomputes them).
     pub true_residual: f64,
 }

@@ -335,18 +335,6 @@ impl IterativeSchur {
         (tp, sp)
     }
 
-    /// A p = T p + BᵀK⁻B p + Σ_k d_k g_k g_kᵀ p.
-    fn apply(
-        &mut self,
-        ops: &Operators,
-        rows: &[Vec<(usize, f64)>],
-        weights: &[f64],
-        p: &[f64],
-    ) -> Vec<f64> {
-        let (_, sp) = self.t_and_s_times(ops, p);
-        penalised(&sp, rows, weights, p)
-    }
-
     /// The preconditioner for penalty weights on `rows` and the points `held` at zero (empty:
     /// none): the cached one if it was made for them, else a new factorisation.
     fn preconditioner(
@@ -377,7 +365,10 @@ impl IterativeSchur {
     /// Winkler springs on the model's own plate) the start is the direct solution
     /// σ = M⁻¹(h + Cα), and CG only confirms it. `known`: the products T σ and S σ of `sigma`
     /// (the last step's answer), which are not formed again unless σ must be moved onto the
-    /// equilibrium (more than round-off) or the start is abandoned for the fallback.
+    /// equilibrium (more than round-off) or the start is abandoned for the fallback. The
+    /// products of the answer are formed afresh when `recompute`, else kept from the iterations'
+    /// updates (a loose penalty step's: one plate solve less; measured on the half-space lane,
+    /// BENCHMARKS.md session 25).
     #[allow(clippy::too_many_arguments)]
     fn cg(
         &mut self,
@@ -387,7 +378,7 @@ impl IterativeSchur {
         weights: &[f64],
         (mut sigma, mut fallback): (Vec<f64>, Option<Vec<f64>>),
         known: Option<Products>,
-        tol: f64,
+        (tol, recompute): (f64, bool),
         stage: &str,
         monitor: &Monitor<'_>,
     ) -> Result<Solved> {
@@ -460,7 +451,9 @@ impl IterativeSchur {
                     ),
                 ));
             }
-            let mut ap = self.apply(ops, rows, weights, &p);
+            // A p = T p + BᵀK⁻B p + Σ_k d_k g_k g_kᵀ p, its products kept to update Tσ and Sσ.
+            let (tp, sp) = self.t_and_s_times(ops, &p);
+            let mut ap = penalised(&sp, rows, weights, &p);
             pre.mask(&mut ap);
             let pap = dot(&p, &ap);
             if pap == 0.0 && dot(&p, &p) <= f64::MIN_POSITIVE.sqrt() {
@@ -478,6 +471,8 @@ impl IterativeSchur {
             for i in 0..n {
                 sigma[i] += step * p[i];
                 r[i] += step * ap[i];
+                t_sigma[i] += step * tp[i];
+                s_sigma[i] += step * sp[i];
             }
             pre.deflate(&mut r);
             z = pre.project(&self.springs, &r);
@@ -490,7 +485,7 @@ impl IterativeSchur {
             iterations += 1;
             residual = rz.max(0.0).sqrt() / scale;
         }
-        if iterations > 0 {
+        if iterations > 0 && recompute {
             (t_sigma, s_sigma) = self.t_and_s_times(ops, &sigma);
         }
         // α: least-squares multiplier of the recomputed residual on the free points,
@@ -590,7 +585,9 @@ impl IterativeSchur {
             weights,
             (start, Some(other)),
             known,
-            tol,
+            // A loose step's products come from the iterations' updates: its answer only has to
+            // give the signs, and the confirming solve recomputes them.
+            (tol, tol <= self.settings.tolerance),
             "iterative penalty step (conjugate gradients)",
             monitor,
         );
@@ -629,7 +626,7 @@ impl IterativeSchur {
             &[],
             (start.to_vec(), None),
             None,
-            tol,
+            (tol, true),
             "matrix-free QP (conjugate gradients on the free points)",
             monitor,
         );
