@@ -333,11 +333,27 @@ impl Load {
 
 /// True when the load set is unchanged by mirroring about x = 0 (`about_x`) or y = 0.
 pub fn loads_symmetric(loads: &[Load], about_x: bool) -> bool {
+    loads_mirror(loads, loads, [about_x, !about_x])
+}
+
+/// True when `b` is the load set `a` mirrored about x = 0 where `flip[0]` (x → −x) and about
+/// y = 0 where `flip[1]` (y → −y), both a turn by 180° about the origin: every load of `a` so
+/// mirrored is a distinct load of `b` (to 1e-9), and there are as many.
+pub fn loads_mirror(a: &[Load], b: &[Load], flip: [bool; 2]) -> bool {
     let tol = 1e-9;
-    let mut used = vec![false; loads.len()];
-    for l in loads {
-        let m = l.mirrored(about_x);
-        match loads
+    if a.len() != b.len() {
+        return false;
+    }
+    let mut used = vec![false; b.len()];
+    for l in a {
+        let mut m = *l;
+        if flip[0] {
+            m = m.mirrored(true);
+        }
+        if flip[1] {
+            m = m.mirrored(false);
+        }
+        match b
             .iter()
             .enumerate()
             .position(|(k, c)| !used[k] && c.close(&m, tol))
@@ -462,6 +478,14 @@ impl Model {
     /// True when loads, voids, zones, the layout (joints and panels) and the plate's shape (its
     /// cells) are all unchanged by the mirror about x = 0 (`about_x`) or y = 0.
     pub fn symmetric(&self, about_x: bool) -> bool {
+        loads_symmetric(&self.loads, about_x) && self.frame_symmetric(about_x)
+    }
+
+    /// [`Model::symmetric`] but for the loads: voids, zones, the layout and the plate's shape
+    /// unchanged by the mirror about x = 0 (`about_x`) or y = 0. Two models that differ only
+    /// in their loads, on such a frame, are each other's mirror image when their loads are
+    /// ([`loads_mirror`]).
+    pub fn frame_symmetric(&self, about_x: bool) -> bool {
         let voids: Vec<_> = self.voids.iter().map(|v| (v.x, v.y, v.depth)).collect();
         let zones: Vec<_> = self
             .zones
@@ -472,8 +496,7 @@ impl Model {
             crate::mesh::outline::CellMask::of_layout(&self.layout, self.elements, self.groups.mu)
                 .symmetric(about_x)
         };
-        loads_symmetric(&self.loads, about_x)
-            && rects_symmetric(&voids, about_x)
+        rects_symmetric(&voids, about_x)
             && rects_symmetric(&zones, about_x)
             && self.layout.symmetric(about_x)
             && (!self.layout.is_shaped() || shape())

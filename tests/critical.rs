@@ -143,6 +143,135 @@ fn warm_starts_change_no_digit() {
     );
 }
 
+/// On a plate symmetric about both axes (the slab above, curled at night so that the corners
+/// lift and the contact set moves with the axle), a position whose load is another's mirror
+/// image is read off that one: which positions pair is checked against the grid's geometry —
+/// the first point in grid order at (∓x, y), (x, ∓y) or (∓x, ∓y), the dual-tire axle being
+/// symmetric about its reference point —, and every mirrored position equals the same position
+/// solved (`mirror: false`) to 1e-9 relative (both are the one answer of a strictly convex
+/// penalised problem, reached from other starts: the warm-start test's tolerance), the places
+/// of its extremes the solved ones (or, for a load on a symmetry line, whose field has its
+/// peaks in equal pairs across it, the other of the pair).
+/// A frame that is not symmetric (a void under one corner) pairs nothing, nor does a scene that
+/// asks for no symmetry.
+#[test]
+fn mirror_images_equal_the_solves_they_replace() {
+    let night = SLAB
+        .replace(
+            "poissons_ratio = 0.15",
+            "poissons_ratio = 0.15\nthermal_expansion = 1e-5",
+        )
+        .replace(
+            "[mesh]",
+            "[[load]]\nkind = \"temperature\"\ndifference = -10.0\n[mesh]",
+        );
+    let file = problem(&night);
+    let mirrored =
+        critical(&file, &options([5, 3], true), &liftoff::Monitor::NONE).expect("mirrored");
+    let solved = critical(
+        &file,
+        &CriticalOptions {
+            mirror: false,
+            ..options([5, 3], true)
+        },
+        &liftoff::Monitor::NONE,
+    )
+    .expect("solved");
+    let points: Vec<[f64; 2]> = solved.positions.iter().map(|p| [p.x, p.y]).collect();
+    let near = |a: [f64; 2], b: [f64; 2]| (a[0] - b[0]).abs() < 1e-9 && (a[1] - b[1]).abs() < 1e-9;
+    let mut read_off = 0;
+    for (i, (m, s)) in mirrored.positions.iter().zip(&solved.positions).enumerate() {
+        assert_eq!(s.mirror_of, None, "mirror: false solves every position");
+        assert_eq!((m.x, m.y), (s.x, s.y), "same grid");
+        let [x, y] = points[i];
+        let expected = (0..i).find(|&k| {
+            [[-x, y], [x, -y], [-x, -y]]
+                .iter()
+                .any(|&q| near(points[k], q))
+        });
+        assert_eq!(m.mirror_of, expected, "position {i} at ({x:.3}, {y:.3})");
+        if m.mirror_of.is_none() {
+            continue;
+        }
+        read_off += 1;
+        assert_eq!((m.iterations, m.outcome), (0, s.outcome));
+        for (name, a, b) in [
+            ("bottom", m.bottom, s.bottom),
+            ("top", m.top, s.top),
+            ("w_max", m.w_max, s.w_max),
+            ("contact", m.contact_fraction, s.contact_fraction),
+        ] {
+            assert!(
+                (a - b).abs() <= 1e-9 * a.abs().max(b.abs()),
+                "{name} at position {i}: mirrored {a} vs solved {b}"
+            );
+        }
+        // A load on a symmetry line makes a field symmetric about it, whose peaks come in
+        // equal pairs across it: there either of the pair.
+        let (on_x0, on_y0) = (x.abs() < 1e-9, y.abs() < 1e-9);
+        for (a, b) in [(m.bottom_at, s.bottom_at), (m.top_at, s.top_at)] {
+            let twins = [
+                (on_x0, [-a[0], a[1]]),
+                (on_y0, [a[0], -a[1]]),
+                (on_x0 && on_y0, [-a[0], -a[1]]),
+            ];
+            assert!(
+                near(a, b) || twins.iter().any(|&(tie, t)| tie && near(t, b)),
+                "position {i}: peak at {a:?} mirrored, {b:?} solved"
+            );
+        }
+    }
+    // A 5 × 3 grid on a doubly symmetric slab: the first three of the first two rows solved.
+    assert_eq!(read_off, 9);
+    // A void under one corner: no mirror; `symmetry = "none"`: none either.
+    for scene in [
+        night.replace(
+            "[mesh]",
+            "[[void]]\nx = [-2.25, -1.95]\ny = [-1.8, -1.5]\ndepth = 0.001\n[mesh]",
+        ),
+        night.replace("[mesh]", "[mesh]\nsymmetry = \"none\""),
+    ] {
+        let c = critical(
+            &problem(&scene),
+            &options([5, 3], true),
+            &liftoff::Monitor::NONE,
+        )
+        .expect("search");
+        assert!(c.positions.iter().all(|p| p.mirror_of.is_none()), "{scene}");
+    }
+}
+
+/// Warm starts cost no extra steps where the load's steps are long against the plate's radius
+/// of relative stiffness: on `example:pavement-3x3` (night curling, the QP) an 11 × 9 grid
+/// steps 1.2 m along x (ℓ ≈ 0.8 m), where each position's contact set is its neighbour's and
+/// one face solve settles it. Every solved position takes one (checked: 54 solves, 54 face
+/// solves); always extrapolating the last two answers, as before, lifted points that stay in
+/// contact and took 145 face solves for the 99 positions (a second one at 46 of them, each with
+/// a new factorisation: 8× the time). The bound, 1.1 a position, leaves room for a position
+/// whose set does move and fails the old rule's 1.46.
+#[test]
+fn long_steps_start_from_the_last_answer() {
+    let file = problem(include_str!("../examples/pavement-3x3.toml"));
+    let options = CriticalOptions {
+        load: "axle".into(),
+        grid: [11, 9],
+        ..CriticalOptions::default()
+    };
+    let c = critical(&file, &options, &liftoff::Monitor::NONE).expect("search");
+    let solved: Vec<_> = c
+        .positions
+        .iter()
+        .filter(|p| p.mirror_of.is_none())
+        .collect();
+    assert!(solved.iter().all(|p| p.outcome == RunOutcome::CONVERGED));
+    let steps: usize = solved.iter().map(|p| p.iterations).sum();
+    assert!(
+        steps as f64 <= 1.1 * solved.len() as f64,
+        "{steps} face solves for {} positions",
+        solved.len()
+    );
+}
+
 /// A name that is no load, and a load that is no vehicle, are refused by name.
 #[test]
 fn the_moved_load_must_be_a_named_vehicle() {

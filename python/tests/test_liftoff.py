@@ -608,6 +608,13 @@ def test_critical_equals_the_cli_and_spreads_over_a_cluster(client, tmp_path):
             assert abs(a[key] - b[key]) <= 1e-9 * abs(b[key]), (key, a, b)
     assert {k: spread.meta[k] for k in ("bottom", "top", "deflection")} == \
         {k: local.meta[k] for k in ("bottom", "top", "deflection")}
+    # The slab is symmetric about both axes: positions are read off their mirror images
+    # unless told not to.
+    assert sum("mirror_of" in r for r in local) == 9
+    solved = liftoff.critical(scene, "truck", grid=(5, 3), mirror=False)
+    assert all("mirror_of" not in r for r in solved)
+    for a, b in zip(solved, local):
+        assert abs(a["bottom"] - b["bottom"]) <= 1e-9 * abs(b["bottom"]), (a, b)
     with pytest.raises(liftoff.SceneError, match="no load named"):
         liftoff.critical(scene, "bus")
 

@@ -20,7 +20,7 @@ fn csv(c: &Critical) -> String {
         self, Deflection, Force, ForcePerLength, Length, Number, Pressure,
     };
     let sys = c.units;
-    let columns: [(&str, Option<Measure>); 16] = [
+    let columns: [(&str, Option<Measure>); 17] = [
         ("x", Some(Length)),
         ("y", Some(Length)),
         ("heading", Some(Measure::Degrees)),
@@ -37,6 +37,7 @@ fn csv(c: &Critical) -> String {
         ("joint_shear", Some(ForcePerLength)),
         ("dowel_force", Some(Force)),
         ("time", None),
+        ("mirror_of", None),
     ];
     let header: Vec<String> = columns
         .iter()
@@ -53,7 +54,7 @@ fn csv(c: &Critical) -> String {
     for p in &c.positions {
         let _ = writeln!(
             s,
-            "{},{},{},{},{},{:e},{},{},{:e},{},{},{:e},{},{},{},{}",
+            "{},{},{},{},{},{:e},{},{},{:e},{},{},{:e},{},{},{},{},{}",
             p.x,
             p.y,
             p.heading,
@@ -69,7 +70,9 @@ fn csv(c: &Critical) -> String {
             p.contact_fraction,
             opt(p.joint_shear),
             opt(p.dowel_force),
-            p.time_s
+            p.time_s,
+            // Empty where the position was solved itself.
+            p.mirror_of.map_or(String::new(), |k| k.to_string())
         );
     }
     s
@@ -209,12 +212,18 @@ pub fn critical_table(title: &str, c: &Critical, files: Option<(usize, &Path)>) 
     if let Some(comb) = &c.combination {
         let _ = writeln!(s, "  combination: {comb} (the rest of its loads present)");
     }
+    let mirrored = c.positions.iter().filter(|p| p.mirror_of.is_some()).count();
+    let solved = n - mirrored;
+    let what = match mirrored {
+        0 => format!("{n} positions solved"),
+        m => format!("{n} positions ({solved} solved, {m} read off their mirror images)"),
+    };
     let _ = writeln!(
         s,
-        "  operators assembled once in {:.3} s; {n} positions solved in {:.3} s ({:.1} ms each), {converged} converged",
+        "  operators assembled once in {:.3} s; {what} in {:.3} s ({:.1} ms a solve), {converged} converged",
         c.assemble_s,
         c.total_s,
-        1e3 * (c.total_s - c.assemble_s) / n.max(1) as f64
+        1e3 * (c.total_s - c.assemble_s) / solved.max(1) as f64
     );
     let units = units_of(c);
     let (len, st, defl) = (units.length(), units.stress(), units.deflection());

@@ -22,6 +22,7 @@
 //! The scene is validated once ([`crate::load`]); the load is the model's [`Vehicle`](crate::vehicle::Vehicle), moved to
 //! each position by [`Model::place`].
 
+use std::collections::HashMap;
 use std::time::Instant;
 
 use rayon::prelude::*;
@@ -29,6 +30,7 @@ use serde::Serialize;
 
 use super::critical_grid::{grid, Grid};
 pub use super::critical_grid::{Along, CriticalOptions, Edge, Footprint, JointLine};
+use super::critical_mirror::{self, flipped, Flip};
 use super::RunOutcome;
 use crate::analysis;
 use crate::combination::{assemble_for, on_threads, side_by_side};
@@ -89,8 +91,32 @@ pub struct Position {
     /// On a jointed plate with dowels: the largest dowel force |k_d (w⁻ − w⁺)|, N.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dowel_force: Option<f64>,
-    /// Seconds for this position.
+    /// Seconds for this position (0 for one read off its mirror image).
     pub time_s: f64,
+    /// Where the position is the mirror image of another (the scene's frame symmetric, its load
+    /// that one's mirrored): that one's grid index; its answers are that one's mirrored, not
+    /// solved again (absent: solved).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mirror_of: Option<usize>,
+}
+
+impl Position {
+    /// This position's answers read off `self`, solved at grid index `from`, as its mirror
+    /// image by `flip`: the load at `at`, the places of the extremes mirrored, the values and
+    /// the outcome the same; no steps, no time.
+    fn mirrored(&self, at: [f64; 3], from: usize, flip: Flip) -> Position {
+        Position {
+            x: at[0],
+            y: at[1],
+            heading: at[2],
+            bottom_at: flipped(flip, self.bottom_at),
+            top_at: flipped(flip, self.top_at),
+            iterations: 0,
+            time_s: 0.0,
+            mirror_of: Some(from),
+            ..self.clone()
+        }
+    }
 }
 
 /// The search's result.
@@ -227,20 +253,23 @@ impl Critical {
         s
     }
 
-    /// The index of the converged position with the largest `value`.
+    /// The index of the converged position with the largest `value`, the first of equal ones
+    /// (a position solved before its mirror images; Python's `max` takes the first too).
     fn argmax(positions: &[Position], value: impl Fn(&Position) -> f64) -> Option<usize> {
         (0..positions.len())
+            .rev()
             .filter(|&i| positions[i].outcome == RunOutcome::CONVERGED)
             .max_by(|&a, &b| value(&positions[a]).total_cmp(&value(&positions[b])))
     }
 
     /// The index of the converged position with the largest `value`, among those that have
-    /// one (None when none has).
+    /// one (None when none has), the first of equal ones.
     fn argmax_of(
         positions: &[Position],
         value: impl Fn(&Position) -> Option<f64>,
     ) -> Option<usize> {
         (0..positions.len())
+            .rev()
             .filter(|&i| positions[i].outcome == RunOutcome::CONVERGED)
             .filter_map(|i| value(&positions[i]).map(|v| (i, v)))
             .max_by(|a, b| a.1.total_cmp(&b.1))
@@ -248,14 +277,15 @@ impl Critical {
     }
 }
 
-/// The runs of `picked` (grid indices) that are warm-started in turn: consecutive indices in
-/// the same block of [`CriticalOptions::RUN`] of the grid, as ranges of `picked`.
-fn runs(picked: &[usize]) -> Vec<std::ops::Range<usize>> {
+/// The runs of `solved` (grid indices, ascending) that are warm-started in turn: indices in the
+/// same block of [`CriticalOptions::RUN`] of the grid with none between them skipped but those
+/// read off a mirror image (`mirrored[j]`), as ranges of `solved`.
+fn runs(solved: &[usize], mirrored: impl Fn(usize) -> bool) -> Vec<std::ops::Range<usize>> {
     let mut out: Vec<std::ops::Range<usize>> = Vec::new();
-    for (j, &i) in picked.iter().enumerate() {
+    for (j, &i) in solved.iter().enumerate() {
         let continues = j > 0 && {
-            let prev = picked[j - 1];
-            i == prev + 1 && i / CriticalOptions::RUN == prev / CriticalOptions::RUN
+            let prev = solved[j - 1];
+            i / CriticalOptions::RUN == prev / CriticalOptions::RUN && (prev + 1..i).all(&mirrored)
         };
         match out.last_mut() {
             Some(r) if continues => r.end = j + 1,
@@ -406,6 +436,8 @@ fn chosen(problem: &Problem, options: &CriticalOptions) -> Result<(Model, usize,
             ),
         )
     })?;
+    // The whole plate: a moved load has no symmetry (its positions may be each other's mirror
+    // images: `critical_mirror`).
     model.symmetry = SymmetryMode::None;
     Ok((model, k, combination))
 }
@@ -433,6 +465,8 @@ pub fn critical(
     options.validate()?;
     let t0 = Instant::now();
     let (model, k, combination) = chosen(problem, options)?;
+    // A scene that asks for no symmetry gets no mirror images either.
+    let mirrors = problem.model.symmetry != SymmetryMode::None;
     let Grid {
         points,
         plate,
@@ -453,27 +487,40 @@ pub fn critical(
         }
         None => (0..points.len()).collect(),
     };
-    // The model with the load at each position: its prints moved, nothing validated again.
-    let models: Vec<Model> = picked
+    // The model with the load at `at`: its prints moved, nothing validated again.
+    let placed = |at: [f64; 3]| -> Result<Model> {
+        let mut m = model.clone();
+        m.place(k, at)?;
+        Ok(m)
+    };
+    // The positions read off their mirror images, and those solved.
+    let frame = critical_mirror::frame(&model, options.mirror && mirrors);
+    let partner = match frame {
+        [false, false] => vec![None; points.len()],
+        _ => {
+            let loads = (points.iter())
+                .map(|&at| Ok(placed(at)?.loads))
+                .collect::<Result<Vec<_>>>()?;
+            critical_mirror::partners(&loads, &points, frame)
+        }
+    };
+    let solved_at = critical_mirror::to_solve(&picked, &partner);
+    let models: Vec<Model> = solved_at
         .iter()
-        .map(|&i| {
-            let mut m = model.clone();
-            m.place(k, points[i])?;
-            Ok(m)
-        })
+        .map(|&i| placed(points[i]))
         .collect::<Result<_>>()?;
     let base = assemble_for(problem, &models, "positions")?;
     let assemble_s = t0.elapsed().as_secs_f64();
     // Runs of the grid order, [`CriticalOptions::RUN`] long whatever the cores: each position
-    // starts from the answer of the one before it (a step of the grid away), the runs side by
-    // side.
-    let work: Vec<(usize, &Model)> = picked.iter().copied().zip(&models).collect();
-    let runs = runs(&picked);
+    // starts from the answer of the one before it (a step of the grid away, or two across a
+    // mirrored one), the runs side by side.
+    let work: Vec<(usize, &Model)> = solved_at.iter().copied().zip(&models).collect();
+    let runs = runs(&solved_at, |j| partner[j].is_some());
     let cases = Cases::new(monitor, models.len());
     let inner = cases.inner();
     // On the iterative route more runs than cores, which share the plate's solves.
     let threads = side_by_side(problem, &base, runs.len());
-    let solved: Vec<Result<Vec<Position>>> = on_threads(threads, || {
+    let solved: Vec<Result<Vec<(usize, Position)>>> = on_threads(threads, || {
         runs.par_iter()
             .map(|r| &work[r.clone()])
             .map(|run| {
@@ -531,6 +578,7 @@ pub fn critical(
                                 ),
                                 dowel_force: largest(s.joints.iter().map(|j| j.max_dowel_force)),
                                 time_s: t.elapsed().as_secs_f64(),
+                                mirror_of: None,
                             }
                         }
                         Err(e) => Position {
@@ -548,19 +596,33 @@ pub fn critical(
                             joint_shear: None,
                             dowel_force: None,
                             time_s: t.elapsed().as_secs_f64(),
+                            mirror_of: None,
                         },
                     };
                     cases.finish(&format!("({x:.2}, {y:.2}) m, {heading}°"))?;
-                    out.push(position);
+                    out.push((i, position));
                 }
                 Ok(out)
             })
             .collect()
     })?;
-    let mut positions = Vec::with_capacity(models.len());
+    let mut by_index: HashMap<usize, Position> = HashMap::with_capacity(models.len());
     for part in solved {
-        positions.extend(part?);
+        by_index.extend(part?);
     }
+    // The picked positions in their order, each solved or read off its mirror image.
+    let positions = picked
+        .iter()
+        .map(|&i| match partner[i] {
+            None => by_index.get(&i).cloned(),
+            Some((from, flip)) => by_index
+                .get(&from)
+                .map(|p| p.mirrored(points[i], from, flip)),
+        })
+        .collect::<Option<Vec<Position>>>()
+        .ok_or_else(|| {
+            Error::numerical("critical", "a position was neither solved nor mirrored")
+        })?;
     Ok(Critical {
         load: options.load.clone(),
         combination,
@@ -627,9 +689,15 @@ mod tests {
     fn runs_are_cut_from_the_grid_not_the_cores() {
         let r = CriticalOptions::RUN;
         let all: Vec<usize> = (0..2 * r + 3).collect();
-        assert_eq!(runs(&all), vec![0..r, r..2 * r, 2 * r..2 * r + 3]);
+        let none = |_| false;
+        assert_eq!(runs(&all, none), vec![0..r, r..2 * r, 2 * r..2 * r + 3]);
         let share = [r - 2, r - 1, r, r + 1, r + 5];
-        assert_eq!(runs(&share), vec![0..2, 2..4, 4..5]);
-        assert!(runs(&[]).is_empty());
+        assert_eq!(runs(&share, none), vec![0..2, 2..4, 4..5]);
+        assert!(runs(&[], none).is_empty());
+        // A run goes on across positions read off their mirror images, not across a block's
+        // end or a position left out.
+        let mirrored = |j: usize| j % 2 == 1;
+        assert_eq!(runs(&[0, 2, 4, 7], mirrored), vec![0..3, 3..4]);
+        assert_eq!(runs(&[r - 2, r], mirrored), vec![0..1, 1..2]);
     }
 }

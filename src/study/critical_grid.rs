@@ -37,6 +37,10 @@ pub struct CriticalOptions {
     pub warm: bool,
     /// Solve only these positions of the grid (by index; a Dask task's share), all when None.
     pub indices: Option<Vec<usize>>,
+    /// Read a position whose load is another's mirror image, on a plate symmetric about that
+    /// line, off that one's answer instead of solving it (false: solve every position; a
+    /// scene with `mesh.symmetry = "none"` never mirrors).
+    pub mirror: bool,
 }
 
 impl Default for CriticalOptions {
@@ -52,6 +56,7 @@ impl Default for CriticalOptions {
             combination: None,
             warm: true,
             indices: None,
+            mirror: true,
         }
     }
 }

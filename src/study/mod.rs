@@ -10,7 +10,8 @@
 //! serialises and that the `output` module writes.
 //!
 //! Layout: `eps_sweep.rs`, `tradeoff.rs`, `stability.rs` and `critical.rs` hold one study each
-//! (`critical.rs` with its options), `options.rs` the validated options the CLI builds the
+//! (`critical.rs` with its options in `critical_grid.rs` and its mirror images in
+//! `critical_mirror.rs`), `options.rs` the validated options the CLI builds the
 //! method studies from.
 
 use crate::error::ErrorKind;
@@ -18,6 +19,7 @@ use crate::solve::StatusKind;
 
 mod critical;
 mod critical_grid;
+mod critical_mirror;
 mod damage;
 mod damage_part;
 mod damage_pass;

@@ -208,6 +208,7 @@ def critical(
     headings: Optional[Sequence[float]] = None,
     combination: Optional[str] = None,
     warm: bool = True,
+    mirror: bool = True,
     client: Any = None,
     chunk: int = 10,
     progress: Any = None,
@@ -228,6 +229,9 @@ def critical(
     tasks of ``chunk`` positions (each task assembles the operators once); rows come back in
     grid order. The search warm-starts runs of 10 positions of the grid, whatever the cores:
     a ``chunk`` that is a multiple of 10 gives every digit (and step count) of a local search.
+    On a plate symmetric about x = 0 or y = 0 a position whose load is another's mirror image
+    is read off that one (its row's ``mirror_of``: the other's index; no steps, no time);
+    ``mirror=False`` solves every position.
 
     ``grid`` (default ``(11, 9)``) spaces the points evenly over the plate; ``grid_per_panel``
     (``(NX, NY)``, not with ``grid``) puts NX × NY points in every panel between the joint
@@ -243,7 +247,7 @@ def critical(
     spec = {"load": load, "grid": list(grid if grid is not None else (11, 9)),
             "grid_per_panel": list(grid_per_panel) if grid_per_panel is not None else None,
             "along": list(along or []), "headings": list(headings or []),
-            "combination": combination, "warm": warm}
+            "combination": combination, "warm": warm, "mirror": mirror}
     if client is None:
         doc = json.loads(_progress.run(_core.critical, progress, kind, text, opts, json.dumps(spec)))
         rows = doc.pop("positions")

@@ -280,6 +280,10 @@ pub(crate) struct CriticalArgs {
     /// Solve every position from scratch instead of from its neighbour's answer.
     #[arg(long)]
     pub(crate) cold: bool,
+    /// Solve every position, also those whose load is another's mirror image on a symmetric
+    /// plate (by default read off that one's answer).
+    #[arg(long)]
+    pub(crate) no_mirror: bool,
     /// Method for unbonded contact (overrides [solver] method).
     #[arg(long, value_parser = choice::<MethodKind>())]
     pub(crate) method: Option<MethodKind>,

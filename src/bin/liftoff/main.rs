@@ -280,6 +280,7 @@ fn critical(args: CriticalArgs) -> Result<(), Failure> {
         combination: args.combination,
         warm: !args.cold,
         indices: None,
+        mirror: !args.no_mirror,
     };
     options.validate().map_err(Failure::option)?;
     let problem = load_problem(&args.scene, &overrides)?;
