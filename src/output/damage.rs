@@ -52,6 +52,7 @@ fn csv_passes(d: &Damage) -> String {
         "outcome".into(),
         "solves".into(),
         "interpolated".into(),
+        "mirrored".into(),
         p.header("bottom", sys),
         l.header("bottom_x", sys),
         l.header("bottom_y", sys),
@@ -81,7 +82,7 @@ fn csv_passes(d: &Damage) -> String {
         let e = q.erosion;
         let _ = writeln!(
             s,
-            "{},{:e},{:e},{},{:e},{},{},{},{:e},{:e},{:e},{},{:e},{:e},{:e},{},{:e},{:e},{},{},{},{},{}",
+            "{},{:e},{:e},{},{:e},{},{},{},{},{:e},{:e},{:e},{},{:e},{:e},{:e},{},{:e},{:e},{},{},{},{},{}",
             q.group,
             c(f, q.load),
             c(l, q.offset),
@@ -90,6 +91,7 @@ fn csv_passes(d: &Damage) -> String {
             q.outcome,
             q.solves,
             q.interpolated,
+            q.mirrored,
             c(p, q.bottom.stress),
             c(l, q.bottom.x),
             c(l, q.bottom.y),
@@ -262,10 +264,14 @@ pub fn damage_table(title: &str, d: &Damage, files: Option<(usize, &Path)>) -> S
     let converged = d.passes.len() - d.missing.len();
     let _ = writeln!(
         s,
-        "liftoff damage — {title}: {} passes ({converged} converged), {} solves, {} positions interpolated exactly between levels",
+        "liftoff damage — {title}: {} passes ({converged} converged), {} solves, {} positions interpolated exactly between levels{}",
         d.passes.len(),
         d.solves,
-        d.interpolated
+        d.interpolated,
+        match d.mirrored {
+            0 => String::new(),
+            m => format!(", {m} read off their mirror images"),
+        }
     );
     let _ = writeln!(
         s,

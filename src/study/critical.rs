@@ -30,7 +30,7 @@ use serde::Serialize;
 
 use super::critical_grid::{grid, Grid};
 pub use super::critical_grid::{Along, CriticalOptions, Edge, Footprint, JointLine};
-use super::critical_mirror::{self, flipped, Flip};
+use super::mirror::{self, flipped, Flip};
 use super::RunOutcome;
 use crate::analysis;
 use crate::combination::{assemble_for, on_threads, side_by_side};
@@ -437,7 +437,7 @@ fn chosen(problem: &Problem, options: &CriticalOptions) -> Result<(Model, usize,
         )
     })?;
     // The whole plate: a moved load has no symmetry (its positions may be each other's mirror
-    // images: `critical_mirror`).
+    // images: `mirror`).
     model.symmetry = SymmetryMode::None;
     Ok((model, k, combination))
 }
@@ -494,17 +494,17 @@ pub fn critical(
         Ok(m)
     };
     // The positions read off their mirror images, and those solved.
-    let frame = critical_mirror::frame(&model, options.mirror && mirrors);
+    let frame = mirror::frame(&model, options.mirror && mirrors);
     let partner = match frame {
         [false, false] => vec![None; points.len()],
         _ => {
             let loads = (points.iter())
                 .map(|&at| Ok(placed(at)?.loads))
                 .collect::<Result<Vec<_>>>()?;
-            critical_mirror::partners(&loads, &points, frame)
+            mirror::partners(&loads, &points, frame)
         }
     };
-    let solved_at = critical_mirror::to_solve(&picked, &partner);
+    let solved_at = mirror::to_solve(&picked, &partner);
     let models: Vec<Model> = solved_at
         .iter()
         .map(|&i| placed(points[i]))

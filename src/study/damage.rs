@@ -51,6 +51,12 @@
 //! a problem of their own springs: the families of such bins are assembled apart, once per
 //! modulus, and the erosion relation reads the bin's k.
 //!
+//! **A pass that is its own mirror image** — the lane's positions symmetric about a line the
+//! plate's frame is symmetric about ([`super::mirror::pass_partners`]) — is solved on its first
+//! half; each element's and corner's largest values are then taken with its mirror image's
+//! ([`PassStress::mirror`]), which is what the other half gives (`[mesh] symmetry = "none"`
+//! solves every position).
+//!
 //! **No silent partial sums**: a pass with a position that did not converge contributes
 //! nothing, is named in [`Damage::missing`], and the totals say they are incomplete.
 
@@ -64,7 +70,7 @@ use crate::combination::{assemble_for, on_threads, side_by_side};
 use crate::damage::plan::{Bin, DamagePlan};
 use crate::damage::relations::{DamageModel, Mepdg};
 use crate::error::{Error, Result};
-use crate::model::Model;
+use crate::model::{Load, Model, SymmetryMode};
 use crate::monitor::{Cases, Monitor};
 use crate::operators::Operators;
 use crate::scene::Problem;
@@ -74,6 +80,7 @@ use super::damage_part::{DamagePart, PassStress};
 use super::damage_pass::{label, pass_models};
 pub use super::damage_result::{Cracking, Damage, Governing, Pass, PassErosion, Peak};
 use super::erosion::{CornerDamage, Corners, Erosion};
+use super::mirror;
 
 /// Run the scene's damage plan; see the module's description.
 pub fn damage(problem: &Problem, monitor: &Monitor<'_>) -> Result<Damage> {
@@ -199,6 +206,14 @@ fn solve_part(
     } = setup;
     let corners = erosion.as_ref().and_then(|e| e.as_ref().ok());
     let families: Vec<&Vec<usize>> = which.iter().map(|&f| &families[f]).collect();
+    // The lines the plate is symmetric about, for passes that are their own mirror images (a
+    // scene that asks for no symmetry: none).
+    let frame = passes
+        .first()
+        .and_then(|p| p.first())
+        .map_or([false; 2], |m| {
+            mirror::frame(m, problem.model.symmetry != SymmetryMode::None)
+        });
     // One assembly per soil: the families of a climate bin with a subgrade modulus of its own
     // have their own springs; all the others share the scene's.
     let soil_of = |climate: usize| plan.climate[climate].subgrade_modulus.map(f64::to_bits);
@@ -319,12 +334,29 @@ fn solve_part(
                     .unwrap_or(&[]);
                 let caused =
                     |w: &[f64]| -> Vec<f64> { w.iter().zip(at_rest).map(|(a, b)| a - b).collect() };
+                // A pass symmetric about a line of a symmetric plate: its first half solved, the
+                // rest read off it element by element after the loop (`mirror`).
+                let levels: Vec<Vec<&[Load]>> = (family.iter())
+                    .map(|&i| passes[i].iter().map(|m| m.loads.as_slice()).collect())
+                    .collect();
+                let mirrored = mirror::pass_partners(&levels, frame).and_then(|(flip, partner)| {
+                    let corners = match corners {
+                        Some(c) => {
+                            let points: Vec<([f64; 2], [f64; 2])> =
+                                c.points.iter().map(|p| ([p.x, p.y], p.towards)).collect();
+                            mirror::point_map(&points, flip)?
+                        }
+                        None => Vec::new(),
+                    };
+                    Some((flip, partner, corners))
+                });
+                let read_off = |p: usize| mirrored.as_ref().is_some_and(|(_, q, _)| q[p] < p);
                 let mut stress: Vec<PassStress> = vec![PassStress::default(); n];
                 let carries: Vec<Carry> = (0..n).map(|_| Carry::new()).collect();
                 // Each level's answers at its last two solved positions, for the extrapolation.
                 let mut last: Vec<[Option<Vec<f64>>; 2]> = vec![[None, None]; n];
                 let positions = passes[family[0]].len();
-                for p in 0..positions {
+                for p in (0..positions).filter(|&p| !read_off(p)) {
                     let mut kept: [Option<Kept>; 2] = [None, None];
                     // The answer at this position of the level solved just below, with its carry.
                     let mut below: Option<(usize, Vec<f64>)> = None;
@@ -408,6 +440,26 @@ fn solve_part(
                                 }
                             }
                         }
+                    }
+                }
+                if let Some((flip, _, corners)) = &mirrored {
+                    let skipped = (0..positions).filter(|&p| read_off(p)).count();
+                    for s in stress.iter_mut() {
+                        if s.outcome != RunOutcome::CONVERGED {
+                            continue;
+                        }
+                        let centres: Vec<([f64; 2], [f64; 2])> =
+                            s.x.iter()
+                                .zip(&s.y)
+                                .map(|(&x, &y)| ([x, y], [0.0; 2]))
+                                .collect();
+                        let elements = mirror::point_map(&centres, *flip).ok_or_else(|| {
+                            Error::numerical(
+                                "damage",
+                                "the element grid of a symmetric plate is not its own mirror image",
+                            )
+                        })?;
+                        s.mirror(&elements, corners, skipped);
                     }
                 }
                 let mut out = Vec::with_capacity(n);
@@ -515,7 +567,11 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
         })
         .unzip();
     let governing = |d: &[f64]| -> Governing {
-        let k = (0..n).max_by(|&a, &b| d[a].total_cmp(&d[b])).unwrap_or(0);
+        // The first of equal ones (an element and its mirror image on a symmetric plate).
+        let k = (0..n)
+            .rev()
+            .max_by(|&a, &b| d[a].total_cmp(&d[b]))
+            .unwrap_or(0);
         Governing {
             damage: d.get(k).copied().unwrap_or(0.0),
             x: xs.get(k).copied().unwrap_or(f64::NAN),
@@ -550,8 +606,9 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
                     cd.deflection = cd.deflection.max(w);
                 }
             }
-            let governing =
-                (0..corners.len()).max_by(|&a, &b| corners[a].damage.total_cmp(&corners[b].damage));
+            let governing = (0..corners.len())
+                .rev()
+                .max_by(|&a, &b| corners[a].damage.total_cmp(&corners[b].damage));
             Some((
                 Erosion {
                     k: c.k,
@@ -572,7 +629,7 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
         .map(|((s, bin), models)| {
             let group = &plan.groups[bin.group];
             let peak = |v: &[f64]| -> Peak {
-                match (0..v.len()).max_by(|&a, &b| v[a].total_cmp(&v[b])) {
+                match (0..v.len()).rev().max_by(|&a, &b| v[a].total_cmp(&v[b])) {
                     Some(k) if s.outcome == RunOutcome::CONVERGED => Peak {
                         stress: v[k],
                         x: s.x[k],
@@ -600,6 +657,7 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
                     s.corners
                         .iter()
                         .enumerate()
+                        .rev()
                         .max_by(|a, b| a.1.total_cmp(b.1))
                         .map(|(j, &w)| PassErosion {
                             deflection: w,
@@ -632,6 +690,7 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
                 outcome: s.outcome,
                 solves: s.solves,
                 interpolated: s.interpolated,
+                mirrored: s.mirrored,
                 bottom: peak(&s.bottom),
                 top: peak(&s.top),
                 bottom_share: share(&s.bottom, gb.element),
@@ -682,6 +741,7 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
         missing,
         solves: stresses.iter().map(|s| s.solves).sum(),
         interpolated: stresses.iter().map(|s| s.interpolated).sum(),
+        mirrored: stresses.iter().map(|s| s.mirrored).sum(),
         passes: passes_out,
         assemble_s,
         total_s: seconds,

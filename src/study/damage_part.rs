@@ -28,6 +28,9 @@ struct PartHeader {
     outcomes: Vec<RunOutcome>,
     solves: Vec<usize>,
     interpolated: Vec<usize>,
+    /// Positions read off their mirror images (absent in a part written before them: none).
+    #[serde(default)]
+    mirrored: Vec<usize>,
     /// Elements per array of each pass (0: the pass has none: it did not converge at its first
     /// position).
     elements: Vec<usize>,
@@ -48,6 +51,7 @@ impl DamagePart {
             outcomes: self.stresses.iter().map(|s| s.outcome).collect(),
             solves: self.stresses.iter().map(|s| s.solves).collect(),
             interpolated: self.stresses.iter().map(|s| s.interpolated).collect(),
+            mirrored: self.stresses.iter().map(|s| s.mirrored).collect(),
             elements: self.stresses.iter().map(|s| s.bottom.len()).collect(),
             corners: self.stresses.iter().map(|s| s.corners.len()).collect(),
             assemble_s: self.assemble_s,
@@ -116,6 +120,7 @@ impl DamagePart {
                     outcome: header.outcomes[i],
                     solves: header.solves[i],
                     interpolated: header.interpolated[i],
+                    mirrored: header.mirrored.get(i).copied().unwrap_or(0),
                     field: None,
                 }
             })
@@ -141,6 +146,8 @@ pub(super) struct PassStress {
     pub(super) outcome: RunOutcome,
     pub(super) solves: usize,
     pub(super) interpolated: usize,
+    /// Positions read off their mirror images in the pass ([`PassStress::mirror`]).
+    pub(super) mirrored: usize,
     pub(super) field: Option<crate::post::FullField>,
 }
 
@@ -155,12 +162,30 @@ impl Default for PassStress {
             outcome: RunOutcome::CONVERGED,
             solves: 0,
             interpolated: 0,
+            mirrored: 0,
             field: None,
         }
     }
 }
 
 impl PassStress {
+    /// The maxima of a pass whose positions solved so far are half of a pass symmetric under a
+    /// flip: each element's and corner's maximum with its mirror image's (`elements[k]`,
+    /// `corners[k]`: the mirror image of element or corner k), as the other half would have
+    /// made them; `positions` the positions so read.
+    pub(super) fn mirror(&mut self, elements: &[usize], corners: &[usize], positions: usize) {
+        let both = |v: &[f64], map: &[usize]| -> Vec<f64> {
+            v.iter()
+                .zip(map)
+                .map(|(&a, &k)| a.max(v.get(k).copied().unwrap_or(f64::NAN)))
+                .collect()
+        };
+        self.bottom = both(&self.bottom, elements);
+        self.top = both(&self.top, elements);
+        self.corners = both(&self.corners, corners);
+        self.mirrored += positions;
+    }
+
     /// Take one position's element stresses and the deflections it caused at the erosion's
     /// corners into the running maxima.
     pub(super) fn take(

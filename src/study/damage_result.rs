@@ -29,6 +29,9 @@ pub struct Pass {
     /// Positions filled by the exact interpolation between the family's end levels (their
     /// contact sets agreed there).
     pub interpolated: usize,
+    /// Positions read off their mirror images: the pass symmetric about a line of a symmetric
+    /// plate, its first half solved (`study::mirror`).
+    pub mirrored: usize,
     /// The largest σ₁ at the bottom over the pass and the element where (x, y), Pa and m.
     pub bottom: Peak,
     /// The same at the top face.
@@ -138,6 +141,8 @@ pub struct Damage {
     pub solves: usize,
     /// Positions filled by interpolation instead of a solve.
     pub interpolated: usize,
+    /// Positions read off their mirror images instead of a solve.
+    pub mirrored: usize,
     /// Seconds to assemble the shared operators.
     pub assemble_s: f64,
     /// Seconds of the whole run.

@@ -11,7 +11,7 @@
 //!
 //! Layout: `eps_sweep.rs`, `tradeoff.rs`, `stability.rs` and `critical.rs` hold one study each
 //! (`critical.rs` with its options in `critical_grid.rs` and its mirror images in
-//! `critical_mirror.rs`), `options.rs` the validated options the CLI builds the
+//! `mirror.rs`), `options.rs` the validated options the CLI builds the
 //! method studies from.
 
 use crate::error::ErrorKind;
@@ -19,7 +19,6 @@ use crate::solve::StatusKind;
 
 mod critical;
 mod critical_grid;
-mod critical_mirror;
 mod damage;
 mod damage_part;
 mod damage_pass;
@@ -27,6 +26,7 @@ mod damage_result;
 mod design;
 mod eps_sweep;
 mod erosion;
+mod mirror;
 mod options;
 mod stability;
 mod tradeoff;

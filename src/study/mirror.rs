@@ -1,9 +1,12 @@
-//! The positions of a critical-position search that are mirror images of others: on a plate
+//! The positions of a critical-position search, and of a damage run's pass, that are mirror
+//! images of others: on a plate
 //! whose frame (outline, joints, panels, voids, soil zones) is its own mirror image about
 //! x = 0 or y = 0, the load at a position and the load at its mirror position make mirror-image
 //! contact problems — the same operators mirrored, the same answer mirrored (the penalised and
 //! the QP problem are strictly convex: one answer each) — so one of the two is solved and the
 //! other read off it. A lane of positions over a symmetric slab is solved on its first half.
+//! A damage pass along such a lane is the same pass mirrored ([`pass_partners`]): its first
+//! half is solved and its largest stresses mirrored element by element ([`point_map`]).
 //!
 //! Which positions pair is decided on the loads themselves, not on the grid: a position mirrors
 //! an earlier one (in grid order) when its load set is that one's mirrored
@@ -42,10 +45,7 @@ pub fn partners(
     points: &[[f64; 3]],
     frame: [bool; 2],
 ) -> Vec<Option<(usize, Flip)>> {
-    let flips: Vec<Flip> = [[true, false], [false, true], [true, true]]
-        .into_iter()
-        .filter(|f| (!f[0] || frame[0]) && (!f[1] || frame[1]))
-        .collect();
+    let flips = allowed(frame);
     let mut out: Vec<Option<(usize, Flip)>> = vec![None; points.len()];
     if flips.is_empty() {
         return out;
@@ -102,6 +102,57 @@ pub fn to_solve(picked: &[usize], partner: &[Option<(usize, Flip)>]) -> Vec<usiz
         }
     }
     (0..keep.len()).filter(|&i| keep[i]).collect()
+}
+
+/// The flips a frame symmetric about x = 0 (`frame[0]`) and y = 0 (`frame[1]`) allows.
+fn allowed(frame: [bool; 2]) -> Vec<Flip> {
+    [[true, false], [false, true], [true, true]]
+        .into_iter()
+        .filter(|f| (!f[0] || frame[0]) && (!f[1] || frame[1]))
+        .collect()
+}
+
+/// For a pass of a damage run — each level's load sets at its positions, in order along the
+/// lane —, the flip that maps the pass onto itself and each position's mirror position in it
+/// (itself where the group stands on the line), when the frame allows the flip and every
+/// position of every level has its mirror among the same level's; None otherwise.
+pub fn pass_partners(levels: &[Vec<&[Load]>], frame: [bool; 2]) -> Option<(Flip, Vec<usize>)> {
+    let first = levels.first()?;
+    let n = first.len();
+    allowed(frame).into_iter().find_map(|flip| {
+        let partner = (0..n)
+            .map(|p| (0..n).find(|&q| loads_mirror(first[p], first[q], flip)))
+            .collect::<Option<Vec<usize>>>()?;
+        let pairs = (0..n).all(|p| partner[partner[p]] == p);
+        let every = levels
+            .iter()
+            .all(|l| l.len() == n && (0..n).all(|p| loads_mirror(l[p], l[partner[p]], flip)));
+        (pairs && every).then_some((flip, partner))
+    })
+}
+
+/// For points each with a direction (±1 along x and y; zero for none), the index of each
+/// one's mirror image by `flip` — the point and its direction mirrored — among them, to a
+/// micrometre; None when one has no mirror image.
+pub fn point_map(points: &[([f64; 2], [f64; 2])], flip: Flip) -> Option<Vec<usize>> {
+    let key = |v: f64| (v * 1e6).round() as i64;
+    let mut at: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+    for (i, (p, _)) in points.iter().enumerate() {
+        at.entry((key(p[0]), key(p[1]))).or_default().push(i);
+    }
+    points
+        .iter()
+        .map(|&(p, d)| {
+            let ([tx, ty], td) = (flipped(flip, p), flipped(flip, d));
+            let near = |q: [f64; 2]| (q[0] - tx).abs() <= 1e-6 && (q[1] - ty).abs() <= 1e-6;
+            (-1..=1)
+                .flat_map(|dx| (-1..=1).map(move |dy| (key(tx) + dx, key(ty) + dy)))
+                .filter_map(|k| at.get(&k))
+                .flatten()
+                .copied()
+                .find(|&k| near(points[k].0) && points[k].1 == td)
+        })
+        .collect()
 }
 
 /// Whether the model's frame allows mirrors about x = 0 and about y = 0 (both false where the
@@ -175,6 +226,39 @@ mod tests {
             let (k, f) = p[i].expect("paired");
             assert_eq!(flipped(f, [points[k][0], points[k][1]]), [q[0], q[1]]);
         }
+    }
+
+    /// A pass along x over a frame symmetric about x = 0 maps onto itself, the middle position
+    /// onto itself; one whose positions do not pair (a step off the middle) does not.
+    #[test]
+    fn a_pass_pairs_its_positions_or_none() {
+        let at = |x: f64| vec![patch([x - 0.1, x + 0.1], [-1.0, -0.8])];
+        let pass: Vec<Vec<Load>> = [-1.0, 0.0, 1.0].iter().map(|&x| at(x)).collect();
+        let levels = vec![pass.iter().map(Vec::as_slice).collect::<Vec<_>>()];
+        assert_eq!(
+            pass_partners(&levels, [true, true]),
+            Some(([true, false], vec![2, 1, 0]))
+        );
+        assert_eq!(pass_partners(&levels, [false, true]), None);
+        let off: Vec<Vec<Load>> = [-1.0, 0.0, 0.9].iter().map(|&x| at(x)).collect();
+        let levels = vec![off.iter().map(Vec::as_slice).collect::<Vec<_>>()];
+        assert_eq!(pass_partners(&levels, [true, true]), None);
+    }
+
+    /// Points map onto their mirror images with their directions mirrored; a point whose image
+    /// is missing, or has the wrong direction, maps nowhere.
+    #[test]
+    fn points_map_onto_their_mirror_images() {
+        let corners = [([-1.0, 0.5], [1.0, -1.0]), ([1.0, 0.5], [-1.0, -1.0])];
+        assert_eq!(point_map(&corners, [true, false]), Some(vec![1, 0]));
+        assert_eq!(point_map(&corners, [false, true]), None);
+        let centres = [
+            ([-0.25, 0.0], [0.0, 0.0]),
+            ([0.25, 0.0], [0.0, 0.0]),
+            ([0.75, 0.0], [0.0, 0.0]),
+        ];
+        assert_eq!(point_map(&centres[..2], [true, false]), Some(vec![1, 0]));
+        assert_eq!(point_map(&centres, [true, false]), None);
     }
 
     /// A share of the grid solves what it shows and, for a position read off another, that one
