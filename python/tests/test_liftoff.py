@@ -827,7 +827,10 @@ def test_damage_equals_the_cli_files(units, tmp_path):
     assert len(d.passes) == len(rows) == 2
     for row, ref_row in zip(d.passes, rows):
         csv_equal(row, ref_row)
-        assert row["outcome"] == "converged" and row["solves"] == 3 and len(row["positions"]) == 3
+        # Three positions along the symmetric slab: the first two solved, the third their
+        # first's mirror image.
+        assert row["outcome"] == "converged" and len(row["positions"]) == 3
+        assert (row["solves"], row["mirrored"]) == (2, 1)
     assert [p["difference"] for p in d.passes] == ([8.0, -6.0] if units == "si" else [14.4, -10.8])
     doc = json.loads((tmp_path / "out" / "damage.json").read_text())
     # damage.json without its arrays and passes (the arrays and rows above) is the summary,

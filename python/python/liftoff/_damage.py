@@ -18,7 +18,7 @@ def _pass_row(p: Dict[str, Any]) -> Dict[str, Any]:
     """A pass of damage.json as a row of passes.csv (the same names, the same units), with its
     positions added."""
     row = {k: p[k] for k in ("group", "load", "offset", "difference", "repetitions", "outcome",
-                             "solves", "interpolated")}
+                             "solves", "interpolated", "mirrored")}
     for face in ("bottom", "top"):
         peak = p[face]
         row[face] = peak["stress"]
@@ -46,7 +46,9 @@ class Damage:
     - ``passes``: :class:`Records`, one per case (a group at a level, at a lateral position, in
       a climate bin), with passes.csv's columns — ``group``, ``load``, ``offset``,
       ``difference`` (None without ``[climate]``), ``repetitions``, ``outcome``, ``solves``,
-      ``interpolated`` (positions filled exactly from the end levels), ``bottom``/``top``
+      ``interpolated`` (positions filled exactly from the end levels), ``mirrored``
+      (positions read off their mirror images in a pass symmetric on a symmetric plate),
+      ``bottom``/``top``
       (the pass's largest σ₁ of that face), ``bottom_x``, ``bottom_y``,
       ``bottom_allowed`` (N there; None: unlimited), the same for ``top``, ``bottom_share``,
       ``top_share`` (its Σ n/N at the governing element), ``erosion_deflection``,
@@ -65,7 +67,7 @@ class Damage:
       largest; None for the other relations), ``erosion_note`` (why a PCA run has none),
       ``complete``,
       ``missing`` (the passes that did not converge, by label), ``solves``, ``interpolated``,
-      ``assemble_s``,
+      ``mirrored``, ``assemble_s``,
       ``total_s``, ``units``. ``summary`` is that whole dict.
     """
 
