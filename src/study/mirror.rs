@@ -1,8 +1,7 @@
 //! The positions of a critical-position search, and of a damage run's pass, that are mirror
-//! images of others: on a plate
-//! whose frame (outline, joints, panels, voids, soil zones) is its own mirror image about
-//! x = 0 or y = 0, the load at a position and the load at its mirror position make mirror-image
-//! contact problems — the same operators mirrored, the same answer mirrored (the penalised and
+//! images of others: on a plate whose frame (outline, joints, panels, voids, soil zones) is its
+//! own mirror image about x = 0 or y = 0, the load at a position and the load at its mirror
+//! position make mirror-image contact problems — the same operators mirrored, the same answer mirrored (the penalised and
 //! the QP problem are strictly convex: one answer each) — so one of the two is solved and the
 //! other read off it. A lane of positions over a symmetric slab is solved on its first half.
 //! A damage pass along such a lane is the same pass mirrored ([`pass_partners`]): its first
