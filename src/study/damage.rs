@@ -444,22 +444,26 @@ fn solve_part(
                 }
                 if let Some((flip, _, corners)) = &mirrored {
                     let skipped = (0..positions).filter(|&p| read_off(p)).count();
+                    // The elements' mirror images, from the centres of the first converged level
+                    // (every level's are the plate's same grid).
+                    let mut elements: Option<Vec<usize>> = None;
                     for s in stress.iter_mut() {
                         if s.outcome != RunOutcome::CONVERGED {
                             continue;
                         }
-                        let centres: Vec<([f64; 2], [f64; 2])> =
-                            s.x.iter()
-                                .zip(&s.y)
-                                .map(|(&x, &y)| ([x, y], [0.0; 2]))
-                                .collect();
-                        let elements = mirror::point_map(&centres, *flip).ok_or_else(|| {
-                            Error::numerical(
-                                "damage",
-                                "the element grid of a symmetric plate is not its own mirror image",
-                            )
-                        })?;
-                        s.mirror(&elements, corners, skipped);
+                        if elements.is_none() {
+                            let centres: Vec<([f64; 2], [f64; 2])> =
+                                (s.x.iter().zip(&s.y)).map(|(&x, &y)| ([x, y], [0.0; 2])).collect();
+                            elements = Some(mirror::point_map(&centres, *flip).ok_or_else(|| {
+                                Error::numerical(
+                                    "damage",
+                                    "the element grid of a symmetric plate is not its own mirror image",
+                                )
+                            })?);
+                        }
+                        if let Some(e) = &elements {
+                            s.mirror(e, corners, skipped);
+                        }
                     }
                 }
                 let mut out = Vec::with_capacity(n);

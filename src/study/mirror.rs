@@ -34,6 +34,36 @@ pub fn flipped(flip: Flip, [x, y]: [f64; 2]) -> [f64; 2] {
     [if flip[0] { -x } else { x }, if flip[1] { -y } else { y }]
 }
 
+/// Points by their place to a micrometre, to find the one at a given place.
+struct Places(HashMap<(i64, i64), Vec<usize>>);
+
+impl Places {
+    fn key(v: f64) -> i64 {
+        (v * 1e6).round() as i64
+    }
+
+    fn of<'a>(points: impl Iterator<Item = &'a [f64; 2]>) -> Self {
+        let mut at: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+        for (i, p) in points.enumerate() {
+            at.entry((Self::key(p[0]), Self::key(p[1])))
+                .or_default()
+                .push(i);
+        }
+        Places(at)
+    }
+
+    /// The points within a cell of `[x, y]` (a coordinate and its negative may round apart), in
+    /// no particular order.
+    fn around(&self, [x, y]: [f64; 2]) -> impl Iterator<Item = usize> + '_ {
+        let (kx, ky) = (Self::key(x), Self::key(y));
+        (-1..=1)
+            .flat_map(move |dx| (-1..=1).map(move |dy| (kx + dx, ky + dy)))
+            .filter_map(|k| self.0.get(&k))
+            .flatten()
+            .copied()
+    }
+}
+
 /// For every position of the grid (`loads[i]`: the model's loads with the vehicle at
 /// `points[i]`, m and degrees), the earlier position it is the mirror image of and how — that
 /// one solved itself —, None where it is solved itself. `frame`: whether the model's frame is
@@ -49,23 +79,12 @@ pub fn partners(
     if flips.is_empty() {
         return out;
     }
-    // The reference points by their coordinates to a micrometre: a mirror point is looked up
-    // there and in the neighbouring cells (a coordinate and its negative may round apart).
-    let key = |v: f64| (v * 1e6).round() as i64;
-    let mut at: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
-    for (i, p) in points.iter().enumerate() {
-        at.entry((key(p[0]), key(p[1]))).or_default().push(i);
-    }
+    let xy: Vec<[f64; 2]> = points.iter().map(|p| [p[0], p[1]]).collect();
+    let places = Places::of(xy.iter());
     for i in 0..points.len() {
-        let p = points[i];
         let found = flips.iter().find_map(|&flip| {
-            let [tx, ty] = flipped(flip, [p[0], p[1]]);
-            let (kx, ky) = (key(tx), key(ty));
-            let mut candidates: Vec<usize> = (-1..=1)
-                .flat_map(|dx| (-1..=1).map(move |dy| (kx + dx, ky + dy)))
-                .filter_map(|k| at.get(&k))
-                .flatten()
-                .copied()
+            let mut candidates: Vec<usize> = places
+                .around(flipped(flip, xy[i]))
                 .filter(|&k| k < i)
                 .collect();
             candidates.sort_unstable();
@@ -134,21 +153,14 @@ pub fn pass_partners(levels: &[Vec<&[Load]>], frame: [bool; 2]) -> Option<(Flip,
 /// one's mirror image by `flip` — the point and its direction mirrored — among them, to a
 /// micrometre; None when one has no mirror image.
 pub fn point_map(points: &[([f64; 2], [f64; 2])], flip: Flip) -> Option<Vec<usize>> {
-    let key = |v: f64| (v * 1e6).round() as i64;
-    let mut at: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
-    for (i, (p, _)) in points.iter().enumerate() {
-        at.entry((key(p[0]), key(p[1]))).or_default().push(i);
-    }
+    let places = Places::of(points.iter().map(|(p, _)| p));
     points
         .iter()
         .map(|&(p, d)| {
-            let ([tx, ty], td) = (flipped(flip, p), flipped(flip, d));
-            let near = |q: [f64; 2]| (q[0] - tx).abs() <= 1e-6 && (q[1] - ty).abs() <= 1e-6;
-            (-1..=1)
-                .flat_map(|dx| (-1..=1).map(move |dy| (key(tx) + dx, key(ty) + dy)))
-                .filter_map(|k| at.get(&k))
-                .flatten()
-                .copied()
+            let (t, td) = (flipped(flip, p), flipped(flip, d));
+            let near = |q: [f64; 2]| (q[0] - t[0]).abs() <= 1e-6 && (q[1] - t[1]).abs() <= 1e-6;
+            places
+                .around(t)
                 .find(|&k| near(points[k].0) && points[k].1 == td)
         })
         .collect()
