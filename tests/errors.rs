@@ -680,7 +680,8 @@ fn e69_a_report_of_a_directory_without_output_is_refused() {
 
 /// E71 and E72 for `liftoff damage`: a bad value of `[traffic]`, `[climate]` or `[damage]` is
 /// refused naming its key (here a group naming no axle of the scene, with the names it has;
-/// climate shares that do not add up to one; an unknown relation) — also when the scene is only
+/// climate shares that do not add up to one; an unknown relation; climate bins that curl a slab
+/// with no weight of its own on a tensionless soil) — also when the scene is only
 /// solved —, and `damage` of a scene without `[traffic]` says what it needs. Exit 2 each, and
 /// nothing written to `--out`.
 #[test]
@@ -746,6 +747,11 @@ fn e71_e72_damage_inputs_are_refused_naming_the_key() {
             "growth = 0.02",
             "edge_at = 2.5\ngrowth = 0.02",
             "scene field `traffic.edge_at`: y = 2.5 m is not on the 3.6 m wide plate",
+        ),
+        (
+            "kind = \"uniform\"\npressure = 6.0e3",
+            "kind = \"uniform\"\npressure = 0.0",
+            "scene field `load`: the climate bins curl the slab, but no load of the scene's own holds it on a soil that cannot pull (the traffic's are there only during a pass): add its self-weight, [[load]] kind = \"uniform\", case = \"self-weight\", pressure = 6000 Pa for this 0.250 m slab",
         ),
     ] {
         assert!(scene.contains(from), "{from}");

@@ -568,7 +568,7 @@ pub fn problem(file: &SceneFile) -> Result<Problem> {
         ));
     }
     let warnings = super::plausible::warnings(file, &model);
-    let damage = damage_plan(file, &model, !combinations.is_empty())?;
+    let damage = damage_plan(file, &model, !combinations.is_empty(), &method)?;
     Ok(Problem {
         model,
         combinations,
@@ -586,6 +586,7 @@ fn damage_plan(
     file: &SceneFile,
     model: &Model,
     combinations: bool,
+    method: &Method,
 ) -> Result<Option<crate::damage::plan::DamagePlan>> {
     let names: Vec<Option<&str>> = model.vehicles.iter().map(|v| v.name.as_deref()).collect();
     let Some(mut plan) = crate::damage::plan::DamagePlan::new(
@@ -660,6 +661,43 @@ fn damage_plan(
             "plate.thermal_expansion",
             "missing: the climate bins give temperature differences; give the plate's coefficient of thermal expansion in 1/K (concrete ≈ 1.0e-5)",
         ));
+    }
+    // On a soil that cannot pull, a curled slab rests on it by its own weight: without a load
+    // of its own (the traffic's are not there between passes) the slab at rest has no
+    // equilibrium, and in every pass the curl would be held down by the axle alone.
+    if *method != Method::Bonded {
+        let curls = plan
+            .climate
+            .iter()
+            .any(|c| (c.difference.is_finite() && c.difference != 0.0) || c.nonlinear != [0.0; 2])
+            || model.thermal_curvature() != 0.0;
+        let traffic = |i: usize| model.vehicles.iter().any(|v| v.loads.contains(&i));
+        let own: f64 = (model.loads.iter().enumerate())
+            .filter(|&(i, _)| !traffic(i))
+            .map(|(_, l)| l.resultant())
+            .sum();
+        if curls && own <= 0.0 {
+            let weight = match (&file.plate, model.physical.map(|p| p.units)) {
+                // 150 lb/ft³ over H in: 150 H / 1728 psi (the file was converted to SI).
+                (Some(p), Some(crate::units::UnitSystem::Us)) => format!(
+                    "pressure = {:.2} psi for this {:.1} in slab at 150 lb/ft³",
+                    p.thickness / 0.0254 * 150.0 / 1728.0,
+                    p.thickness / 0.0254
+                ),
+                (Some(p), _) => format!(
+                    "pressure = {:.0} Pa for this {:.3} m slab at 24 kN/m³",
+                    p.thickness * 24.0e3,
+                    p.thickness
+                ),
+                _ => "pressure = ρ g H".to_string(),
+            };
+            return Err(Error::invalid(
+                "load",
+                format!(
+                    "the climate bins curl the slab, but no load of the scene's own holds it on a soil that cannot pull (the traffic's are there only during a pass): add its self-weight, [[load]] kind = \"uniform\", case = \"self-weight\", {weight}"
+                ),
+            ));
+        }
     }
     Ok(Some(plan))
 }
