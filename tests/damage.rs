@@ -444,6 +444,47 @@ fn the_report_shows_the_damage_and_its_maps() {
     assert!(!html.contains("http://") && !html.contains("https://") && !html.contains("src="));
 }
 
+/// A face no pass damages: with the PCA's relation (unlimited repetitions at a stress ratio
+/// σ/MR ≤ 0.45, EB109) and a modulus of rupture that puts 0.45 MR between the passes' largest
+/// top and bottom stresses, the top map is zero at every element and the bottom map is not —
+/// and the summary, the chart and the page say that no place governs the top instead of naming
+/// one (an element of zero damage is no more governing than any other).
+#[test]
+fn a_face_no_pass_damages_has_no_governing_place() {
+    let pca = TWO_BINS.replace("model = \"mepdg\"", "model = \"pca\"");
+    let first = run(&slab(&pca));
+    let peak = |top: bool| {
+        (first.passes.iter())
+            .map(|p| if top { p.top.stress } else { p.bottom.stress })
+            .fold(f64::NEG_INFINITY, f64::max)
+    };
+    let (top, bottom) = (peak(true), peak(false));
+    assert!(top < bottom, "the day bin's bottom stress governs: {top} vs {bottom}");
+    // 0.45 MR halfway between the faces' largest stresses.
+    let mr = (top + bottom) / 2.0 / 0.45;
+    let d = run(&slab(
+        &pca.replace("modulus_of_rupture = 4.5e6", &format!("modulus_of_rupture = {mr}")),
+    ));
+    assert!(d.top.iter().all(|v| *v == 0.0), "no top-down damage");
+    assert!(d.governing_bottom.damage > 0.0, "bottom-up damage");
+    let table = liftoff::output::damage::damage_table("slab", &d, None);
+    assert!(
+        table.contains("top-down   : Σ n/N = 0 everywhere: no pass damages this face"),
+        "{table}"
+    );
+    assert!(table.contains("bottom-up  : Σ n/N = "), "{table}");
+    let dir = tempfile::tempdir().expect("tempdir");
+    liftoff::output::damage::write_damage(dir.path(), &d, "slab").expect("files");
+    let svg = |face: &str| {
+        std::fs::read_to_string(dir.path().join(format!("damage-{face}.svg"))).expect("map")
+    };
+    assert!(svg("top").contains("none anywhere") && !svg("top").contains("governing:"));
+    assert!(svg("bottom").contains("governing:"));
+    let page = liftoff::output::report::write_report(dir.path(), None).expect("report");
+    let html = std::fs::read_to_string(page).expect("page");
+    assert!(html.contains("none: no pass damages this face"), "the page's top-down row");
+}
+
 /// The exact interpolation between levels: three levels of the axle at one lateral position, in
 /// two climate bins — a slight day gradient (the slab still touches the soil everywhere at
 /// every level: the middle level is interpolated at every position; the curl's own stress makes

@@ -171,17 +171,25 @@ pub fn write_damage(dir: &Path, d: &Damage, title: &str) -> Result<Vec<PathBuf>>
         ("bottom", &d.bottom, d.governing_bottom, "bottom-up"),
         ("top", &d.top, d.governing_top, "top-down"),
     ] {
+        // No damage anywhere (every stress below the relation's endurance limit, or no
+        // repetitions): no place governs, and none is marked.
+        let none = g.damage <= 0.0;
         let overlay = Overlay {
-            marks: vec![(
-                (g.x, g.y),
-                format!(
-                    "governing: Σ n/N = {} at ({:.2}, {:.2}) {}",
-                    chart::short(g.damage),
-                    length.apply(g.x),
-                    length.apply(g.y),
-                    length.unit
-                ),
-            )],
+            marks: (!none)
+                .then(|| {
+                    (
+                        (g.x, g.y),
+                        format!(
+                            "governing: Σ n/N = {} at ({:.2}, {:.2}) {}",
+                            chart::short(g.damage),
+                            length.apply(g.x),
+                            length.apply(g.y),
+                            length.unit
+                        ),
+                    )
+                })
+                .into_iter()
+                .collect(),
             ..Overlay::default()
         };
         let svg = st.path(&format!("damage-{face}.svg"));
@@ -196,9 +204,13 @@ pub fn write_damage(dir: &Path, d: &Damage, title: &str) -> Result<Vec<PathBuf>>
                 scale: number,
             },
             &format!(
-                "{title} — {what} fatigue damage ({}), largest {}{}",
+                "{title} — {what} fatigue damage ({}), {}{}",
                 d.model,
-                chart::short(g.damage),
+                if none {
+                    "none anywhere".to_string()
+                } else {
+                    format!("largest {}", chart::short(g.damage))
+                },
                 if d.complete { "" } else { " (incomplete)" }
             ),
             &units,
@@ -293,6 +305,13 @@ pub fn damage_table(title: &str, d: &Damage, files: Option<(usize, &Path)>) -> S
         ("bottom-up", d.governing_bottom),
         ("top-down", d.governing_top),
     ] {
+        if g.damage <= 0.0 {
+            let _ = writeln!(
+                s,
+                "  {what:<11}: Σ n/N = 0 everywhere: no pass damages this face (every stress below the relation's endurance limit, or no repetitions)"
+            );
+            continue;
+        }
         let _ = writeln!(
             s,
             "  {what:<11}: Σ n/N = {:.4e} at ({:.2}, {:.2}) {}",

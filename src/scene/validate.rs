@@ -666,11 +666,10 @@ fn damage_plan(
     // of its own (the traffic's are not there between passes) the slab at rest has no
     // equilibrium, and in every pass the curl would be held down by the axle alone.
     if *method != Method::Bonded {
-        let curls = plan
-            .climate
-            .iter()
-            .any(|c| (c.difference.is_finite() && c.difference != 0.0) || c.nonlinear != [0.0; 2])
-            || model.thermal_curvature() != 0.0;
+        let curls =
+            plan.climate.iter().any(|c| {
+                (c.difference.is_finite() && c.difference != 0.0) || c.nonlinear != [0.0; 2]
+            }) || model.thermal_curvature() != 0.0;
         let traffic = |i: usize| model.vehicles.iter().any(|v| v.loads.contains(&i));
         let own: f64 = (model.loads.iter().enumerate())
             .filter(|&(i, _)| !traffic(i))

@@ -73,14 +73,20 @@ pub(crate) fn read(l: &mut Listing) -> Result<Option<Part>> {
         ] {
             let g = v.get(key);
             let f = |k: &str| g.and_then(|g| g.get(k)).and_then(Value::as_f64);
+            // No damage anywhere: no place governs.
+            let none = f("damage").is_some_and(|d| d <= 0.0);
             rows.push(vec![
                 what.to_string(),
                 f("damage").map_or("—".into(), num),
-                format!(
-                    "({}, {})\u{202F}{unit}",
-                    f("x").map_or("—".into(), num),
-                    f("y").map_or("—".into(), num)
-                ),
+                if none {
+                    "none: no pass damages this face".to_string()
+                } else {
+                    format!(
+                        "({}, {})\u{202F}{unit}",
+                        f("x").map_or("—".into(), num),
+                        f("y").map_or("—".into(), num)
+                    )
+                },
             ]);
         }
         // The PCA's erosion at the corners: the governing one, the note where none is summed.
