@@ -24,6 +24,14 @@ impl Ticked {
             ticks: round_ticks(lo, hi, shown),
         }
     }
+
+    /// [lo, hi] with the given ticks (a logarithmic axis's, drawn in log10 units).
+    pub(super) fn at(lo: f64, hi: f64, ticks: Vec<f64>) -> Self {
+        Self {
+            inner: (lo..hi).into(),
+            ticks,
+        }
+    }
 }
 
 impl Ranged for Ticked {

@@ -7,7 +7,7 @@ use std::path::Path;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::axis::{padded_range, tick_format};
+use super::axis::{log_axis, log_tick_label, padded_range, plain_labels, tick_format, Ticked};
 use super::loglog::draw_grid;
 use super::style::{self, LINE_WIDTH};
 use super::{titled, txt, write_png, write_svg, DrawResult, Picture};
@@ -61,22 +61,31 @@ impl Picture for DesignCurve<'_> {
         let xs = curve.iter().chain(&steps).map(|p| p.0);
         let (x0, x1) = padded_range(xs, None);
         let ys = curve.iter().chain(&steps).map(|p| p.1);
-        let (y0, y1) = padded_range(ys, Some(y(self.target)));
+        // Damage on a logarithmic axis: ticks at 1, 2, 5 × 10ⁿ labelled as numbers (the
+        // values are drawn as their log10); cracking on a linear one.
+        let log = self
+            .log
+            .then(|| log_axis(ys.clone().chain(std::iter::once(y(self.target)))));
+        let (y0, y1) = match &log {
+            Some(a) => (a.lo, a.hi),
+            None => padded_range(ys, Some(y(self.target))),
+        };
+        let y_axis = match &log {
+            Some(a) => Ticked::at(y0, y1, a.bold.clone()),
+            None => Ticked::new(y0, y1, 1.0),
+        };
         let mut chart = ChartBuilder::on(&body)
             .margin(15)
             .margin_right(25)
             .x_label_area_size(50)
             .y_label_area_size(80)
-            .build_cartesian_2d(x0..x1, y0..y1)
+            .build_cartesian_2d(x0..x1, y_axis)
             .map_err(txt)?;
         let x_fmt = tick_format(x0, x1);
         let plain = tick_format(y0, y1);
-        let y_fmt = |v: &f64| {
-            if self.log {
-                format!("1e{}", plain(v))
-            } else {
-                plain(v)
-            }
+        let y_fmt = |v: &f64| match &log {
+            Some(a) => log_tick_label(*v, plain_labels(a)),
+            None => plain(v),
         };
         draw_grid(&mut chart, (self.x_label, self.y_label), &x_fmt, &y_fmt)?;
         let target = y(self.target);
@@ -144,5 +153,43 @@ impl Picture for DesignCurve<'_> {
             .position(SeriesLabelPosition::UpperRight)
             .draw()
             .map_err(txt)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Damage over two decades: the log axis is labelled with the values themselves at 1, 2,
+    /// 5 × 10ⁿ (not their logarithms as "1e0.4"), and the target's line is among them.
+    #[test]
+    fn a_log_axis_is_labelled_with_values() {
+        let dir = tempfile::tempdir().expect("tempdir");
+        let (svg, png) = (dir.path().join("d.svg"), dir.path().join("d.png"));
+        let curve = [(7.0, 4.6), (8.0, 1.8), (9.0, 0.77), (12.0, 0.067)];
+        write_design_curve(
+            &svg,
+            &png,
+            &DesignCurve {
+                title: "Design",
+                x_label: "slab thickness (in)",
+                y_label: "largest Σ n/N (log scale)",
+                curve: &curve,
+                steps: &[],
+                target: 1.0,
+                found: Some(8.8),
+                log: true,
+            },
+        )
+        .expect("chart");
+        let text = std::fs::read_to_string(&svg).expect("svg");
+        let labels: Vec<&str> = text
+            .split("</text>")
+            .filter_map(|t| t.rsplit('>').next().map(str::trim))
+            .collect();
+        for want in ["0.1", "0.2", "0.5", "1", "2", "5"] {
+            assert!(labels.contains(&want), "label {want}: {labels:?}");
+        }
+        assert!(!labels.iter().any(|l| l.starts_with("1e")), "{labels:?}");
     }
 }
