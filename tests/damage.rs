@@ -459,12 +459,16 @@ fn a_face_no_pass_damages_has_no_governing_place() {
             .fold(f64::NEG_INFINITY, f64::max)
     };
     let (top, bottom) = (peak(true), peak(false));
-    assert!(top < bottom, "the day bin's bottom stress governs: {top} vs {bottom}");
+    assert!(
+        top < bottom,
+        "the day bin's bottom stress governs: {top} vs {bottom}"
+    );
     // 0.45 MR halfway between the faces' largest stresses.
     let mr = (top + bottom) / 2.0 / 0.45;
-    let d = run(&slab(
-        &pca.replace("modulus_of_rupture = 4.5e6", &format!("modulus_of_rupture = {mr}")),
-    ));
+    let d = run(&slab(&pca.replace(
+        "modulus_of_rupture = 4.5e6",
+        &format!("modulus_of_rupture = {mr}"),
+    )));
     assert!(d.top.iter().all(|v| *v == 0.0), "no top-down damage");
     assert!(d.governing_bottom.damage > 0.0, "bottom-up damage");
     let table = liftoff::output::damage::damage_table("slab", &d, None);
@@ -482,7 +486,10 @@ fn a_face_no_pass_damages_has_no_governing_place() {
     assert!(svg("bottom").contains("governing:"));
     let page = liftoff::output::report::write_report(dir.path(), None).expect("report");
     let html = std::fs::read_to_string(page).expect("page");
-    assert!(html.contains("none: no pass damages this face"), "the page's top-down row");
+    assert!(
+        html.contains("none: no pass damages this face"),
+        "the page's top-down row"
+    );
 }
 
 /// The exact interpolation between levels: three levels of the axle at one lateral position, in

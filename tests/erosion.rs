@@ -162,7 +162,12 @@ fn erosion_is_the_hand_sum_of_the_corner_deflections() {
         for j in 0..corners.len() {
             hand[j] += reps / erosion_n(caused[j], 8.0e7, 0.25);
         }
-        let largest = caused.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+        // The pass's largest caused deflection among the corners that count: not the plate's
+        // ends, x = ±4.5 m, where the model cuts a lane that goes on.
+        let largest = (caused.iter().zip(&corners))
+            .filter(|(_, c)| c.0.abs() < 4.5 - 1e-9)
+            .map(|(w, _)| *w)
+            .fold(f64::NEG_INFINITY, f64::max);
         let pe = pass.erosion.expect("the pass's erosion");
         assert!(
             (pe.deflection - largest).abs() <= 1e-9 * largest,
@@ -181,10 +186,18 @@ fn erosion_is_the_hand_sum_of_the_corner_deflections() {
             hand[j]
         );
     }
-    // The loaded lane's outer corners govern: the far ends of the plate, free corners at the
-    // lane's edge, and the axle passes within 0.1 m of them.
+    // The plate's ends do not count (the model cuts the lane there): the joint's corners at
+    // the lane's edge govern, the axle passing within 0.1 m of them; the ends' corners take
+    // more (free corners no pavement has) and are written, but not counted.
+    for c in &e.corners {
+        assert_eq!(c.corner.counted, c.corner.x.abs() < 1e-9, "{:?}", c.corner);
+    }
     let g = &e.corners[e.governing.expect("governing")];
-    assert!((g.corner.x.abs() - 4.5).abs() < 1e-9 && (g.corner.y + 1.8).abs() < 1e-9);
+    assert!(g.corner.x.abs() < 1e-9 && (g.corner.y + 1.8).abs() < 1e-9);
+    let (end, at_end) = e.uncounted().expect("the ends' corners");
+    assert!(at_end > g.damage, "the free end's corner erodes most");
+    assert!((e.corners[end].corner.x.abs() - 4.5).abs() < 1e-9);
+    assert_eq!(e.damage(), g.damage);
     // The passes' shares at the governing corner add up to its damage.
     let shares: f64 = d
         .passes
@@ -192,6 +205,43 @@ fn erosion_is_the_hand_sum_of_the_corner_deflections() {
         .map(|p| p.erosion.map_or(0.0, |e| e.share))
         .sum();
     assert!((shares - g.damage).abs() <= 1e-12 * g.damage);
+}
+
+/// `[damage] erosion_ends = true` counts the plate's ends: the corners' damage is the same
+/// (every corner is summed either way), the governing corner is now a far end of the plate at
+/// the lane's edge, the largest of all; and a plate without transverse joints (one slab) counts
+/// its corners without being told.
+#[test]
+fn erosion_ends_count_where_asked_and_on_a_slab_alone() {
+    let cut = run(&slabs(AXLE, PLAN));
+    let ends = run(&slabs(
+        AXLE,
+        &PLAN.replace("steps = 5", "steps = 5\nerosion_ends = true"),
+    ));
+    let (a, b) = (
+        cut.erosion.expect("erosion"),
+        ends.erosion.expect("erosion"),
+    );
+    assert!(b.corners.iter().all(|c| c.corner.counted));
+    assert!(b.uncounted().is_none());
+    for (x, y) in a.corners.iter().zip(&b.corners) {
+        assert_eq!(x.damage, y.damage);
+    }
+    let g = &b.corners[b.governing.expect("governing")];
+    assert!((g.corner.x.abs() - 4.5).abs() < 1e-9 && (g.corner.y + 1.8).abs() < 1e-9);
+    let all = b.corners.iter().map(|c| c.damage).fold(0.0, f64::max);
+    assert_eq!(b.damage(), all);
+    assert!(b.damage() > a.damage());
+    // One slab: no transverse joint, every corner counts.
+    let alone = slabs(AXLE, PLAN)
+        .replace("length = 9.0", "length = 4.5")
+        .replace(
+            "[[joint]]\nx = 0.0\nkind = \"dowels\"",
+            "[[joint]]\ny = 0.0\nkind = \"dowels\"",
+        )
+        .replace("elements = [36, 16]", "elements = [18, 16]");
+    let e = run(&alone).erosion.expect("erosion");
+    assert!(e.corners.iter().all(|c| c.corner.counted), "a slab alone");
 }
 
 /// EB109's C2 scales the erosion and nothing else.
@@ -297,25 +347,29 @@ fn the_files_and_the_report_show_the_erosion() {
     let mut lines = text.lines();
     assert_eq!(
         lines.next(),
-        Some("panel,x [m],y [m],thickness [m],deflection [m],damage")
+        Some("panel,x [m],y [m],thickness [m],deflection [m],damage,counted")
     );
     let rows: Vec<&str> = lines.collect();
     assert_eq!(rows.len(), e.corners.len());
     for (row, c) in rows.iter().zip(&e.corners) {
-        let damage: f64 = row
-            .rsplit(',')
-            .next()
-            .expect("damage")
-            .parse()
-            .expect("number");
+        let mut cells = row.rsplit(',');
+        let counted: bool = cells.next().expect("counted").parse().expect("bool");
+        let damage: f64 = cells.next().expect("damage").parse().expect("number");
         assert_eq!(damage, c.damage, "{row}");
+        assert_eq!(counted, c.corner.counted, "{row}");
         assert!(row.starts_with(&format!("\"{}\"", c.corner.panel)), "{row}");
     }
     let page = liftoff::output::report::write_report(dir.path(), None).expect("report");
     let html = std::fs::read_to_string(page).expect("page");
     assert!(html.contains("erosion (PCA, C2 Σ n/N)"), "the erosion row");
     assert_eq!(html.matches("<svg").count(), 3, "three maps inline");
-    // Each quarter of a panel shows its corner: every element takes one corner's damage.
+    // Each quarter of a panel shows its corner: every element takes one counted corner's
+    // damage, or none (NaN) in the quarters of the plate's ends, x beyond ±2.25 m.
     let by = e.by_element(&d.x, &d.y);
-    assert!(by.iter().all(|v| e.corners.iter().any(|c| c.damage == *v)));
+    for (v, x) in by.iter().zip(&d.x) {
+        match x.abs() > 2.25 {
+            true => assert!(v.is_nan(), "{x}: {v}"),
+            false => assert!(e.corners.iter().any(|c| c.corner.counted && c.damage == *v)),
+        }
+    }
 }

@@ -749,6 +749,11 @@ fn e71_e72_damage_inputs_are_refused_naming_the_key() {
             "scene field `traffic.edge_at`: y = 2.5 m is not on the 3.6 m wide plate",
         ),
         (
+            "model = \"mepdg\"",
+            "model = \"mepdg\"\nerosion_ends = true",
+            "scene field `damage.erosion_ends`: only the PCA's relation sums erosion (model = \"pca\"), not `mepdg`: remove the key",
+        ),
+        (
             "kind = \"uniform\"\npressure = 6.0e3",
             "kind = \"uniform\"\npressure = 0.0",
             "scene field `load`: the climate bins curl the slab, but no load of the scene's own holds it on a soil that cannot pull (the traffic's are there only during a pass): add its self-weight, [[load]] kind = \"uniform\", case = \"self-weight\", pressure = 6000 Pa for this 0.250 m slab",

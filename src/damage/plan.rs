@@ -148,6 +148,12 @@ pub struct DamageSpec {
     /// interpolation, which is then exact (true, the default), or solve every level.
     #[serde(default = "yes")]
     pub interpolate: bool,
+    /// `pca`: count the erosion at the corners of the plate's ends across the lane
+    /// (x = ±a/2). Absent: counted on a plate without transverse joints (a slab on its own),
+    /// not counted on one with them — there the ends are where the model cuts a lane that
+    /// goes on, and its joints' corners stand for every joint of it.
+    #[serde(default)]
+    pub erosion_ends: Option<bool>,
 }
 
 fn yes() -> bool {
@@ -244,6 +250,8 @@ pub struct DamagePlan {
     pub reliability: Option<f64>,
     /// Interpolate between levels with the same contact set ([`DamageSpec::interpolate`]).
     pub interpolate: bool,
+    /// Count the erosion at the plate's ends ([`DamageSpec::erosion_ends`]).
+    pub erosion_ends: Option<bool>,
     /// The free-curling curvature of one kelvin of difference in the model's units (κ D / P
     /// per K, [`crate::model::Load::Temperature`]): what a climate bin's difference becomes.
     /// None where the plate has no thermal expansion (then the bins must keep the scene's own
@@ -523,6 +531,17 @@ impl DamagePlan {
                 format!("must be 2 … 401 positions of a pass, got {steps}"),
             ));
         }
+        if damage.erosion_ends.is_some()
+            && !matches!(model, crate::damage::relations::DamageModel::Pca(_))
+        {
+            return Err(Error::invalid(
+                "damage.erosion_ends",
+                format!(
+                    "only the PCA's relation sums erosion (model = \"pca\"), not `{}`: remove the key",
+                    damage.model
+                ),
+            ));
+        }
         if let Some(r) = damage.reliability {
             if !(0.5..1.0).contains(&r) {
                 return Err(Error::invalid(
@@ -545,6 +564,7 @@ impl DamagePlan {
             steps: damage.steps,
             reliability: damage.reliability,
             interpolate: damage.interpolate,
+            erosion_ends: damage.erosion_ends,
             curvature_per_kelvin: None,
             stress_per_kelvin: None,
         }))

@@ -124,14 +124,21 @@ fn csv_erosion(d: &Damage) -> Option<String> {
         l.header("thickness", sys),
         Measure::Deflection.header("deflection", sys),
         "damage".into(),
+        "counted".into(),
     ]
     .join(",");
     s.push('\n');
     for c in &e.corners {
         let _ = writeln!(
             s,
-            "\"{}\",{:e},{:e},{:e},{:e},{:e}",
-            c.corner.panel, c.corner.x, c.corner.y, c.corner.thickness, c.deflection, c.damage
+            "\"{}\",{:e},{:e},{:e},{:e},{:e},{}",
+            c.corner.panel,
+            c.corner.x,
+            c.corner.y,
+            c.corner.thickness,
+            c.deflection,
+            c.damage,
+            c.corner.counted
         );
     }
     Some(s)
@@ -220,7 +227,8 @@ pub fn write_damage(dir: &Path, d: &Damage, title: &str) -> Result<Vec<PathBuf>>
     if let Some(e) = &d.erosion {
         // Each quarter of a panel shows its corner's erosion damage (the corner it lies
         // towards, on its own side of a joint); the governing corner is marked. An element
-        // whose panel has no corner on the plate (a shaped plate's) shows none: 0.
+        // whose panel has no corner on the plate (a shaped plate's), or whose corner does not
+        // count (the plate's ends), shows none: 0.
         let values: Vec<f64> = e
             .by_element(&d.x, &d.y)
             .into_iter()
@@ -254,9 +262,14 @@ pub fn write_damage(dir: &Path, d: &Damage, title: &str) -> Result<Vec<PathBuf>>
                 scale: number,
             },
             &format!(
-                "{title} — erosion at the panels' corners (PCA), largest {}{}; each quarter of a panel shows its corner",
+                "{title} — erosion (PCA) by panel corner, largest {}{}{}",
                 chart::short(e.damage()),
-                if d.complete { "" } else { " (incomplete)" }
+                if d.complete { "" } else { " (incomplete)" },
+                if e.uncounted().is_some() {
+                    ", the plate's ends not counted"
+                } else {
+                    ""
+                }
             ),
             &units,
             &Overlay {
@@ -342,8 +355,19 @@ pub fn damage_table(title: &str, d: &Damage, files: Option<(usize, &Path)>) -> S
                 );
             }
             None => {
-                let _ = writeln!(s, "  erosion    : no panel corner on the plate");
+                let _ = writeln!(s, "  erosion    : no counted panel corner on the plate");
             }
+        }
+        if let Some(c) = e.uncounted().and_then(|(j, _)| e.corners.get(j)) {
+            let _ = writeln!(
+                s,
+                "               the plate's ends (x = ±{:.2} {}), where the model cuts a lane that goes on, not counted: C2 Σ n/N up to {:.4e} there, at ({:.2}, {:.2}) ([damage] erosion_ends = true counts them)",
+                len.apply(c.corner.x.abs()),
+                len.unit,
+                c.damage,
+                len.apply(c.corner.x),
+                len.apply(c.corner.y)
+            );
         }
     }
     if let Some(note) = &d.erosion_note {

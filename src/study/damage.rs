@@ -175,7 +175,7 @@ impl<'a> Setup<'a> {
             f.sort_by(|&a, &b| level(a).total_cmp(&level(b)));
         }
         let erosion = match plan.model {
-            DamageModel::Pca(m) => Some(Corners::of(&problem.model, m)),
+            DamageModel::Pca(m) => Some(Corners::of(&problem.model, m, plan.erosion_ends)),
             _ => None,
         };
         Ok(Self {
@@ -612,6 +612,7 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
             }
             let governing = (0..corners.len())
                 .rev()
+                .filter(|&j| corners[j].corner.counted)
                 .max_by(|&a, &b| corners[a].damage.total_cmp(&corners[b].damage));
             Some((
                 Erosion {
@@ -662,6 +663,7 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
                         .iter()
                         .enumerate()
                         .rev()
+                        .filter(|&(j, _)| c.points.get(j).is_some_and(|p| p.counted))
                         .max_by(|a, b| a.1.total_cmp(b.1))
                         .map(|(j, &w)| PassErosion {
                             deflection: w,

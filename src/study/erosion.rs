@@ -15,6 +15,13 @@
 //! (a deflection below the rest state's) takes no erosion. One repetition per pass, as EB109
 //! counts an axle group.
 //!
+//! **Which corners count.** On a plate with transverse joints (across the lane, which runs
+//! along x) the plate's own ends x = ±a/2 are where the model cuts a lane that goes on: their
+//! corners are free corners no pavement has, and would govern by far (some forty times a
+//! doweled joint's). Their erosion is computed and written, but it counts — in the governing
+//! corner, the passes' shares and a design — only with `[damage] erosion_ends = true`. A plate
+//! without transverse joints (a slab on its own) counts its ends unless told otherwise.
+//!
 //! **Which k.** The Winkler modulus of the scene's soil (its zones excepted: the relation is
 //! calibrated on one k). The relation has no meaning on a continuum soil, whose surface has no
 //! k: there the run reports why erosion is absent rather than invent one.
@@ -39,6 +46,9 @@ pub struct Corner {
     /// Where the panel lies from the corner: ±1 along x and y.
     #[serde(skip)]
     pub towards: [f64; 2],
+    /// Whether its erosion counts (false: a corner of the plate's ends, x = ±a/2, where the
+    /// model cuts a lane that goes on; see the module's notes).
+    pub counted: bool,
 }
 
 /// Where and how a run sums its erosion: the corners, where each is read, and the soil's k.
@@ -55,7 +65,13 @@ pub(super) struct Corners {
 
 impl Corners {
     /// The corners of `model`'s panels, or why the erosion cannot be summed on its soil.
-    pub(super) fn of(model: &Model, relation: crate::damage::pca::Pca) -> Result<Corners, String> {
+    /// `ends`: whether the corners of the plate's ends count (`[damage] erosion_ends`; None:
+    /// only on a plate without transverse joints).
+    pub(super) fn of(
+        model: &Model,
+        relation: crate::damage::pca::Pca,
+        ends: Option<bool>,
+    ) -> Result<Corners, String> {
         let Some(phys) = model.physical else {
             return Err("a damage run needs a physical scene".into());
         };
@@ -82,7 +98,9 @@ impl Corners {
                 .chain(std::iter::once(half))
                 .collect()
         };
-        let xs = edges(layout.lines(crate::layout::Axis::X), 1.0);
+        let transverse = layout.lines(crate::layout::Axis::X);
+        let ends = ends.unwrap_or(transverse.is_empty());
+        let xs = edges(transverse, 1.0);
         let ys = edges(layout.lines(crate::layout::Axis::Y), g.mu);
         // A corner is the panel's where the point a millionth of its smaller side inside is
         // plate; its deflection is the node copy of the panel's corner element there
@@ -108,6 +126,7 @@ impl Corners {
                         panel: format!("({}, {})", c + 1, r + 1),
                         thickness: thickness * layout.section(c, r).thickness,
                         towards: [sx, sy],
+                        counted: ends || (x.abs() - 1.0).abs() > 1e-12,
                     });
                     probes.push(([x * l, y * l], [sx > 0.0, sy > 0.0]));
                 }
@@ -167,14 +186,15 @@ pub struct Erosion {
     pub c2: f64,
     /// Every corner's damage.
     pub corners: Vec<CornerDamage>,
-    /// The corner of the largest damage (index into `corners`; None: no corner).
+    /// The counted corner of the largest damage (index into `corners`; None: no corner
+    /// counts).
     pub governing: Option<usize>,
 }
 
 impl Erosion {
     /// Each element's share of the map: the damage of its panel's nearest corner — the corner
     /// it lies towards, on its own side of a joint — for the erosion map (NaN where no corner
-    /// is towards it). `x`, `y`: the element centres.
+    /// is towards it, or where that corner does not count). `x`, `y`: the element centres.
     pub fn by_element(&self, x: &[f64], y: &[f64]) -> Vec<f64> {
         x.iter()
             .zip(y)
@@ -191,12 +211,23 @@ impl Erosion {
                         };
                         d(a).total_cmp(&d(b))
                     })
+                    .filter(|c| c.corner.counted)
                     .map_or(f64::NAN, |c| c.damage)
             })
             .collect()
     }
 
-    /// The largest erosion damage, 0 without corners.
+    /// The largest damage at a corner that does not count (the plate's ends, see the
+    /// module's notes) and that corner's index; None when every corner counts.
+    pub fn uncounted(&self) -> Option<(usize, f64)> {
+        (0..self.corners.len())
+            .rev()
+            .filter(|&j| !self.corners[j].corner.counted)
+            .map(|j| (j, self.corners[j].damage))
+            .max_by(|a, b| a.1.total_cmp(&b.1))
+    }
+
+    /// The largest erosion damage of a counted corner, 0 without one.
     pub fn damage(&self) -> f64 {
         self.governing
             .and_then(|i| self.corners.get(i))
@@ -223,6 +254,7 @@ impl Erosion {
                         thickness: l(c.corner.thickness),
                         panel: c.corner.panel.clone(),
                         towards: c.corner.towards,
+                        counted: c.corner.counted,
                     },
                     deflection: Measure::Deflection.from_si(sys, c.deflection),
                     damage: c.damage,

@@ -63,8 +63,9 @@ class Damage:
       ``element`` = ie + je·nx), ``cracking`` (the MEPDG's, a dict of ``bottom``, ``top``,
       ``total``, ``at_reliability`` in %; None for the other relations), ``erosion`` (the
       PCA's: ``k``, ``c1``, ``c2``, ``corners`` — each panel corner's ``panel``, ``x``, ``y``,
-      ``thickness``, ``deflection`` and ``damage`` — and ``governing``, the index of the
-      largest; None for the other relations), ``erosion_note`` (why a PCA run has none),
+      ``thickness``, ``deflection``, ``damage`` and ``counted`` (false at the plate's ends
+      on a plate with transverse joints, unless ``erosion_ends``) — and ``governing``, the
+      index of the largest counted corner; None for the other relations), ``erosion_note`` (why a PCA run has none),
       ``complete``,
       ``missing`` (the passes that did not converge, by label), ``solves``, ``interpolated``,
       ``mirrored``, ``assemble_s``,
