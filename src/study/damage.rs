@@ -7,8 +7,9 @@
 //!
 //! **Where each solve starts.** A family's levels are solved position by position. The lowest
 //! level (and the highest, when the middle may be interpolated) starts from its own answers at
-//! its last two positions, extrapolated (the lifted region moves with the load), and from the
-//! factor its last solve ended with; every other level starts from the level below it at the
+//! its last positions — extrapolated where that read the last position's contact set better
+//! than the answer before it (the lifted region moves with the load), by the rule `critical`'s
+//! runs follow ([`super::warm`]) — and from the factor its last solve ended with; every other level starts from the level below it at the
 //! same position — its pressures and, on Winkler soil with the penalty method, its factor
 //! ([`crate::solve::Carry`]), whose springs differ from its own at few points, so its steps are
 //! low-rank updates rather than factorisations. The answers do not depend on the starts (each
@@ -81,6 +82,7 @@ use super::damage_pass::{label, pass_models};
 pub use super::damage_result::{Cracking, Damage, Governing, Pass, PassErosion, Peak};
 use super::erosion::{CornerDamage, Corners, Erosion};
 use super::mirror;
+use super::warm::Trail;
 
 /// Run the scene's damage plan; see the module's description.
 pub fn damage(problem: &Problem, monitor: &Monitor<'_>) -> Result<Damage> {
@@ -310,7 +312,7 @@ fn solve_part(
             .map(|family| {
                 // The family's levels are solved position by position: at each position the
                 // lowest level (and with the interpolation the highest) starts from its own last
-                // two positions, extrapolated, and the factor its last solve ended with (`Carry`);
+                // positions (`Trail`), and the factor its last solve ended with (`Carry`);
                 // every other level starts from the level below it at the same position — its
                 // pressures and its factor, which differ from its own at few points, so its steps
                 // are low-rank updates rather than factorisations.
@@ -353,8 +355,11 @@ fn solve_part(
                 let read_off = |p: usize| mirrored.as_ref().is_some_and(|(_, q, _)| q[p] < p);
                 let mut stress: Vec<PassStress> = vec![PassStress::default(); n];
                 let carries: Vec<Carry> = (0..n).map(|_| Carry::new()).collect();
-                // Each level's answers at its last two solved positions, for the extrapolation.
-                let mut last: Vec<[Option<Vec<f64>>; 2]> = vec![[None, None]; n];
+                // Each level's answers at its last solved positions, where its next starts
+                // ([`Trail`]: the rule `critical`'s runs follow).
+                let mut last: Vec<Trail> = vec![Trail::new(); n];
+                let vehicle = plan.groups[bins[family[0]].group].vehicle;
+                let at = |i: usize, p: usize| passes[i][p].vehicles[vehicle].at;
                 let positions = passes[family[0]].len();
                 for p in (0..positions).filter(|&p| !read_off(p)) {
                     let mut kept: [Option<Kept>; 2] = [None, None];
@@ -381,18 +386,12 @@ fn solve_part(
                                         .collect();
                                     stress[j].take(&bottom, &top, &lo.x, &lo.y, &caused(&w));
                                     stress[j].interpolated += 1;
-                                    last[j] = [None, None];
+                                    last[j].clear();
                                     continue;
                                 }
                             }
                         }
-                        let own = match &last[j] {
-                            [Some(now), Some(before)] => {
-                                Some(now.iter().zip(before).map(|(a, b)| 2.0 * a - b).collect())
-                            }
-                            [Some(now), None] => Some(now.clone()),
-                            _ => None,
-                        };
+                        let own = last[j].start(at(i, p));
                         // A middle level: from the level below at this position when it was solved
                         // here (its factor handed over), else from its own last positions.
                         // (Starting a middle level from the ends' interpolation instead was tried: its
@@ -431,8 +430,7 @@ fn solve_part(
                                     kept[usize::from(j != 0)] = Some(Kept::of(&r, w));
                                 }
                                 let now = r.solution.sigma.clone();
-                                let previous = last[j][0].take();
-                                last[j] = [Some(now.clone()), previous];
+                                last[j].push(at(i, p), now.clone());
                                 // The highest level, solved before the middle when they may be
                                 // interpolated, is not the one below them.
                                 if !(ends && j == n - 1) {

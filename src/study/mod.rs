@@ -30,6 +30,7 @@ mod mirror;
 mod options;
 mod stability;
 mod tradeoff;
+mod warm;
 
 pub use critical::{
     critical, critical_points, critical_positions, Along, Critical, CriticalOptions, Edge,
