@@ -492,6 +492,79 @@ fn a_face_no_pass_damages_has_no_governing_place() {
     );
 }
 
+/// A lane of three slabs cut at the plate's ends (`[traffic] ends`, default "cut"): the end
+/// panels are the middle one's neighbours and count for nothing — the governing places and the
+/// cracking are the largest damage between the two joints, where day curling with edge loading
+/// puts the bottom-up damage at the middle slab's mid-edge — while the maps, which do not depend
+/// on the key, keep every element and show the cut's free ends damaged more (the reason for the
+/// default). With `ends = "free"` every element counts. A plate with one transverse joint has
+/// no inner panel: every element counts.
+#[test]
+fn the_end_panels_of_a_cut_lane_do_not_count() {
+    let lane = liftoff::examples::SCENES
+        .iter()
+        .find(|(n, _, _)| *n == "pavement-damage")
+        .map(|(_, _, t)| t.replace("reliability = 0.9", "reliability = 0.9\nsteps = 31"))
+        .expect("bundled");
+    let cut = run(&lane);
+    let free = run(&lane.replace("growth = 0.02", "growth = 0.02\nends = \"free\""));
+    assert_eq!(cut.bottom, free.bottom, "the maps do not depend on the key");
+    assert_eq!(cut.top, free.top);
+    // The joints at x = ±2.25 m: the inner panel's elements count, the end panels' do not.
+    for (c, x) in cut.counted.iter().zip(&cut.x) {
+        assert_eq!(*c, x.abs() < 2.25, "x = {x}");
+    }
+    assert!(free.counted.iter().all(|c| *c));
+    let largest = |d: &Damage, v: &[f64], all: bool| {
+        (0..v.len())
+            .filter(|&k| all || d.counted[k])
+            .map(|k| v[k])
+            .fold(0.0_f64, f64::max)
+    };
+    for (g, v) in [
+        (cut.governing_bottom, &cut.bottom),
+        (cut.governing_top, &cut.top),
+    ] {
+        assert_eq!(g.damage, largest(&cut, v, false));
+        assert!(
+            g.x.abs() < 2.25,
+            "governing in the middle slab: x = {}",
+            g.x
+        );
+    }
+    // The middle slab's mid-edge (its middle ±0.5 m, the outer row of elements).
+    let g = cut.governing_bottom;
+    assert!(
+        g.x.abs() <= 0.5 && g.y < -1.8 + 0.15,
+        "bottom-up at ({}, {})",
+        g.x,
+        g.y
+    );
+    assert_eq!(
+        free.governing_bottom.damage,
+        largest(&free, &free.bottom, true)
+    );
+    let (end, at_end) = cut.uncounted(&cut.bottom).expect("end panels");
+    assert!(
+        at_end > g.damage && cut.x[end].abs() > 2.25,
+        "the cut's free ends damage more"
+    );
+    assert_eq!(free.governing_bottom.damage, at_end);
+    // Cracking follows the governing damage.
+    let (c, f) = (cut.cracking.expect("mepdg"), free.cracking.expect("mepdg"));
+    assert!(c.bottom < f.bottom, "{} vs {}", c.bottom, f.bottom);
+    // The passes' peaks are the counted elements' too.
+    for p in &cut.passes {
+        assert!(p.bottom.x.abs() < 2.25 && p.top.x.abs() < 2.25);
+    }
+    // One transverse joint: no inner panel, every element counts.
+    let two = run(&slab(TWO_BINS).replace(
+        "[[load]]\nkind = \"axle\"",
+        "[[joint]]\nx = 0.0\nkind = \"aggregate\"\nstiffness = 1e8\n[[load]]\nkind = \"axle\"",
+    ));
+    assert!(two.counted.iter().all(|c| *c));
+}
+
 /// The exact interpolation between levels: three levels of the axle at one lateral position, in
 /// two climate bins — a slight day gradient (the slab still touches the soil everywhere at
 /// every level: the middle level is interpolated at every position; the curl's own stress makes

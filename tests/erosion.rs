@@ -207,16 +207,16 @@ fn erosion_is_the_hand_sum_of_the_corner_deflections() {
     assert!((shares - g.damage).abs() <= 1e-12 * g.damage);
 }
 
-/// `[damage] erosion_ends = true` counts the plate's ends: the corners' damage is the same
+/// `[traffic] ends = "free"` counts the plate's ends: the corners' damage is the same
 /// (every corner is summed either way), the governing corner is now a far end of the plate at
 /// the lane's edge, the largest of all; and a plate without transverse joints (one slab) counts
 /// its corners without being told.
 #[test]
-fn erosion_ends_count_where_asked_and_on_a_slab_alone() {
+fn free_ends_count_where_asked_and_on_a_slab_alone() {
     let cut = run(&slabs(AXLE, PLAN));
     let ends = run(&slabs(
         AXLE,
-        &PLAN.replace("steps = 5", "steps = 5\nerosion_ends = true"),
+        &PLAN.replace("design_life = 10", "design_life = 10\nends = \"free\""),
     ));
     let (a, b) = (
         cut.erosion.expect("erosion"),
@@ -353,7 +353,7 @@ fn the_files_and_the_report_show_the_erosion() {
     assert_eq!(rows.len(), e.corners.len());
     for (row, c) in rows.iter().zip(&e.corners) {
         let mut cells = row.rsplit(',');
-        let counted: bool = cells.next().expect("counted").parse().expect("bool");
+        let counted = cells.next().expect("counted") == "1";
         let damage: f64 = cells.next().expect("damage").parse().expect("number");
         assert_eq!(damage, c.damage, "{row}");
         assert_eq!(counted, c.corner.counted, "{row}");

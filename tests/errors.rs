@@ -749,9 +749,9 @@ fn e71_e72_damage_inputs_are_refused_naming_the_key() {
             "scene field `traffic.edge_at`: y = 2.5 m is not on the 3.6 m wide plate",
         ),
         (
-            "model = \"mepdg\"",
-            "model = \"mepdg\"\nerosion_ends = true",
-            "scene field `damage.erosion_ends`: only the PCA's relation sums erosion (model = \"pca\"), not `mepdg`: remove the key",
+            "growth = 0.02",
+            "ends = \"open\"\ngrowth = 0.02",
+            "scene field `traffic.ends`: `open` is not what the plate's ends are: write \"cut\" (the default: the model cuts a lane that goes on) or \"free\" (the lane ends there)",
         ),
         (
             "kind = \"uniform\"\npressure = 6.0e3",

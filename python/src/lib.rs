@@ -499,8 +499,8 @@ fn critical(
 
 /// `liftoff damage`: `(damage_json, maps)` — damage.json (`Damage::reported`: in the scene's
 /// unit system) without its per-element arrays, and those arrays as f64 bytes — `x`, `y`
-/// (element centres), `bottom`, `top` (Σ n/N), element ie + je nx — with their `shape`
-/// (ny, nx). A run with passes that did not converge is returned (`complete` false, `missing`
+/// (element centres), `bottom`, `top` (Σ n/N), element ie + je nx — and `counted` (one byte
+/// an element, 1 where it counts: `Damage::counted`) with their `shape` (ny, nx). A run with passes that did not converge is returned (`complete` false, `missing`
 /// naming them); the Python layer raises `NotConverged`.
 #[pyfunction]
 #[pyo3(signature = (kind, text, options, progress=None))]
@@ -525,7 +525,7 @@ fn damage_out<'py>(
     let d = d.reported();
     let mut doc = serde_json::to_value(&d).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
     if let Some(o) = doc.as_object_mut() {
-        for key in ["x", "y", "bottom", "top"] {
+        for key in ["x", "y", "bottom", "top", "counted"] {
             o.remove(key);
         }
     }
@@ -539,6 +539,8 @@ fn damage_out<'py>(
     ] {
         maps.set_item(name, PyBytes::new(py, &bytes(v)))?;
     }
+    let counted: Vec<u8> = d.counted.iter().map(|&c| u8::from(c)).collect();
+    maps.set_item("counted", PyBytes::new(py, &counted))?;
     let [nx, ny] = d.elements;
     maps.set_item("shape", (ny, nx))?;
     Ok((json(&doc)?, maps))

@@ -819,7 +819,9 @@ def test_damage_equals_the_cli_files(units, tmp_path):
     assert np.all(np.diff(d.x, axis=1) > 0) and np.all(np.diff(d.y, axis=0) > 0)
     ref = read_csv(tmp_path / "out" / "damage.csv")
     # The CSV prints 13 significant digits ({:.12e}): equal to that round-off.
-    for key, arr in [("x", d.x), ("y", d.y), ("damage_bottom", d.bottom), ("damage_top", d.top)]:
+    assert d.counted.shape == (ny, nx) and d.counted.dtype == bool
+    for key, arr in [("x", d.x), ("y", d.y), ("damage_bottom", d.bottom), ("damage_top", d.top),
+                     ("counted", d.counted)]:
         scale = max(np.abs(ref[key]).max(), 1e-300)
         assert np.allclose(arr.ravel(), ref[key], rtol=1e-9, atol=1e-9 * scale), key
     rows = [{k.split(" [")[0]: v for k, v in row.items()}
@@ -837,7 +839,8 @@ def test_damage_equals_the_cli_files(units, tmp_path):
     # its timings aside (two runs).
     timed = ("assemble_s", "total_s")
     assert {k: v for k, v in d.summary.items() if k not in timed} == \
-        {k: v for k, v in doc.items() if k not in timed + ("x", "y", "bottom", "top", "passes")}
+        {k: v for k, v in doc.items()
+         if k not in timed + ("x", "y", "bottom", "top", "counted", "passes")}
     for key in ("model", "rupture", "life_factor", "elements", "governing_bottom",
                 "governing_top", "cracking", "complete", "missing", "solves", "units"):
         assert getattr(d, key) == doc[key], key

@@ -40,6 +40,14 @@ pub struct TrafficSpec {
     /// `y-`, on its −y side for `y+`.
     #[serde(default)]
     pub edge_at: Option<f64>,
+    /// What the plate's ends across the lane (x = ±a/2) are: `cut` (the default) — where the
+    /// model cuts a lane that goes on, so that on a plate with transverse joints its end
+    /// panels are the neighbours the inner ones need and count for nothing themselves (their
+    /// damage is mapped, not summed into the governing places, the cracking or a design; the
+    /// erosion at their outer corners likewise) — or `free`: the lane ends there (a bridge, a
+    /// free end), and every element and corner counts.
+    #[serde(default)]
+    pub ends: Option<String>,
     /// The axle groups and gears with their load spectra.
     #[serde(default)]
     pub group: Vec<GroupSpec>,
@@ -148,12 +156,6 @@ pub struct DamageSpec {
     /// interpolation, which is then exact (true, the default), or solve every level.
     #[serde(default = "yes")]
     pub interpolate: bool,
-    /// `pca`: count the erosion at the corners of the plate's ends across the lane
-    /// (x = ±a/2). Absent: counted on a plate without transverse joints (a slab on its own),
-    /// not counted on one with them — there the ends are where the model cuts a lane that
-    /// goes on, and its joints' corners stand for every joint of it.
-    #[serde(default)]
-    pub erosion_ends: Option<bool>,
 }
 
 fn yes() -> bool {
@@ -250,8 +252,8 @@ pub struct DamagePlan {
     pub reliability: Option<f64>,
     /// Interpolate between levels with the same contact set ([`DamageSpec::interpolate`]).
     pub interpolate: bool,
-    /// Count the erosion at the plate's ends ([`DamageSpec::erosion_ends`]).
-    pub erosion_ends: Option<bool>,
+    /// The plate's ends across the lane cut a lane that goes on ([`TrafficSpec::ends`]).
+    pub cut: bool,
     /// The free-curling curvature of one kelvin of difference in the model's units (κ D / P
     /// per K, [`crate::model::Load::Temperature`]): what a climate bin's difference becomes.
     /// None where the plate has no thermal expansion (then the bins must keep the scene's own
@@ -310,6 +312,16 @@ impl DamagePlan {
                 return Err(Error::invalid(
                     "traffic.edge",
                     format!("`{other}` is not an edge the traffic runs along: write \"y-\" (y = −b/2, the default) or \"y+\"; the lane runs along x"),
+                ))
+            }
+        };
+        let cut = match traffic.ends.as_deref() {
+            None | Some("cut") => true,
+            Some("free") => false,
+            Some(other) => {
+                return Err(Error::invalid(
+                    "traffic.ends",
+                    format!("`{other}` is not what the plate's ends are: write \"cut\" (the default: the model cuts a lane that goes on) or \"free\" (the lane ends there)"),
                 ))
             }
         };
@@ -531,17 +543,6 @@ impl DamagePlan {
                 format!("must be 2 … 401 positions of a pass, got {steps}"),
             ));
         }
-        if damage.erosion_ends.is_some()
-            && !matches!(model, crate::damage::relations::DamageModel::Pca(_))
-        {
-            return Err(Error::invalid(
-                "damage.erosion_ends",
-                format!(
-                    "only the PCA's relation sums erosion (model = \"pca\"), not `{}`: remove the key",
-                    damage.model
-                ),
-            ));
-        }
         if let Some(r) = damage.reliability {
             if !(0.5..1.0).contains(&r) {
                 return Err(Error::invalid(
@@ -564,7 +565,7 @@ impl DamagePlan {
             steps: damage.steps,
             reliability: damage.reliability,
             interpolate: damage.interpolate,
-            erosion_ends: damage.erosion_ends,
+            cut,
             curvature_per_kelvin: None,
             stress_per_kelvin: None,
         }))

@@ -19,7 +19,7 @@ use crate::units::Measure;
 fn csv_damage(d: &Damage) -> String {
     let sys = d.units;
     let mut s = format!(
-        "{},{},{},{}\n",
+        "{},{},{},{},counted\n",
         Measure::Length.header("x", sys),
         Measure::Length.header("y", sys),
         Measure::Number.header("damage_bottom", sys),
@@ -29,11 +29,13 @@ fn csv_damage(d: &Damage) -> String {
     for i in 0..d.x.len() {
         let _ = writeln!(
             s,
-            "{:.12e},{:.12e},{:.12e},{:.12e}",
+            "{:.12e},{:.12e},{:.12e},{:.12e},{}",
             l(d.x[i]),
             l(d.y[i]),
             d.bottom[i],
-            d.top[i]
+            d.top[i],
+            // 1 or 0, so that the file stays numbers.
+            u8::from(d.counted.get(i).is_none_or(|c| *c))
         );
     }
     s
@@ -138,7 +140,7 @@ fn csv_erosion(d: &Damage) -> Option<String> {
             c.corner.thickness,
             c.deflection,
             c.damage,
-            c.corner.counted
+            u8::from(c.corner.counted)
         );
     }
     Some(s)
@@ -211,12 +213,17 @@ pub fn write_damage(dir: &Path, d: &Damage, title: &str) -> Result<Vec<PathBuf>>
                 scale: number,
             },
             &format!(
-                "{title} — {what} fatigue damage ({}), {}{}",
+                "{title} — {what} damage ({}), {}{}{}",
                 d.model,
-                if none {
-                    "none anywhere".to_string()
+                match (none, d.uncounted(values).is_some()) {
+                    (true, false) => "none anywhere".to_string(),
+                    (true, true) => "none in the inner panels".to_string(),
+                    (false, _) => format!("largest {}", chart::short(g.damage)),
+                },
+                if d.uncounted(values).is_some() {
+                    "; end panels not counted"
                 } else {
-                    format!("largest {}", chart::short(g.damage))
+                    ""
                 },
                 if d.complete { "" } else { " (incomplete)" }
             ),
@@ -314,25 +321,38 @@ pub fn damage_table(title: &str, d: &Damage, files: Option<(usize, &Path)>) -> S
         "  time       : operators assembled in {:.3} s; the whole run {:.3} s",
         d.assemble_s, d.total_s
     );
-    for (what, g) in [
-        ("bottom-up", d.governing_bottom),
-        ("top-down", d.governing_top),
+    for (what, g, values) in [
+        ("bottom-up", d.governing_bottom, &d.bottom),
+        ("top-down", d.governing_top, &d.top),
     ] {
+        let cut = d.uncounted(values);
         if g.damage <= 0.0 {
             let _ = writeln!(
                 s,
-                "  {what:<11}: Σ n/N = 0 everywhere: no pass damages this face (every stress below the relation's endurance limit, or no repetitions)"
+                "  {what:<11}: Σ n/N = 0 {}: no pass damages this face (every stress below the relation's endurance limit, or no repetitions)",
+                if cut.is_some() { "in the inner panels" } else { "everywhere" }
             );
-            continue;
+        } else {
+            let _ = writeln!(
+                s,
+                "  {what:<11}: Σ n/N = {:.4e} at ({:.2}, {:.2}) {}",
+                g.damage,
+                len.apply(g.x),
+                len.apply(g.y),
+                len.unit
+            );
         }
-        let _ = writeln!(
-            s,
-            "  {what:<11}: Σ n/N = {:.4e} at ({:.2}, {:.2}) {}",
-            g.damage,
-            len.apply(g.x),
-            len.apply(g.y),
-            len.unit
-        );
+        // The end panels of a lane the model cuts: mapped, not counted.
+        if let Some((k, v)) = cut {
+            let _ = writeln!(
+                s,
+                "               the end panels, where the model cuts a lane that goes on, not counted: Σ n/N up to {:.4e} there, at ({:.2}, {:.2}) {} ([traffic] ends = \"free\" counts them)",
+                v,
+                len.apply(d.x[k]),
+                len.apply(d.y[k]),
+                len.unit
+            );
+        }
     }
     if let Some(e) = &d.erosion {
         match e.governing.and_then(|g| e.corners.get(g)) {
@@ -361,7 +381,7 @@ pub fn damage_table(title: &str, d: &Damage, files: Option<(usize, &Path)>) -> S
         if let Some(c) = e.uncounted().and_then(|(j, _)| e.corners.get(j)) {
             let _ = writeln!(
                 s,
-                "               the plate's ends (x = ±{:.2} {}), where the model cuts a lane that goes on, not counted: C2 Σ n/N up to {:.4e} there, at ({:.2}, {:.2}) ([damage] erosion_ends = true counts them)",
+                "               the plate's ends (x = ±{:.2} {}), where the model cuts a lane that goes on, not counted: C2 Σ n/N up to {:.4e} there, at ({:.2}, {:.2}) ([traffic] ends = \"free\" counts them)",
                 len.apply(c.corner.x.abs()),
                 len.unit,
                 c.damage,

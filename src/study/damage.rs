@@ -177,7 +177,7 @@ impl<'a> Setup<'a> {
             f.sort_by(|&a, &b| level(a).total_cmp(&level(b)));
         }
         let erosion = match plan.model {
-            DamageModel::Pca(m) => Some(Corners::of(&problem.model, m, plan.erosion_ends)),
+            DamageModel::Pca(m) => Some(Corners::of(&problem.model, m, plan.cut)),
             _ => None,
         };
         Ok(Self {
@@ -568,10 +568,14 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
             })
         })
         .unzip();
+    // The elements that count ([`counted_elements`]): the governing places, the passes' peaks,
+    // the cracking and a design take only these.
+    let counted = counted_elements(&problem.model, plan.cut, &xs);
     let governing = |d: &[f64]| -> Governing {
         // The first of equal ones (an element and its mirror image on a symmetric plate).
         let k = (0..n)
             .rev()
+            .filter(|&k| counted[k])
             .max_by(|&a, &b| d[a].total_cmp(&d[b]))
             .unwrap_or(0);
         Governing {
@@ -632,7 +636,10 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
         .map(|((s, bin), models)| {
             let group = &plan.groups[bin.group];
             let peak = |v: &[f64]| -> Peak {
-                match (0..v.len()).rev().max_by(|&a, &b| v[a].total_cmp(&v[b])) {
+                let among = (0..v.len())
+                    .rev()
+                    .filter(|&k| counted.get(k) == Some(&true));
+                match among.max_by(|&a, &b| v[a].total_cmp(&v[b])) {
                     Some(k) if s.outcome == RunOutcome::CONVERGED => Peak {
                         stress: v[k],
                         x: s.x[k],
@@ -733,6 +740,7 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
         y: ys,
         bottom,
         top,
+        counted,
         governing_bottom: gb,
         governing_top: gt,
         cracking,
@@ -752,6 +760,23 @@ fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) -> Result<D
         units: problem.model.physical.map(|p| p.units),
         field,
     })
+}
+
+/// Which elements of the maps (centres `xs`, m) count in the governing places, the passes'
+/// peaks, the cracking and a design: on a lane cut at the plate's ends (`cut`,
+/// [`crate::damage::plan::TrafficSpec::ends`]) with two or more transverse joints, those
+/// between the first and the last joint — the end panels are the neighbours the inner ones
+/// need, their free ends no pavement's; otherwise every element. A plate with one transverse
+/// joint has no inner panel: every element counts.
+fn counted_elements(model: &Model, cut: bool, xs: &[f64]) -> Vec<bool> {
+    let l = model.physical.map_or(1.0, |p| p.half_length);
+    let lines = model.layout.lines(crate::layout::Axis::X);
+    let (lo, hi) = (lines.iter()).fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+        (a.min(x * l), b.max(x * l))
+    });
+    xs.iter()
+        .map(|&x| !cut || lines.len() < 2 || (x > lo && x < hi))
+        .collect()
 }
 
 /// A face's stress components (σx, σy, τxy) per element, which are linear in the load.

@@ -120,6 +120,9 @@ pub struct Damage {
     pub bottom: Vec<f64>,
     /// Σ n/N at the top face (top-down).
     pub top: Vec<f64>,
+    /// Whether each element counts in the governing places, the passes' peaks, the cracking
+    /// and a design (false: an end panel of a lane the model cuts, `[traffic] ends`).
+    pub counted: Vec<bool>,
     /// Governing bottom-up damage.
     pub governing_bottom: Governing,
     /// Governing top-down damage.
@@ -156,6 +159,16 @@ pub struct Damage {
 }
 
 impl Damage {
+    /// The largest damage of `values` (a face's map) at an element that does not count, and
+    /// that element; None when every element counts.
+    pub fn uncounted(&self, values: &[f64]) -> Option<(usize, f64)> {
+        (0..values.len())
+            .rev()
+            .filter(|&k| self.counted.get(k) == Some(&false))
+            .map(|k| (k, values[k]))
+            .max_by(|a, b| a.1.total_cmp(&b.1))
+    }
+
     /// The run as damage.json reports it: stresses, places, loads and temperature differences
     /// in the scene's unit system (an SI scene's unchanged); damage is a pure number.
     pub fn reported(&self) -> Damage {

@@ -19,8 +19,8 @@
 //! along x) the plate's own ends x = ±a/2 are where the model cuts a lane that goes on: their
 //! corners are free corners no pavement has, and would govern by far (some forty times a
 //! doweled joint's). Their erosion is computed and written, but it counts — in the governing
-//! corner, the passes' shares and a design — only with `[damage] erosion_ends = true`. A plate
-//! without transverse joints (a slab on its own) counts its ends unless told otherwise.
+//! corner, the passes' shares and a design — only with `[traffic] ends = "free"` (the lane ends
+//! there). A plate without transverse joints (a slab on its own) counts them.
 //!
 //! **Which k.** The Winkler modulus of the scene's soil (its zones excepted: the relation is
 //! calibrated on one k). The relation has no meaning on a continuum soil, whose surface has no
@@ -65,12 +65,12 @@ pub(super) struct Corners {
 
 impl Corners {
     /// The corners of `model`'s panels, or why the erosion cannot be summed on its soil.
-    /// `ends`: whether the corners of the plate's ends count (`[damage] erosion_ends`; None:
-    /// only on a plate without transverse joints).
+    /// `cut`: the plate's ends cut a lane that goes on (`[traffic] ends`): their corners do
+    /// not count on a plate with transverse joints.
     pub(super) fn of(
         model: &Model,
         relation: crate::damage::pca::Pca,
-        ends: Option<bool>,
+        cut: bool,
     ) -> Result<Corners, String> {
         let Some(phys) = model.physical else {
             return Err("a damage run needs a physical scene".into());
@@ -99,7 +99,7 @@ impl Corners {
                 .collect()
         };
         let transverse = layout.lines(crate::layout::Axis::X);
-        let ends = ends.unwrap_or(transverse.is_empty());
+        let ends = !cut || transverse.is_empty();
         let xs = edges(transverse, 1.0);
         let ys = edges(layout.lines(crate::layout::Axis::Y), g.mu);
         // A corner is the panel's where the point a millionth of its smaller side inside is

@@ -42,7 +42,9 @@ class Damage:
 
     - arrays of shape ``(ny, nx)`` over the elements (row je, column ie; damage.csv's rows in
       order): ``bottom`` and ``top`` — Σ n/N at the bottom face (bottom-up) and the top face
-      (top-down) — and ``x``, ``y``, the element centres;
+      (top-down) —, ``x``, ``y``, the element centres, and ``counted`` (bool: the elements
+      the governing places, the cracking and a design take; False in the end panels of a lane
+      the model cuts, ``[traffic] ends``);
     - ``passes``: :class:`Records`, one per case (a group at a level, at a lateral position, in
       a climate bin), with passes.csv's columns — ``group``, ``load``, ``offset``,
       ``difference`` (None without ``[climate]``), ``repetitions``, ``outcome``, ``solves``,
@@ -64,7 +66,7 @@ class Damage:
       ``total``, ``at_reliability`` in %; None for the other relations), ``erosion`` (the
       PCA's: ``k``, ``c1``, ``c2``, ``corners`` — each panel corner's ``panel``, ``x``, ``y``,
       ``thickness``, ``deflection``, ``damage`` and ``counted`` (false at the plate's ends
-      on a plate with transverse joints, unless ``erosion_ends``) — and ``governing``, the
+      on a plate with transverse joints, unless ``[traffic] ends = "free"``) — and ``governing``, the
       index of the largest counted corner; None for the other relations), ``erosion_note`` (why a PCA run has none),
       ``complete``,
       ``missing`` (the passes that did not converge, by label), ``solves``, ``interpolated``,
@@ -86,6 +88,8 @@ class Damage:
         for name in ARRAYS:
             a = np.frombuffer(maps[name], dtype="<f8").copy()
             setattr(self, name, a.reshape(shape) if a.size == shape[0] * shape[1] else a)
+        c = np.frombuffer(maps["counted"], dtype=np.uint8).astype(bool)
+        self.counted: np.ndarray = c.reshape(shape) if c.size == shape[0] * shape[1] else c
         self.model: str = doc.get("model", "")
         self.complete: bool = bool(doc.get("complete"))
         self.missing: List[str] = list(doc.get("missing", []))
