@@ -557,6 +557,19 @@ fn the_end_panels_of_a_cut_lane_do_not_count() {
     for p in &cut.passes {
         assert!(p.bottom.x.abs() < 2.25 && p.top.x.abs() < 2.25);
     }
+    // damage.csv says which elements count; the summary and the page say the ends do not.
+    let dir = tempfile::tempdir().expect("tempdir");
+    liftoff::output::damage::write_damage(dir.path(), &cut, "lane").expect("files");
+    let csv = std::fs::read_to_string(dir.path().join("damage.csv")).expect("csv");
+    let column: Vec<bool> = csv.lines().skip(1).map(|l| l.ends_with(",1")).collect();
+    assert_eq!(column, cut.counted);
+    let table = liftoff::output::damage::damage_table("lane", &cut, None);
+    assert!(table.contains("the end panels, where the model cuts a lane that goes on, not counted"));
+    let page = liftoff::output::report::write_report(dir.path(), None).expect("report");
+    let html = std::fs::read_to_string(page).expect("page");
+    assert!(html.contains(
+        "The end panels, where the model cuts a lane that goes on, are mapped but not counted"
+    ));
     // One transverse joint: no inner panel, every element counts.
     let two = run(&slab(TWO_BINS).replace(
         "[[load]]\nkind = \"axle\"",

@@ -9,10 +9,10 @@
 //! level (and the highest, when the middle may be interpolated) starts from its own answers at
 //! its last positions — extrapolated where that read the last position's contact set better
 //! than the answer before it (the lifted region moves with the load), by the rule `critical`'s
-//! runs follow ([`super::warm`]) — and from the factor its last solve ended with; every other level starts from the level below it at the
-//! same position — its pressures and, on Winkler soil with the penalty method, its factor
-//! ([`crate::solve::Carry`]), whose springs differ from its own at few points, so its steps are
-//! low-rank updates rather than factorisations. The answers do not depend on the starts (each
+//! runs follow ([`super::warm`]) — and from the factor its last solve ended with; every other
+//! level starts from the level below it at the same position — its pressures and, on Winkler
+//! soil with the penalty method, its factor ([`crate::solve::Carry`]), whose springs differ from
+//! its own at few points, so its steps are low-rank updates rather than factorisations. The answers do not depend on the starts (each
 //! problem has one solution, and every step solves its own system exactly); only the cost does.
 //!
 //! **A pass is one cycle.** Each element and face takes one load cycle per pass, at the largest

@@ -114,6 +114,16 @@ pub(crate) fn read(l: &mut Listing) -> Result<Option<Part>> {
         if let Some(note) = v.get("erosion_note").and_then(Value::as_str) {
             let _ = writeln!(html, "<p>Erosion (PCA) not summed: {}.</p>", esc(note));
         }
+        // The end panels of a lane the model cuts (`[traffic] ends`): mapped, not counted.
+        let cut = v
+            .get("counted")
+            .and_then(Value::as_array)
+            .is_some_and(|c| c.iter().any(|b| b.as_bool() == Some(false)));
+        if cut {
+            html.push_str(
+                "<p>The end panels, where the model cuts a lane that goes on, are mapped but not counted: the governing places, the passes' peaks and the cracking are those between the first and the last transverse joint (<code>[traffic] ends = \"free\"</code> counts them; damage.csv's <code>counted</code>).</p>\n",
+            );
+        }
         if let Some(c) = v.get("cracking").filter(|c| !c.is_null()) {
             let _ = writeln!(
                 html,
