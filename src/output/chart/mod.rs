@@ -155,14 +155,48 @@ fn caption_size(title: &str, width: u32) -> u32 {
     (0.92 * f64::from(width) / (0.56 * chars)).clamp(10.0, 24.0) as u32
 }
 
-/// Fill `root` white, write `title` across its top and return the area below the title.
+/// Fill `root` white, write `title` across its top and return the area below the title. A
+/// title that would shrink below 16 px on one line takes two ([`title_lines`]), each at the
+/// size that fits it (at most 20 px).
 fn titled<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     title: &str,
 ) -> DrawResult<DrawingArea<DB, Shift>> {
     root.fill(&WHITE).map_err(txt)?;
-    root.titled(title, (FONT, caption_size(title, root.dim_in_pixel().0)))
-        .map_err(txt)
+    let width = root.dim_in_pixel().0;
+    let size = caption_size(title, width);
+    let Some((first, second)) = title_lines(title).filter(|_| size < 16) else {
+        return root.titled(title, (FONT, size)).map_err(txt);
+    };
+    let size = caption_size(first, width)
+        .min(caption_size(second, width))
+        .min(20);
+    let line = (f64::from(size) * 1.3).round() as i32;
+    let style = (FONT, size)
+        .into_font()
+        .color(&BLACK)
+        .pos(Pos::new(HPos::Center, VPos::Top));
+    let centre = i32::try_from(width / 2).unwrap_or(0);
+    for (k, text) in [first, second].into_iter().enumerate() {
+        let top = 8 + line * i32::try_from(k).unwrap_or(0);
+        root.draw(&Text::new(text, (centre, top), style.clone()))
+            .map_err(txt)?;
+    }
+    Ok(root.split_vertically(14 + 2 * line).1)
+}
+
+/// A long title as two lines: at its last " — " (the scene's title, then what the chart
+/// shows), else at the space nearest its middle; None for a title of one word.
+fn title_lines(title: &str) -> Option<(&str, &str)> {
+    if let Some(i) = title.rfind(" — ") {
+        return Some((&title[..i], &title[i + " — ".len()..]));
+    }
+    let middle = title.len() / 2;
+    let i = (title.char_indices())
+        .filter(|&(_, c)| c == ' ')
+        .map(|(i, _)| i)
+        .min_by_key(|&i| i.abs_diff(middle))?;
+    Some((&title[..i], &title[i + 1..]))
 }
 
 /// Width of `text` in the embedded font at `size` px (estimated if the font fails).
@@ -236,6 +270,39 @@ impl TextBox<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn long_titles_break_after_the_scenes_title() {
+        let t = "Jointed pavement lane: 20 years of single axles — bottom-up damage (mepdg)";
+        assert_eq!(
+            title_lines(t),
+            Some((
+                "Jointed pavement lane: 20 years of single axles",
+                "bottom-up damage (mepdg)"
+            ))
+        );
+        assert_eq!(title_lines("one two three"), Some(("one two", "three")));
+        assert_eq!(title_lines("single"), None);
+        // Drawn: both lines in the SVG, larger than one line would be.
+        ensure_font(Path::new("test")).expect("font");
+        let mut svg = String::new();
+        {
+            let root = SVGBackend::with_string(&mut svg, (900, 600)).into_drawing_area();
+            let long = format!("{t}, largest 2.18; end panels not counted");
+            titled(&root, &long).expect("title");
+        }
+        // Each line its own text element.
+        let texts: Vec<&str> = svg
+            .split("</text>")
+            .filter_map(|t| t.rsplit('>').next())
+            .collect();
+        let texts: Vec<&str> = texts.iter().map(|t| t.trim()).collect();
+        assert!(
+            texts.contains(&"Jointed pavement lane: 20 years of single axles"),
+            "{svg}"
+        );
+        assert!(texts.contains(&"bottom-up damage (mepdg), largest 2.18; end panels not counted"));
+    }
 
     #[test]
     fn caption_size_shrinks_long_titles_within_bounds() {
