@@ -351,6 +351,17 @@ fn a_us_plan_is_its_si_twin() {
             "modulus_of_rupture = 4.5e6",
             &format!("modulus_of_rupture = {}", 4.5e6 / psi),
         );
+    // The twin does not warn; its level typed in newtons (80 000 "lbf", 4.45 times the axle's
+    // own 17 985 lbf) does, naming the slip.
+    assert!(Problem::from_toml(&us).expect("scene").warnings.is_empty());
+    let newtons = us.replace(&format!("levels = [{}]", 80e3 / LBF), "levels = [80e3]");
+    let warnings = Problem::from_toml(&newtons).expect("scene").warnings;
+    assert!(
+        warnings.iter().any(|w| w
+            .starts_with("traffic.group[0].levels: a level of 80000 lbf is 4.45× `single`'s own load of 17985 lbf")
+            && w.contains("newtons typed where pounds were meant")),
+        "{warnings:?}"
+    );
     let (a, b) = (run(&us), run(&si));
     same_maps(&a, &b);
     let r = a.reported();

@@ -227,6 +227,27 @@ fn unit_slips_warn_and_still_solve() {
     )
     .expect("example");
     assert!(bundled.warnings.is_empty(), "{:?}", bundled.warnings);
+    // A traffic group's levels typed in kN where N was meant (a thousandth of the axle's own
+    // 80 kN); newtons in a US scene: `tests/damage.rs`, `a_us_plan_is_its_si_twin`.
+    let damage = liftoff::examples::SCENES
+        .iter()
+        .find(|(n, _, _)| *n == "pavement-damage")
+        .map(|(_, _, t)| *t)
+        .expect("bundled");
+    assert!(Problem::from_toml(damage)
+        .expect("scene")
+        .warnings
+        .is_empty());
+    let kn = damage.replace("levels = [60e3, 80e3, 100e3]", "levels = [60, 80, 100]");
+    let p = Problem::from_toml(&kn).expect("scene");
+    assert!(
+        p.warnings.iter().any(|w| w.starts_with(
+            "traffic.group[0].levels: a level of 60 N is 0.00× `single`'s own load of 80000 N"
+        ) && w.contains("kN typed where N was meant")),
+        "{:?}",
+        p.warnings
+    );
+    analyse(&p).expect("a light axle still solves");
 }
 
 /// Two doweled slabs in US units, unbonded, a wheel beside the joint and the slabs curled up at

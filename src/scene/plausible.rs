@@ -10,9 +10,13 @@
 //!   Fig. 3.3; PCA 1984, Table 1): typed in pci or MN/m³;
 //! - a plate thicker than a fifth of its shorter side, or a side longer than 1 km: lengths typed
 //!   in mm (or, in a US scene, in feet where inches were meant — the reverse slip reads as a
-//!   very thin plate and is the first rule's).
+//!   very thin plate and is the first rule's);
+//! - a traffic group's load level more than three times its axle's or gear's own load, or less
+//!   than a twentieth of it ([`traffic`]): newtons typed in a US scene (4.45×), kN or kips typed
+//!   where N or lbf were meant — an overloaded axle is rarely twice its legal load.
 
 use super::spec::SceneFile;
+use crate::damage::plan::DamagePlan;
 use crate::foundation::soil::KeyValue;
 use crate::model::Model;
 use crate::units::{Quantity, UnitSystem};
@@ -88,6 +92,44 @@ pub fn warnings(file: &SceneFile, model: &Model) -> Vec<String> {
             } else {
                 "mils"
             },
+        ));
+    }
+    out
+}
+
+/// The warnings of a damage scene's traffic: each group's load levels against its axle's or
+/// gear's own load (the sum of its wheels' loads), worded in the file's unit system.
+pub fn traffic(plan: &DamagePlan, model: &Model, system: UnitSystem) -> Vec<String> {
+    let force = |si: f64| {
+        format!(
+            "{:.0} {}",
+            Quantity::Force.from_si(system, si),
+            Quantity::Force.unit(system)
+        )
+    };
+    let mut out = Vec::new();
+    for (g, group) in plan.groups.iter().enumerate() {
+        let Some(vehicle) = model.vehicles.get(group.vehicle) else {
+            continue;
+        };
+        let own: f64 = vehicle.wheels.iter().map(|w| w.force).sum();
+        let Some(level) = (group.levels.iter())
+            .map(|l| l.load)
+            .find(|&l| own > 0.0 && !(own / 20.0..=3.0 * own).contains(&l))
+        else {
+            continue;
+        };
+        out.push(format!(
+            "traffic.group[{g}].levels: a level of {} is {:.2}× `{}`'s own load of {}: the levels are the group's total load in {}{}",
+            force(level),
+            level / own,
+            group.load,
+            force(own),
+            Quantity::Force.unit(system),
+            match system {
+                UnitSystem::Us => " (newtons typed where pounds were meant read 4.45 times too heavy)",
+                UnitSystem::Si => " (kN typed where N was meant read a thousand times too light)",
+            }
         ));
     }
     out

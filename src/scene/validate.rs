@@ -567,8 +567,11 @@ pub fn problem(file: &SceneFile) -> Result<Problem> {
             "voids need unbonded contact (solver.contact = \"unbonded\"): bonded contact would glue the plate to the lowered surface",
         ));
     }
-    let warnings = super::plausible::warnings(file, &model);
+    let mut warnings = super::plausible::warnings(file, &model);
     let damage = damage_plan(file, &model, !combinations.is_empty(), &method)?;
+    if let Some(plan) = &damage {
+        warnings.extend(super::plausible::traffic(plan, &model, file.units));
+    }
     Ok(Problem {
         model,
         combinations,
