@@ -576,6 +576,14 @@ fn the_end_panels_of_a_cut_lane_do_not_count() {
     assert_eq!(column, cut.counted);
     let table = liftoff::output::damage::damage_table("lane", &cut, None);
     assert!(table.contains("the end panels, where the model cuts a lane that goes on, not counted"));
+    // The maps hatch the end panels, with a legend entry; a free lane's do not.
+    let legend = "not counted: the model cuts the lane here";
+    let svg = std::fs::read_to_string(dir.path().join("damage-bottom.svg")).expect("svg");
+    assert!(svg.contains(legend));
+    let open = tempfile::tempdir().expect("tempdir");
+    liftoff::output::damage::write_damage(open.path(), &free, "lane").expect("files");
+    let free_svg = std::fs::read_to_string(open.path().join("damage-bottom.svg")).expect("svg");
+    assert!(!free_svg.contains(legend));
     let page = liftoff::output::report::write_report(dir.path(), None).expect("report");
     let html = std::fs::read_to_string(page).expect("page");
     assert!(html.contains(

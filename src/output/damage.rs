@@ -199,6 +199,7 @@ pub fn write_damage(dir: &Path, d: &Damage, title: &str) -> Result<Vec<PathBuf>>
                 })
                 .into_iter()
                 .collect(),
+            cut: cut_parts(d),
             ..Overlay::default()
         };
         let svg = st.path(&format!("damage-{face}.svg"));
@@ -286,6 +287,39 @@ pub fn write_damage(dir: &Path, d: &Damage, title: &str) -> Result<Vec<PathBuf>>
         )?;
     }
     st.commit()
+}
+
+/// The parts of the maps that are drawn but not counted (the end panels of a lane the model
+/// cuts, `Damage::counted`), as opposite corners in the field's coordinates; empty when every
+/// element counts.
+fn cut_parts(d: &Damage) -> Vec<[(f64, f64); 2]> {
+    let extent = |v: &[f64]| {
+        v.iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+                (a.min(x), b.max(x))
+            })
+    };
+    let (x0, x1) = extent(&d.field.x);
+    let (y0, y1) = extent(&d.field.y);
+    let counted: Vec<f64> = (d.x.iter().zip(&d.counted))
+        .filter(|(_, c)| **c)
+        .map(|(x, _)| *x)
+        .collect();
+    if counted.len() == d.x.len() || counted.is_empty() || !(x1 > x0 && y1 > y0) {
+        return Vec::new();
+    }
+    // Element centres are half an element in from the panels' edges.
+    let half = 0.5 * (x1 - x0) / d.elements[0].max(1) as f64;
+    let (lo, hi) = extent(&counted);
+    let (lo, hi) = (lo - half, hi + half);
+    let mut out = Vec::new();
+    if lo > x0 + 1e-9 * (x1 - x0) {
+        out.push([(x0, y0), (lo, y1)]);
+    }
+    if hi < x1 - 1e-9 * (x1 - x0) {
+        out.push([(hi, y0), (x1, y1)]);
+    }
+    out
 }
 
 /// What the command line prints.

@@ -34,6 +34,9 @@ pub struct Overlay {
     pub dots: Vec<(f64, f64)>,
     /// Marked points, each with its legend text: a critical search's governing position.
     pub marks: Vec<((f64, f64), String)>,
+    /// Parts of the plate mapped but not counted — the end panels of a lane the model cuts
+    /// (`liftoff damage`, `[traffic] ends`) — as opposite corners: hatched grey.
+    pub cut: Vec<[(f64, f64); 2]>,
 }
 
 impl Overlay {
@@ -68,6 +71,7 @@ impl Overlay {
                 .collect(),
             dots: Vec::new(),
             marks: Vec::new(),
+            cut: Vec::new(),
         }
     }
 
@@ -80,6 +84,7 @@ impl Overlay {
             && self.prints.is_empty()
             && self.dots.is_empty()
             && self.marks.is_empty()
+            && self.cut.is_empty()
     }
 }
 
@@ -109,6 +114,8 @@ pub(super) enum Swatch {
     Dot,
     /// A marked (critical) position: a ringed dot.
     Mark,
+    /// A part mapped but not counted: grey hatch.
+    Cut,
 }
 
 /// Width of a legend swatch, pixels.
@@ -178,6 +185,19 @@ impl Swatch {
                 .map_err(txt)
             }
             Swatch::Zone => area.draw(&dotted(rect)).map_err(txt),
+            Swatch::Cut => {
+                for k in 0..3 {
+                    let x0 = x + 2 + 8 * k;
+                    for (colour, width) in [(style::HATCH_HALO, 3), (style::CUT.to_rgba(), 1)] {
+                        area.draw(&PathElement::new(
+                            [(x0, y + 7), (x0 + 12, y - 7)],
+                            ShapeStyle::from(colour).stroke_width(width),
+                        ))
+                        .map_err(txt)?;
+                    }
+                }
+                Ok(())
+            }
             Swatch::Print => area
                 .draw(&PathElement::new(rect, style::PRINT.stroke_width(2)))
                 .map_err(txt),
@@ -397,14 +417,36 @@ pub(super) fn draw_exceedance<DB: DrawingBackend>(
     Ok(true)
 }
 
-/// Voids (dashed), zones (dotted) and line loads (thick) of `overlay`, clamped to the plate
-/// (x0, x1) × (y0, y1).
+/// Voids (dashed), zones (dotted), line loads (thick) and the parts not counted (grey hatch)
+/// of `overlay`, clamped to the plate (x0, x1) × (y0, y1).
 pub(super) fn draw_features<DB: DrawingBackend>(
     chart: &mut Plan<'_, DB>,
     overlay: &Overlay,
     xr: (f64, f64),
     yr: (f64, f64),
 ) -> DrawResult<()> {
+    if !overlay.cut.is_empty() {
+        // Hatch spacing in plate units: HATCH_PX pixels along x (equal scales).
+        let pa = chart.backend_coord(&(xr.0, yr.0)).0;
+        let pb = chart.backend_coord(&(xr.1, yr.0)).0;
+        let spacing = HATCH_PX * (xr.1 - xr.0).abs() / f64::from((pb - pa).abs().max(1));
+        let pieces: Vec<Vec<Point>> = (overlay.cut.iter())
+            .map(|r| {
+                let [(a, b), (c, d)] = r.map(|p| clamp(p, xr, yr));
+                vec![(a, b), (c, b), (c, d), (a, d)]
+            })
+            .collect();
+        let lines = hatch(&pieces, spacing);
+        for (colour, width) in [(style::HATCH_HALO, 3), (style::CUT.to_rgba(), 1)] {
+            chart
+                .draw_series(
+                    (lines.iter()).map(|s| {
+                        PathElement::new(*s, ShapeStyle::from(colour).stroke_width(width))
+                    }),
+                )
+                .map_err(txt)?;
+        }
+    }
     chart
         .draw_series(overlay.zones.iter().map(|z| dotted(rectangle(z, xr, yr))))
         .map_err(txt)?;

@@ -433,6 +433,11 @@ impl ColourMap<'_> {
             (!o.lines.is_empty(), Swatch::LineLoad, "line load"),
             (!o.prints.is_empty(), Swatch::Print, "tire print"),
             (!o.dots.is_empty(), Swatch::Dot, "searched position"),
+            (
+                !o.cut.is_empty(),
+                Swatch::Cut,
+                "not counted: the model cuts the lane here",
+            ),
         ] {
             if present {
                 out.push((swatch, text.to_string()));

@@ -145,6 +145,8 @@ pub(crate) const HATCH_HALO: RGBAColor = RGBAColor(255, 255, 255, 0.55);
 pub(crate) const VOID: RGBColor = RGBColor(40, 40, 40);
 /// Outline of soft or stiff foundation zones (dotted).
 pub(crate) const ZONE: RGBColor = RGBColor(20, 70, 160);
+/// The hatch over parts of a map that are drawn but not counted (a cut lane's end panels).
+pub(crate) const CUT: RGBColor = RGBColor(90, 90, 90);
 /// Line loads.
 pub(crate) const LINE_LOAD: RGBColor = RGBColor(25, 25, 90);
 /// Tire prints of axles and gears: thin outlines.
