@@ -574,6 +574,11 @@ fn the_end_panels_of_a_cut_lane_do_not_count() {
     let csv = std::fs::read_to_string(dir.path().join("damage.csv")).expect("csv");
     let column: Vec<bool> = csv.lines().skip(1).map(|l| l.ends_with(",1")).collect();
     assert_eq!(column, cut.counted);
+    let vtu = std::fs::read_to_string(dir.path().join("damage.vtu")).expect("vtu");
+    assert!(
+        vtu.contains("Name=\"counted\""),
+        "the VTU's cell data has `counted`"
+    );
     let table = liftoff::output::damage::damage_table("lane", &cut, None);
     assert!(table.contains("the end panels, where the model cuts a lane that goes on, not counted"));
     // The maps hatch the end panels, with a legend entry; a free lane's do not.

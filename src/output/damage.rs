@@ -165,10 +165,18 @@ pub fn write_damage(dir: &Path, d: &Damage, title: &str) -> Result<Vec<PathBuf>>
     st.write_text("damage.json", &json)?;
     // The damage map as ParaView cell data on the plate's grid (in the scene's units, as
     // plate.vtu): no point data, since no one solve's deflection belongs to a sum over passes.
+    // `counted` (1 or 0) thresholds away the end panels of a lane the model cuts.
+    let counted: Vec<f64> = (0..d.x.len())
+        .map(|i| f64::from(u8::from(d.counted.get(i).is_none_or(|c| *c))))
+        .collect();
     super::vtk::write_cell_vtu(
         &st.path("damage.vtu"),
         &d.field.in_units(d.units),
-        &[("damage_bottom", &d.bottom), ("damage_top", &d.top)],
+        &[
+            ("damage_bottom", &d.bottom),
+            ("damage_top", &d.top),
+            ("counted", &counted),
+        ],
     )?;
     let units = units_of(d);
     let length = units.length();
