@@ -394,6 +394,7 @@ fn the_design_brackets_the_least_thickness() {
     };
     let d = design(&file, &options, &Monitor::NONE).expect("design");
     assert!(d.complete);
+    assert!(!d.cut, "a slab without transverse joints counts everything");
     assert_eq!(d.measure, "damage");
     let curve: Vec<f64> = d
         .points
@@ -593,6 +594,22 @@ fn the_end_panels_of_a_cut_lane_do_not_count() {
     let html = std::fs::read_to_string(page).expect("page");
     assert!(html.contains(
         "The end panels, where the model cuts a lane that goes on, are mapped but not counted"
+    ));
+    // A design of the cut lane says the end panels were left out (two runs: the thinnest meets
+    // the target).
+    let file = liftoff::scene::SceneFile::parse(&lane).expect("scene");
+    let options = liftoff::study::DesignOptions {
+        from: 0.40,
+        to: 0.42,
+        points: 2,
+        target: None,
+        tolerance: 0.005,
+    };
+    let d = liftoff::study::design(&file, &options, &Monitor::NONE).expect("design");
+    assert!(d.cut);
+    let table = liftoff::output::damage::design_table("lane", &d, None);
+    assert!(table.contains(
+        "note: the end panels, where the model cuts a lane that goes on, are not counted"
     ));
     // One transverse joint: no inner panel, every element counts.
     let two = run(&slab(TWO_BINS).replace(

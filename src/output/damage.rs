@@ -618,6 +618,12 @@ pub fn design_table(
             "  note: the design curve does not fall everywhere as the slab thickens: the least thickness is the first that meets the target along the curve"
         );
     }
+    if d.cut {
+        let _ = writeln!(
+            s,
+            "  note: the end panels, where the model cuts a lane that goes on, are not counted ([traffic] ends = \"free\" counts them)"
+        );
+    }
     let _ = writeln!(s, "  time: {:.2} s", d.total_s);
     if let Some((k, dir)) = files {
         let _ = writeln!(

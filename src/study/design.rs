@@ -147,6 +147,9 @@ pub struct Design {
     pub monotone: bool,
     /// Whether every run was complete.
     pub complete: bool,
+    /// Whether the runs left parts of the plate out of the sums: the end panels (and with
+    /// `pca` the end corners) of a lane the model cuts (`[traffic] ends`).
+    pub cut: bool,
     /// The scene's unit system (None: dimensionless); thicknesses above are SI.
     pub units: Option<crate::units::UnitSystem>,
     /// Seconds of the whole search.
@@ -272,6 +275,8 @@ pub fn design(file: &SceneFile, options: &DesignOptions, monitor: &Monitor<'_>) 
     let step = (options.to - options.from) / (options.points - 1) as f64;
     let cases = Cases::new(monitor, options.points + halvings(step, options.tolerance));
     let inner = cases.inner();
+    // Whether a run left the end panels of a cut lane out (the same at every thickness).
+    let cut = std::cell::Cell::new(false);
     let run =
         |h: f64, curve: bool| -> Result<(DesignPoint, &'static str, Option<f64>, &'static str)> {
             let mut f = file.clone();
@@ -289,6 +294,9 @@ pub fn design(file: &SceneFile, options: &DesignOptions, monitor: &Monitor<'_>) 
             let problem = f.validate()?;
             let t = std::time::Instant::now();
             let d = super::damage(&problem, &inner)?;
+            let left_out = d.counted.iter().any(|c| !c)
+                || d.erosion.as_ref().is_some_and(|e| e.uncounted().is_some());
+            cut.set(cut.get() || left_out);
             let erosion = d.erosion.as_ref().map(|e| e.damage());
             let (measure, value) = match d.cracking {
                 Some(c) => ("cracking", c.at_reliability.unwrap_or(c.total)),
@@ -359,6 +367,7 @@ pub fn design(file: &SceneFile, options: &DesignOptions, monitor: &Monitor<'_>) 
         measure: meta.0,
         target: meta.1,
         complete: points.iter().all(|p| p.complete),
+        cut: cut.get(),
         points,
         thickness,
         bracket,
