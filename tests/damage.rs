@@ -256,6 +256,38 @@ fn day_curling_and_edge_loading_govern_at_mid_slab_on_the_edge() {
     assert!(g.x.abs() <= 4.5 / 8.0, "governing at x = {}", g.x);
 }
 
+/// Night curling (top 12 K cooler) on the lane of three doweled slabs: the axle's passes load
+/// the curled-up ends of the middle slab in turn, which then bears on its middle like a beam
+/// on a support, and its top-down damage peaks in its middle half (|x| < 1.125 m of a 4.5 m
+/// slab), between the joints — the MEPDG's top-down mechanism, loads near the transverse joints
+/// and tension at the top between them (NCHRP 1-37A, Part 3, Chapter 4). The cut's free ends
+/// take far more (a cantilever ~1.5 m long) and, not counted, do not govern.
+#[test]
+fn night_curling_puts_top_down_damage_between_the_joints() {
+    let lane = liftoff::examples::SCENES
+        .iter()
+        .find(|(n, _, _)| *n == "pavement-damage")
+        .map(|(_, _, t)| t.replace("reliability = 0.9", "reliability = 0.9\nsteps = 31"))
+        .expect("bundled");
+    let from = lane.find("[climate]").expect("climate");
+    let to = lane.find("[damage]").expect("damage");
+    let night = format!(
+        "{}[climate]\n[[climate.bin]]\ndifference = -12.0\nshare = 1.0\n\n{}",
+        &lane[..from],
+        &lane[to..]
+    );
+    let d = run(&night);
+    let g = d.governing_top;
+    assert!(g.damage > 0.0);
+    assert!(
+        g.x.abs() < 1.125,
+        "top-down in the middle slab's middle half: x = {}",
+        g.x
+    );
+    let (end, at_end) = d.uncounted(&d.top).expect("end panels");
+    assert!(at_end > g.damage && d.x[end].abs() > 2.25);
+}
+
 /// The lane's outer edge at a joint (`edge_at`, a tied shoulder's, say) instead of the plate's
 /// edge: every position of a pass moves across by the edge's distance from the plate's edge,
 /// exactly (1e-12 m: the same sums of the same numbers), the wander's offset now counted from
