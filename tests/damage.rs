@@ -643,6 +643,14 @@ fn the_end_panels_of_a_cut_lane_do_not_count() {
     assert!(table.contains(
         "note: the end panels, where the model cuts a lane that goes on, are not counted"
     ));
+    let out = tempfile::tempdir().expect("tempdir");
+    liftoff::output::damage::write_design(out.path(), &d, "lane").expect("files");
+    let page = liftoff::output::report::write_report(out.path(), None).expect("report");
+    let html = std::fs::read_to_string(page).expect("page");
+    assert!(
+        html.contains("are not counted in these runs"),
+        "the design page says so"
+    );
     // One transverse joint: no inner panel, every element counts.
     let two = run(&slab(TWO_BINS).replace(
         "[[load]]\nkind = \"axle\"",

@@ -244,6 +244,11 @@ pub(crate) fn read(l: &mut Listing) -> Result<Option<Part>> {
                 None => "No thickness in the range meets the target.".into(),
             }
         );
+        if v.get("cut").and_then(Value::as_bool) == Some(true) {
+            html.push_str(
+                "<p>The end panels, where the model cuts a lane that goes on, are not counted in these runs (<code>[traffic] ends = \"free\"</code> counts them).</p>\n",
+            );
+        }
         let rows: Vec<Vec<String>> = v
             .get("points")
             .and_then(Value::as_array)
