@@ -3,9 +3,12 @@
 //! subgrade modulus), the group's vehicle at the level's load placed at every position along
 //! the lane — and a case in words for the progress bar and the list of missing passes.
 
+use super::erosion::Corners;
 use crate::damage::plan::{Bin, DamagePlan};
+use crate::damage::relations::DamageModel;
 use crate::error::{Error, Result};
 use crate::model::{Load, Model};
+use crate::scene::Problem;
 
 /// A case in words, for the progress bar and the list of missing passes.
 pub(super) fn label(plan: &DamagePlan, bin: &Bin) -> String {
@@ -124,4 +127,64 @@ pub(super) fn pass_models(base: &Model, plan: &DamagePlan, bin: &Bin) -> Result<
             Ok(m)
         })
         .collect()
+}
+
+/// A damage run's plan checked, its cases, their passes' models and its families.
+pub(super) struct Setup<'a> {
+    pub(super) plan: &'a DamagePlan,
+    pub(super) bins: Vec<Bin>,
+    pub(super) passes: Vec<Vec<Model>>,
+    /// The levels of one group at one lateral position in one climate bin, by load.
+    pub(super) families: Vec<Vec<usize>>,
+    /// The PCA's erosion: the corners where it is summed, or why it is not (None: another
+    /// relation).
+    pub(super) erosion: Option<std::result::Result<Corners, String>>,
+}
+
+impl<'a> Setup<'a> {
+    pub(super) fn of(problem: &'a Problem) -> Result<Self> {
+        let plan = problem.damage.as_ref().ok_or_else(|| {
+            Error::invalid(
+                "traffic",
+                "missing: `liftoff damage` needs the scene's [traffic] and [damage] (and optionally [climate])",
+            )
+        })?;
+        if problem.model.physical.is_none() {
+            return Err(Error::invalid(
+                "plate",
+                "a damage run needs a physical scene ([plate] and [foundation]): stresses in Pa against the modulus of rupture",
+            ));
+        }
+        let bins = plan.bins();
+        let passes: Vec<Vec<Model>> = bins
+            .iter()
+            .map(|b| pass_models(&problem.model, plan, b))
+            .collect::<Result<_>>()?;
+        // The families: their load vectors differ only by the level's multiple of the group's.
+        let mut families: Vec<Vec<usize>> = Vec::new();
+        for (i, b) in bins.iter().enumerate() {
+            match families.iter_mut().find(|f| {
+                let o = &bins[f[0]];
+                (o.group, o.lateral, o.climate) == (b.group, b.lateral, b.climate)
+            }) {
+                Some(f) => f.push(i),
+                None => families.push(vec![i]),
+            }
+        }
+        let level = |i: usize| plan.groups[bins[i].group].levels[bins[i].level].load;
+        for f in &mut families {
+            f.sort_by(|&a, &b| level(a).total_cmp(&level(b)));
+        }
+        let erosion = match plan.model {
+            DamageModel::Pca(m) => Some(Corners::of(&problem.model, m, plan.cut)),
+            _ => None,
+        };
+        Ok(Self {
+            plan,
+            bins,
+            passes,
+            families,
+            erosion,
+        })
+    }
 }

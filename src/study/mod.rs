@@ -23,6 +23,7 @@ mod damage;
 mod damage_part;
 mod damage_pass;
 mod damage_result;
+mod damage_sum;
 mod design;
 mod eps_sweep;
 mod erosion;
