@@ -38,6 +38,16 @@ contact = "unbonded"
     )
 }
 
+/// `example:pavement-damage` — a lane of three doweled 4.5 m slabs, joints at x = ±2.25 m —
+/// with 31 positions a pass (one every 0.44 m: the tests' places, at a sixth of the cost).
+fn lane() -> String {
+    liftoff::examples::SCENES
+        .iter()
+        .find(|(n, _, _)| *n == "pavement-damage")
+        .map(|(_, _, t)| t.replace("reliability = 0.9", "reliability = 0.9\nsteps = 31"))
+        .expect("bundled")
+}
+
 /// One group at the axle's own 80 kN, one lateral position, two climate bins, three positions a
 /// pass: two passes to sum by hand.
 const TWO_BINS: &str = r#"[traffic]
@@ -264,11 +274,7 @@ fn day_curling_and_edge_loading_govern_at_mid_slab_on_the_edge() {
 /// take far more (a cantilever ~1.5 m long) and, not counted, do not govern.
 #[test]
 fn night_curling_puts_top_down_damage_between_the_joints() {
-    let lane = liftoff::examples::SCENES
-        .iter()
-        .find(|(n, _, _)| *n == "pavement-damage")
-        .map(|(_, _, t)| t.replace("reliability = 0.9", "reliability = 0.9\nsteps = 31"))
-        .expect("bundled");
+    let lane = lane();
     let from = lane.find("[climate]").expect("climate");
     let to = lane.find("[damage]").expect("damage");
     let night = format!(
@@ -545,11 +551,7 @@ fn a_face_no_pass_damages_has_no_governing_place() {
 /// no inner panel: every element counts.
 #[test]
 fn the_end_panels_of_a_cut_lane_do_not_count() {
-    let lane = liftoff::examples::SCENES
-        .iter()
-        .find(|(n, _, _)| *n == "pavement-damage")
-        .map(|(_, _, t)| t.replace("reliability = 0.9", "reliability = 0.9\nsteps = 31"))
-        .expect("bundled");
+    let lane = lane();
     let cut = run(&lane);
     let free = run(&lane.replace("growth = 0.02", "growth = 0.02\nends = \"free\""));
     assert_eq!(cut.bottom, free.bottom, "the maps do not depend on the key");
