@@ -10,6 +10,7 @@ mod common;
 mod active_set;
 mod architecture;
 mod backcalc_area_finite;
+mod backcalc_area_hall;
 mod backcalc_fit;
 mod backcalc_joint;
 mod backcalc_voids;
