@@ -290,17 +290,9 @@ pub(super) fn sum(problem: &Problem, setup: &Setup<'_>, parts: Vec<DamagePart>) 
 
 /// Which elements of the maps (centres `xs`, m) count in the governing places, the passes'
 /// peaks, the cracking and a design: on a lane cut at the plate's ends (`cut`,
-/// [`crate::damage::plan::TrafficSpec::ends`]) with two or more transverse joints, those
-/// between the first and the last joint — the end panels are the neighbours the inner ones
-/// need, their free ends no pavement's; otherwise every element. A plate with one transverse
-/// joint has no inner panel: every element counts.
+/// [`crate::damage::plan::TrafficSpec::ends`]) those between its first and last transverse
+/// joint ([`super::ends`]), otherwise every element.
 fn counted_elements(model: &Model, cut: bool, xs: &[f64]) -> Vec<bool> {
-    let l = model.physical.map_or(1.0, |p| p.half_length);
-    let lines = model.layout.lines(crate::layout::Axis::X);
-    let (lo, hi) = (lines.iter()).fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
-        (a.min(x * l), b.max(x * l))
-    });
-    xs.iter()
-        .map(|&x| !cut || lines.len() < 2 || (x > lo && x < hi))
-        .collect()
+    let span = super::ends::counted_span(model, cut);
+    xs.iter().map(|&x| super::ends::inside(span, x)).collect()
 }

@@ -25,6 +25,7 @@ mod damage_pass;
 mod damage_result;
 mod damage_sum;
 mod design;
+mod ends;
 mod eps_sweep;
 mod erosion;
 mod mirror;
@@ -43,6 +44,7 @@ pub use damage::{
 };
 pub use damage_part::DamagePart;
 pub use design::{design, Design, DesignOptions, DesignPoint};
+pub use ends::Ends;
 pub use eps_sweep::{eps_sweep, Sweep, SweepRow};
 pub use erosion::{Corner, CornerDamage, Erosion};
 pub use options::{ConstraintVariants, EpsSweepOptions, TradeoffOptions};
