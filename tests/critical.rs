@@ -5,7 +5,7 @@
 
 use liftoff::scene::Overrides;
 use liftoff::study::RunOutcome;
-use liftoff::study::{critical, CriticalOptions};
+use liftoff::study::{critical, CriticalOptions, Ends};
 
 use crate::common;
 
@@ -340,6 +340,8 @@ fn jointed_slabs_report_the_critical_joint_shear_and_dowel_force() {
         .positions
         .iter()
         .all(|p| p.outcome == RunOutcome::CONVERGED && p.joint_shear.is_some()));
+    // One transverse joint: no inner panel, the whole plate read ([`Ends`]).
+    assert!(c.read_x.is_none() && c.positions.iter().all(|p| p.end_top.is_none()));
     let best = |f: fn(&liftoff::study::Position) -> Option<f64>| {
         c.positions
             .iter()
@@ -431,7 +433,8 @@ fn coarse() -> Overrides {
 /// position): at every position of a 3 × 2 grid, in a combination with factors other than 1,
 /// the moved model's loads are the ones a scene with the axle written at that position makes
 /// (the same patches; pressures to round-off, since P is added up in another order), and the
-/// search's answers equal that scene solved alone, cold, to 1e-9 relative.
+/// search's answers equal that scene solved alone, cold, to 1e-9 relative. The search reads
+/// the whole plate (`Ends::Free`), as the scene's summary does.
 #[test]
 fn moved_loads_and_answers_equal_the_scene_written_at_that_position() {
     let text = heavy_pavement();
@@ -440,6 +443,7 @@ fn moved_loads_and_answers_equal_the_scene_written_at_that_position() {
         load: "axle".into(),
         grid: [3, 2],
         combination: Some("heavy".into()),
+        ends: Ends::Free,
         ..CriticalOptions::default()
     };
     let c = critical(&base, &options, &liftoff::Monitor::NONE).expect("search");
@@ -529,6 +533,115 @@ fn moved_loads_and_answers_equal_the_scene_written_at_that_position() {
             );
         }
     }
+}
+
+/// On the pavement — a lane of three slabs along x, its ends a cut — the search reads every
+/// position between the two transverse joints (x = ±2.25 m) by default: its stresses are the
+/// whole plate's where they peak inside, and the end panels' peaks are kept beside them. Checked
+/// against the same search reading the whole plate (`Ends::Free`; the same solves, so to the
+/// bit: the whole plate's σ₁ is the larger of the two parts'), and against the position of the
+/// largest top tension solved alone, whose elements inside the joints and nodes between them
+/// are read here by hand (1e-9: the search's warm start against a cold solve). At night the
+/// axle at the plate's end lifts that end as no axle on the road does: read whole, the top
+/// tension's critical position is that end.
+#[test]
+fn a_cut_lane_is_read_between_its_first_and_last_transverse_joint() {
+    let text = heavy_pavement();
+    let base = liftoff::load(&liftoff::Source::Toml(&text), &coarse()).expect("scene");
+    let options = CriticalOptions {
+        load: "axle".into(),
+        grid: [3, 2],
+        combination: Some("heavy".into()),
+        ..CriticalOptions::default()
+    };
+    let cut = critical(&base, &options, &liftoff::Monitor::NONE).expect("search");
+    let whole = CriticalOptions {
+        ends: Ends::Free,
+        ..options.clone()
+    };
+    let free = critical(&base, &whole, &liftoff::Monitor::NONE).expect("search");
+    let [lo, hi] = cut.read_x.expect("a cut lane");
+    assert!(
+        (lo + 2.25).abs() < 1e-12 && (hi - 2.25).abs() < 1e-12,
+        "{lo} … {hi}"
+    );
+    assert!(free.read_x.is_none() && free.end_top.is_none());
+    let inside = |x: f64| x > lo && x < hi;
+    for (p, q) in cut.positions.iter().zip(&free.positions) {
+        assert_eq!(p.outcome, RunOutcome::CONVERGED);
+        let (eb, et) = (
+            p.end_bottom.expect("end panels"),
+            p.end_top.expect("end panels"),
+        );
+        assert_eq!(q.bottom.to_bits(), p.bottom.max(eb).to_bits());
+        assert_eq!(q.top.to_bits(), p.top.max(et).to_bits());
+        assert!(inside(p.bottom_at[0]) && inside(p.top_at[0]), "{p:?}");
+        assert!(p.w_max <= q.w_max);
+        for (a, b) in [
+            (p.joint_shear, q.joint_shear),
+            (p.dowel_force, q.dowel_force),
+        ] {
+            assert!(a.expect("joints") <= b.expect("joints"));
+        }
+    }
+    // Read whole, the night's top tension peaks at the plate's cut end, the axle on it.
+    let (Some(i), Some(j)) = (cut.top, free.top) else {
+        panic!("no critical position");
+    };
+    assert!(
+        !inside(free.positions[j].top_at[0]) && free.positions[j].top > cut.positions[i].top,
+        "read whole {:?}, read inside {:?}",
+        free.positions[j],
+        cut.positions[i]
+    );
+    // The cut search's critical top position alone, read by hand.
+    let p = &cut.positions[i];
+    let written = text
+        .replace("x = 2.15 ", &format!("x = {} ", p.x))
+        .replace("y = -0.88 ", &format!("y = {} ", p.y));
+    let overrides = Overrides {
+        symmetry: Some(liftoff::model::SymmetryMode::None),
+        ..coarse()
+    };
+    let mut alone = liftoff::load(&liftoff::Source::Toml(&written), &overrides).expect("scene");
+    alone.combinations.retain(|c| c.name == "heavy");
+    alone.model = alone.combinations[0].model.clone();
+    let liftoff::Outcome::Combinations(runs) =
+        liftoff::run(&alone, &liftoff::Monitor::NONE).expect("solve")
+    else {
+        panic!("a scene with combinations");
+    };
+    let r = runs.runs[0].outcome.as_ref().expect("solved");
+    let e = &r.report.elements;
+    let peak = |s1: &[f64]| {
+        (0..s1.len())
+            .filter(|&k| inside(e.x[k]))
+            .map(|k| s1[k])
+            .fold(f64::NEG_INFINITY, f64::max)
+    };
+    let f = &r.report.field;
+    let w = (0..f.w.len())
+        .filter(|&n| f.x[n] >= lo - 1e-9 && f.x[n] <= hi + 1e-9)
+        .map(|n| f.w[n])
+        .fold(f64::NEG_INFINITY, f64::max);
+    for (name, search, by_hand) in [
+        ("bottom", p.bottom, peak(&e.bottom.s1)),
+        ("top", p.top, peak(&e.top.s1)),
+        ("w_max", p.w_max, w),
+    ] {
+        assert!(
+            (search - by_hand).abs() <= 1e-9 * by_hand.abs(),
+            "{name}: search {search} vs alone {by_hand}"
+        );
+    }
+    // The table says what was read and what was not.
+    let table = liftoff::output::critical::critical_table("pavement", &cut, None);
+    assert!(
+        table.contains("read between the transverse joints at x = -2.250 and 2.250 m")
+            && table.contains("end panels, top")
+            && table.contains("(not read)"),
+        "{table}"
+    );
 }
 
 /// The runs of warm starts are cut from the grid, not from the cores: the search on one thread

@@ -619,6 +619,31 @@ def test_critical_equals_the_cli_and_spreads_over_a_cluster(client, tmp_path):
         liftoff.critical(scene, "bus")
 
 
+def test_critical_reads_a_cut_lane_between_its_joints_as_the_cli_does(client):
+    # The bundled pavement: three slabs along x, transverse joints at x = ±2.25 m.
+    cut = liftoff.critical("example:pavement-3x3", "axle", grid=(5, 3), combination="axle")
+    r = cli("critical", "example:pavement-3x3", "--load", "axle", "--grid", "5,3",
+            "--combination", "axle", "--json")
+    assert r.returncode == 0, r.stderr
+    ref = json.loads(r.stdout)
+    assert cut.meta["read_x"] == ref["read_x"] == [-2.25, 2.25]
+    assert cut.meta["end_top"] == ref["end_top"]
+    whole = liftoff.critical("example:pavement-3x3", "axle", grid=(5, 3), combination="axle",
+                             ends="free")
+    assert "read_x" not in whole.meta and "end_top" not in whole.meta
+    for a, b in zip(cut, whole):
+        # The same solves read over a part of the plate and over all of it.
+        assert b["top"] == max(a["top"], a["end_top"]) and -2.25 < a["top_at"][0] < 2.25
+        assert b["bottom"] == max(a["bottom"], a["end_bottom"])
+    # Spread over a cluster, the end panels' largest is found among all the tasks' rows.
+    spread = liftoff.critical("example:pavement-3x3", "axle", grid=(5, 3), combination="axle",
+                              client=client)
+    assert spread.meta["end_top"] == cut.meta["end_top"]
+    assert spread.meta["end_bottom"] == cut.meta["end_bottom"]
+    with pytest.raises(liftoff.SceneError, match="ends must be"):
+        liftoff.critical("example:pavement-3x3", "axle", ends="open")
+
+
 def test_critical_takes_a_grid_per_panel_and_lines_as_the_cli_does(tmp_path):
     scene = tmp_path / "slab.toml"
     scene.write_text(SLAB_WITH_AXLE)

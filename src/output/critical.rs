@@ -20,7 +20,7 @@ fn csv(c: &Critical) -> String {
         self, Deflection, Force, ForcePerLength, Length, Number, Pressure,
     };
     let sys = c.units;
-    let columns: [(&str, Option<Measure>); 17] = [
+    let columns: [(&str, Option<Measure>); 19] = [
         ("x", Some(Length)),
         ("y", Some(Length)),
         ("heading", Some(Measure::Degrees)),
@@ -38,6 +38,8 @@ fn csv(c: &Critical) -> String {
         ("dowel_force", Some(Force)),
         ("time", None),
         ("mirror_of", None),
+        ("end_bottom", Some(Pressure)),
+        ("end_top", Some(Pressure)),
     ];
     let header: Vec<String> = columns
         .iter()
@@ -54,7 +56,7 @@ fn csv(c: &Critical) -> String {
     for p in &c.positions {
         let _ = writeln!(
             s,
-            "{},{},{},{},{},{:e},{},{},{:e},{},{},{:e},{},{},{},{},{}",
+            "{},{},{},{},{},{:e},{},{},{:e},{},{},{:e},{},{},{},{},{},{},{}",
             p.x,
             p.y,
             p.heading,
@@ -72,7 +74,10 @@ fn csv(c: &Critical) -> String {
             opt(p.dowel_force),
             p.time_s,
             // Empty where the position was solved itself.
-            p.mirror_of.map_or(String::new(), |k| k.to_string())
+            p.mirror_of.map_or(String::new(), |k| k.to_string()),
+            // Empty where the whole plate is read.
+            opt(p.end_bottom),
+            opt(p.end_top)
         );
     }
     s
@@ -280,6 +285,34 @@ pub fn critical_table(title: &str, c: &Critical, files: Option<(usize, &Path)>) 
     }
     for (what, i, value) in rows {
         let _ = writeln!(s, "{}", line(what, i, value));
+    }
+    // A cut lane: what was read, and the largest of what was not.
+    if let Some([lo, hi]) = c.read_x {
+        let _ = writeln!(
+            s,
+            "  read between the transverse joints at x = {:.3} and {:.3} {}: the lane's ends are a cut (--ends free reads the end panels too)",
+            len.apply(lo),
+            len.apply(hi),
+            len.unit
+        );
+        let end_bottom = |p: &Position| {
+            format!(
+                "{:.3} {}",
+                st.apply(p.end_bottom.unwrap_or(f64::NAN)),
+                st.unit
+            )
+        };
+        let end_top =
+            |p: &Position| format!("{:.3} {}", st.apply(p.end_top.unwrap_or(f64::NAN)), st.unit);
+        let ends: [(&str, Option<usize>, &ValueOf); 2] = [
+            ("end panels, bottom", c.end_bottom, &end_bottom),
+            ("end panels, top", c.end_top, &end_top),
+        ];
+        for (what, i, value) in ends {
+            if i.is_some() {
+                let _ = writeln!(s, "{} (not read)", line(what, i, value));
+            }
+        }
     }
     if converged < n {
         let _ = writeln!(

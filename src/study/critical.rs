@@ -30,6 +30,7 @@ use serde::Serialize;
 
 use super::critical_grid::{grid, Grid};
 pub use super::critical_grid::{Along, CriticalOptions, Edge, Footprint, JointLine};
+use super::ends::{self, Ends};
 use super::mirror::{self, flipped, Flip};
 use super::warm::Trail;
 use super::RunOutcome;
@@ -92,6 +93,14 @@ pub struct Position {
     /// On a jointed plate with dowels: the largest dowel force |k_d (w⁻ − w⁺)|, N.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dowel_force: Option<f64>,
+    /// On a lane cut at its ends ([`CriticalOptions::ends`]): the largest principal stress at
+    /// the bottom face in the end panels, which the values above do not read, Pa (absent: the
+    /// whole plate is read).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub end_bottom: Option<f64>,
+    /// The same at the top face, Pa.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub end_top: Option<f64>,
     /// Seconds for this position (0 for one read off its mirror image).
     pub time_s: f64,
     /// Where the position is the mirror image of another (the scene's frame symmetric, its load
@@ -162,6 +171,18 @@ pub struct Critical {
     /// Index of the largest dowel force (jointed plates with dowels).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dowel_force: Option<usize>,
+    /// What the plate's ends across the lane were taken to be.
+    pub ends: Ends,
+    /// The span of x the positions' values read, m: between the first and the last transverse
+    /// joint of a lane cut at its ends (absent: the whole plate).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub read_x: Option<[f64; 2]>,
+    /// Index of the largest bottom tension in the end panels, not read (a cut lane's).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub end_bottom: Option<usize>,
+    /// Index of the largest top tension in the end panels, not read.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub end_top: Option<usize>,
     /// Seconds to assemble the shared operators.
     pub assemble_s: f64,
     /// Wall-clock seconds of the whole search.
@@ -183,6 +204,7 @@ impl Critical {
         Critical {
             plate: pair(self.plate),
             spacing: pair(self.spacing),
+            read_x: self.read_x.map(pair),
             joints: self
                 .joints
                 .iter()
@@ -212,6 +234,8 @@ impl Critical {
                     w_max: c(d, q.w_max),
                     joint_shear: q.joint_shear.map(|v| c(Measure::ForcePerLength, v)),
                     dowel_force: q.dowel_force.map(|v| c(Measure::Force, v)),
+                    end_bottom: q.end_bottom.map(|v| c(p, v)),
+                    end_top: q.end_top.map(|v| c(p, v)),
                     ..q.clone()
                 })
                 .collect(),
@@ -294,6 +318,80 @@ fn runs(solved: &[usize], mirrored: impl Fn(usize) -> bool) -> Vec<std::ops::Ran
         }
     }
     out
+}
+
+/// What a position's solve shows where the search reads it ([`super::ends`]): over the whole
+/// plate, the summary's own values; on a cut lane's `span` of x, the largest σ₁ of each face
+/// over the elements centred inside it and where, the largest deflection over its nodes, the
+/// largest joint shear per length and dowel force over the joints' node pairs and bars in it
+/// (its first and last joint included), and the largest σ₁ of each face in the end panels.
+struct Read {
+    bottom: (f64, [f64; 2]),
+    top: (f64, [f64; 2]),
+    w_max: f64,
+    joint_shear: Option<f64>,
+    dowel_force: Option<f64>,
+    end_bottom: Option<f64>,
+    end_top: Option<f64>,
+}
+
+impl Read {
+    fn of(r: &analysis::MethodRun, span: Option<[f64; 2]>) -> Read {
+        let s = &r.summary;
+        let Some(span) = span else {
+            return Read {
+                bottom: (
+                    s.stresses.bottom.value,
+                    [s.stresses.bottom.x, s.stresses.bottom.y],
+                ),
+                top: (s.stresses.top.value, [s.stresses.top.x, s.stresses.top.y]),
+                w_max: s.w_max,
+                joint_shear: largest(s.joints.iter().map(|j| j.max_shear_per_length)),
+                dowel_force: largest(s.joints.iter().map(|j| j.max_dowel_force)),
+                end_bottom: None,
+                end_top: None,
+            };
+        };
+        let e = &r.report.elements;
+        let read = |k: usize| ends::inside(Some(span), e.x[k]);
+        // The largest σ₁ of a face over the elements read (`inner`) or not, and where.
+        let peak = |s1: &[f64], inner: bool| {
+            (0..s1.len())
+                .filter(|&k| read(k) == inner)
+                .max_by(|&a, &b| s1[a].total_cmp(&s1[b]))
+                .map(|k| (s1[k], [e.x[k], e.y[k]]))
+        };
+        let none = (f64::NAN, [f64::NAN; 2]);
+        let f = &r.report.field;
+        let within = |x: f64| ends::within(Some(span), x);
+        let joints = &r.report.joints;
+        Read {
+            bottom: peak(&e.bottom.s1, true).unwrap_or(none),
+            top: peak(&e.top.s1, true).unwrap_or(none),
+            w_max: (0..f.w.len())
+                .filter(|&n| within(f.x[n]))
+                .map(|n| f.w[n])
+                .fold(f64::NEG_INFINITY, f64::max),
+            joint_shear: largest(joints.iter().map(|j| {
+                j.max_shear_per_length.and(
+                    (j.nodes.iter())
+                        .filter(|n| within(n.x))
+                        .map(|n| n.shear_per_length.abs())
+                        .reduce(f64::max),
+                )
+            })),
+            dowel_force: largest(joints.iter().map(|j| {
+                j.max_dowel_force.and(
+                    (j.dowels.iter())
+                        .filter(|d| within(d.x))
+                        .map(|d| d.force.abs())
+                        .reduce(f64::max),
+                )
+            })),
+            end_bottom: peak(&e.bottom.s1, false).map(|p| p.0),
+            end_top: peak(&e.top.s1, false).map(|p| p.0),
+        }
+    }
 }
 
 /// The largest of some optional values (None when none is present).
@@ -414,6 +512,8 @@ pub fn critical(
     options.validate()?;
     let t0 = Instant::now();
     let (model, k, combination) = chosen(problem, options)?;
+    // Where every position is read: between a cut lane's first and last transverse joint.
+    let span = ends::counted_span(&model, options.ends == Ends::Cut);
     // A scene that asks for no symmetry gets no mirror images either.
     let mirrors = problem.model.symmetry != SymmetryMode::None;
     let Grid {
@@ -507,22 +607,23 @@ pub fn critical(
                             if s.converged {
                                 last.push(points[i], r.solution.sigma.clone());
                             }
+                            let read = Read::of(&r, span);
                             Position {
                                 x,
                                 y,
                                 heading,
                                 outcome: RunOutcome::Solved(r.solution.status.kind()),
                                 iterations: s.iterations,
-                                bottom: s.stresses.bottom.value,
-                                bottom_at: [s.stresses.bottom.x, s.stresses.bottom.y],
-                                top: s.stresses.top.value,
-                                top_at: [s.stresses.top.x, s.stresses.top.y],
-                                w_max: s.w_max,
+                                bottom: read.bottom.0,
+                                bottom_at: read.bottom.1,
+                                top: read.top.0,
+                                top_at: read.top.1,
+                                w_max: read.w_max,
                                 contact_fraction: s.contact_fraction,
-                                joint_shear: largest(
-                                    s.joints.iter().map(|j| j.max_shear_per_length),
-                                ),
-                                dowel_force: largest(s.joints.iter().map(|j| j.max_dowel_force)),
+                                joint_shear: read.joint_shear,
+                                dowel_force: read.dowel_force,
+                                end_bottom: read.end_bottom,
+                                end_top: read.end_top,
                                 time_s: t.elapsed().as_secs_f64(),
                                 mirror_of: None,
                             }
@@ -541,6 +642,8 @@ pub fn critical(
                             contact_fraction: f64::NAN,
                             joint_shear: None,
                             dowel_force: None,
+                            end_bottom: None,
+                            end_top: None,
                             time_s: t.elapsed().as_secs_f64(),
                             mirror_of: None,
                         },
@@ -585,6 +688,10 @@ pub fn critical(
         deflection: Critical::argmax(&positions, |p| p.w_max),
         joint_shear: Critical::argmax_of(&positions, |p| p.joint_shear),
         dowel_force: Critical::argmax_of(&positions, |p| p.dowel_force),
+        ends: options.ends,
+        read_x: span,
+        end_bottom: Critical::argmax_of(&positions, |p| p.end_bottom),
+        end_top: Critical::argmax_of(&positions, |p| p.end_top),
         positions,
         assemble_s,
         total_s: t0.elapsed().as_secs_f64(),

@@ -5,6 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::ends::Ends;
 use crate::error::{Error, Result};
 use crate::layout::{Axis, JointType};
 use crate::model::Model;
@@ -41,6 +42,10 @@ pub struct CriticalOptions {
     /// line, off that one's answer instead of solving it (false: solve every position; a
     /// scene with `mesh.symmetry = "none"` never mirrors).
     pub mirror: bool,
+    /// What the plate's ends across the lane are ([`super::ends`]): `Cut` (the default) reads
+    /// every position's stresses, deflection and joint forces between the first and the last
+    /// transverse joint only, where there are two or more; `Free` reads the whole plate.
+    pub ends: Ends,
 }
 
 impl Default for CriticalOptions {
@@ -57,6 +62,7 @@ impl Default for CriticalOptions {
             warm: true,
             indices: None,
             mirror: true,
+            ends: Ends::Cut,
         }
     }
 }

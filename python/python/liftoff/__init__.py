@@ -209,6 +209,7 @@ def critical(
     combination: Optional[str] = None,
     warm: bool = True,
     mirror: bool = True,
+    ends: str = "cut",
     client: Any = None,
     chunk: int = 10,
     progress: Any = None,
@@ -233,6 +234,12 @@ def critical(
     is read off that one (its row's ``mirror_of``: the other's index; no steps, no time);
     ``mirror=False`` solves every position.
 
+    On a lane of three or more slabs along x (two or more transverse joints) the plate's ends
+    are by default a cut of a lane that goes on (``ends="cut"``): every position is read
+    between the first and the last transverse joint (``meta["read_x"]``), and the rows'
+    ``end_bottom``/``end_top`` hold the end panels' largest tensions, not read (the indices of
+    their largest in ``meta``); ``ends="free"`` reads the whole plate.
+
     ``grid`` (default ``(11, 9)``) spaces the points evenly over the plate; ``grid_per_panel``
     (``(NX, NY)``, not with ``grid``) puts NX × NY points in every panel between the joint
     lines, its sides included (``5`` → 0, ¼, ½, ¾, 1 of the panel), so that the middle of a
@@ -242,12 +249,14 @@ def critical(
     """
     if grid is not None and grid_per_panel is not None:
         raise SceneError("give grid or grid_per_panel, not both", "invalid", "grid_per_panel")
+    if ends not in ("cut", "free"):
+        raise SceneError(f"ends must be \"cut\" or \"free\", got {ends!r}", "invalid", "ends")
     kind, text = scene_pair(scene)
     opts = options_json(method, options)
     spec = {"load": load, "grid": list(grid if grid is not None else (11, 9)),
             "grid_per_panel": list(grid_per_panel) if grid_per_panel is not None else None,
             "along": list(along or []), "headings": list(headings or []),
-            "combination": combination, "warm": warm, "mirror": mirror}
+            "combination": combination, "warm": warm, "mirror": mirror, "ends": ends}
     if client is None:
         doc = json.loads(_progress.run(_core.critical, progress, kind, text, opts, json.dumps(spec)))
         rows = doc.pop("positions")
@@ -264,7 +273,8 @@ def critical(
         doc = json.loads(part)
         rows.extend(doc.pop("positions"))
         meta = {k: v for k, v in doc.items()
-                if k not in ("bottom", "top", "deflection", "joint_shear", "dowel_force")}
+                if k not in ("bottom", "top", "deflection", "joint_shear", "dowel_force",
+                             "end_bottom", "end_top")}
 
     def best(key: str) -> Optional[int]:
         ok = [i for i, r in enumerate(rows)
@@ -273,7 +283,8 @@ def critical(
 
     meta.update({"bottom": best("bottom"), "top": best("top"), "deflection": best("w_max")})
     # A jointed plate's: the largest joint shear per length and dowel force, where present.
-    for key in ("joint_shear", "dowel_force"):
+    # A cut lane's: the end panels' largest tensions, not read.
+    for key in ("joint_shear", "dowel_force", "end_bottom", "end_top"):
         if best(key) is not None:
             meta[key] = best(key)
     return Records(rows, meta)

@@ -10,7 +10,7 @@ use liftoff::choice::Choice;
 use liftoff::method::{Contact, MethodKind, QpForm, QpSolver, Route, Start};
 use liftoff::model::{ConstraintPoints, SymmetryMode};
 use liftoff::scene::PenaltySpec;
-use liftoff::study::{Along, ConstraintVariants, EpsSweepOptions};
+use liftoff::study::{Along, ConstraintVariants, Ends, EpsSweepOptions};
 
 #[derive(Parser)]
 #[command(
@@ -284,6 +284,12 @@ pub(crate) struct CriticalArgs {
     /// plate (by default read off that one's answer).
     #[arg(long)]
     pub(crate) no_mirror: bool,
+    /// What the plate's ends across the lane (x = ±a/2) are, where it has two or more
+    /// transverse joints: `cut` (the model cuts a lane that goes on; every position is read
+    /// between the first and the last transverse joint) or `free` (the lane ends there: the
+    /// whole plate is read).
+    #[arg(long, value_parser = choice::<Ends>(), default_value = "cut")]
+    pub(crate) ends: Ends,
     /// Method for unbonded contact (overrides [solver] method).
     #[arg(long, value_parser = choice::<MethodKind>())]
     pub(crate) method: Option<MethodKind>,

@@ -281,6 +281,7 @@ fn critical(args: CriticalArgs) -> Result<(), Failure> {
         warm: !args.cold,
         indices: None,
         mirror: !args.no_mirror,
+        ends: args.ends,
     };
     options.validate().map_err(Failure::option)?;
     let problem = load_problem(&args.scene, &overrides)?;

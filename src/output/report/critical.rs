@@ -38,6 +38,21 @@ const CRITICAL: &[(&str, &str, &str, Kind, Option<&str>)] = &[
         Kind::Force,
         None,
     ),
+    // A lane cut at its ends: the end panels' tensions, which the rows above do not read.
+    (
+        "end_bottom",
+        "bottom tension σ₁ in the end panels (not read)",
+        "end_bottom",
+        Kind::Stress,
+        None,
+    ),
+    (
+        "end_top",
+        "top tension σ₁ in the end panels (not read)",
+        "end_top",
+        Kind::Stress,
+        None,
+    ),
 ];
 
 /// Read a search's output in the directory: None when it holds none.
@@ -135,6 +150,19 @@ pub(crate) fn read(l: &mut Listing) -> Result<Option<Part>> {
         );
     }
     html.push_str("</tbody>\n</table></div>\n");
+    if let Some([lo, hi]) = v
+        .get("read_x")
+        .and_then(Value::as_array)
+        .map(|a| a.iter().filter_map(Value::as_f64).collect::<Vec<f64>>())
+        .and_then(|a| <[f64; 2]>::try_from(a).ok())
+    {
+        let _ = writeln!(
+            html,
+            "<p class=\"note\" data-key=\"read_x\">Every position is read between the transverse joints at x = {} and {}: the model cuts a lane that goes on, and its end panels are the inner ones' neighbours, their free ends no pavement's (<code>--ends free</code> reads them too).</p>",
+            with_unit(&num(length.apply(lo)), length.unit),
+            with_unit(&num(length.apply(hi)), length.unit),
+        );
+    }
     let _ = writeln!(
         html,
         "<p class=\"note\">Load at: the reference point of the axle or gear. From {}.</p>",
