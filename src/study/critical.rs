@@ -6,7 +6,10 @@
 //! it (their answers extrapolated where it continues their line and that paid at the last
 //! position); the positions that give the largest
 //! tension at the bottom and at the top face and the largest deflection — and on a jointed
-//! plate the largest joint shear per length and the largest dowel force.
+//! plate the largest joint shear per length and the largest dowel force. On a lane the model
+//! cuts at its ends (two or more transverse joints, [`CriticalOptions::ends`]) every position
+//! is read between the first and the last of them ([`super::ends`]), the end panels' largest
+//! tensions kept beside.
 //!
 //! The grid runs, for each heading, from the position where the prints touch one edge of the
 //! plate to where they touch the other, so the edge positions of the classical critical cases
