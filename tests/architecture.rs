@@ -303,6 +303,7 @@ fn serde_names_match_choice_names() {
         liftoff::method::QpForm,
         liftoff::method::QpSolver,
         liftoff::foundation::FoundationKind,
+        liftoff::study::Ends,
     );
     written!(
         liftoff::error::ErrorKind,

@@ -429,6 +429,32 @@ fn coarse() -> Overrides {
     }
 }
 
+/// The heavy pavement on the coarse mesh, and a search of its axle over a 3 × 2 grid in the
+/// combination `heavy`, reading the plate as `ends` says.
+fn heavy_search(ends: Ends) -> (liftoff::Problem, CriticalOptions) {
+    let base = liftoff::load(&liftoff::Source::Toml(&heavy_pavement()), &coarse()).expect("scene");
+    let options = CriticalOptions {
+        load: "axle".into(),
+        grid: [3, 2],
+        combination: Some("heavy".into()),
+        ends,
+        ..CriticalOptions::default()
+    };
+    (base, options)
+}
+
+/// The heavy pavement with the axle written at (x, y), on the coarse mesh, modelled whole.
+fn heavy_written(x: f64, y: f64) -> liftoff::Problem {
+    let written = heavy_pavement()
+        .replace("x = 2.15 ", &format!("x = {x} "))
+        .replace("y = -0.88 ", &format!("y = {y} "));
+    let overrides = Overrides {
+        symmetry: Some(liftoff::model::SymmetryMode::None),
+        ..coarse()
+    };
+    liftoff::load(&liftoff::Source::Toml(&written), &overrides).expect("scene")
+}
+
 /// The search moves the axle in the model it was given (no scene file, no validation per
 /// position): at every position of a 3 × 2 grid, in a combination with factors other than 1,
 /// the moved model's loads are the ones a scene with the axle written at that position makes
@@ -437,15 +463,7 @@ fn coarse() -> Overrides {
 /// the whole plate (`Ends::Free`), as the scene's summary does.
 #[test]
 fn moved_loads_and_answers_equal_the_scene_written_at_that_position() {
-    let text = heavy_pavement();
-    let base = liftoff::load(&liftoff::Source::Toml(&text), &coarse()).expect("scene");
-    let options = CriticalOptions {
-        load: "axle".into(),
-        grid: [3, 2],
-        combination: Some("heavy".into()),
-        ends: Ends::Free,
-        ..CriticalOptions::default()
-    };
+    let (base, options) = heavy_search(Ends::Free);
     let c = critical(&base, &options, &liftoff::Monitor::NONE).expect("search");
     assert_eq!(c.positions.len(), 6);
     // The reported spacing is the distance between neighbouring points of the 3 × 2 grid
@@ -473,14 +491,7 @@ fn moved_loads_and_answers_equal_the_scene_written_at_that_position() {
     assert_eq!(moved.vehicles[k].factor, 1.5);
     for p in &c.positions {
         moved.place(k, [p.x, p.y, p.heading]).expect("on the plate");
-        let written = text
-            .replace("x = 2.15 ", &format!("x = {} ", p.x))
-            .replace("y = -0.88 ", &format!("y = {} ", p.y));
-        let overrides = Overrides {
-            symmetry: Some(liftoff::model::SymmetryMode::None),
-            ..coarse()
-        };
-        let mut alone = liftoff::load(&liftoff::Source::Toml(&written), &overrides).expect("scene");
+        let mut alone = heavy_written(p.x, p.y);
         let combination = heavy(&alone);
         let at = &combination.model.vehicles[k].at;
         assert_eq!((at[0], at[1]), (p.x, p.y), "the scene puts the axle there");
@@ -546,18 +557,11 @@ fn moved_loads_and_answers_equal_the_scene_written_at_that_position() {
 /// tension's critical position is that end.
 #[test]
 fn a_cut_lane_is_read_between_its_first_and_last_transverse_joint() {
-    let text = heavy_pavement();
-    let base = liftoff::load(&liftoff::Source::Toml(&text), &coarse()).expect("scene");
-    let options = CriticalOptions {
-        load: "axle".into(),
-        grid: [3, 2],
-        combination: Some("heavy".into()),
-        ..CriticalOptions::default()
-    };
+    let (base, options) = heavy_search(Ends::Cut);
     let cut = critical(&base, &options, &liftoff::Monitor::NONE).expect("search");
     let whole = CriticalOptions {
         ends: Ends::Free,
-        ..options.clone()
+        ..options
     };
     let free = critical(&base, &whole, &liftoff::Monitor::NONE).expect("search");
     let [lo, hi] = cut.read_x.expect("a cut lane");
@@ -596,14 +600,7 @@ fn a_cut_lane_is_read_between_its_first_and_last_transverse_joint() {
     );
     // The cut search's critical top position alone, read by hand.
     let p = &cut.positions[i];
-    let written = text
-        .replace("x = 2.15 ", &format!("x = {} ", p.x))
-        .replace("y = -0.88 ", &format!("y = {} ", p.y));
-    let overrides = Overrides {
-        symmetry: Some(liftoff::model::SymmetryMode::None),
-        ..coarse()
-    };
-    let mut alone = liftoff::load(&liftoff::Source::Toml(&written), &overrides).expect("scene");
+    let mut alone = heavy_written(p.x, p.y);
     alone.combinations.retain(|c| c.name == "heavy");
     alone.model = alone.combinations[0].model.clone();
     let liftoff::Outcome::Combinations(runs) =
