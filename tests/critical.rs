@@ -430,8 +430,9 @@ fn coarse() -> Overrides {
 }
 
 /// The heavy pavement on the coarse mesh, and a search of its axle over a 3 × 2 grid in the
-/// combination `heavy`, reading the plate as `ends` says.
-fn heavy_search(ends: Ends) -> (liftoff::Problem, CriticalOptions) {
+/// combination `heavy`, reading the plate as `ends` says (None: as the scene's `[plate] ends =
+/// "cut"` says).
+fn heavy_search(ends: Option<Ends>) -> (liftoff::Problem, CriticalOptions) {
     let base = liftoff::load(&liftoff::Source::Toml(&heavy_pavement()), &coarse()).expect("scene");
     let options = CriticalOptions {
         load: "axle".into(),
@@ -463,7 +464,7 @@ fn heavy_written(x: f64, y: f64) -> liftoff::Problem {
 /// the whole plate (`Ends::Free`), as the scene's summary does.
 #[test]
 fn moved_loads_and_answers_equal_the_scene_written_at_that_position() {
-    let (base, options) = heavy_search(Ends::Free);
+    let (base, options) = heavy_search(Some(Ends::Free));
     let c = critical(&base, &options, &liftoff::Monitor::NONE).expect("search");
     assert_eq!(c.positions.len(), 6);
     // The reported spacing is the distance between neighbouring points of the 3 × 2 grid
@@ -546,8 +547,8 @@ fn moved_loads_and_answers_equal_the_scene_written_at_that_position() {
     }
 }
 
-/// On the pavement — a lane of three slabs along x, its ends a cut — the search reads every
-/// position between the two transverse joints (x = ±2.25 m) by default: its stresses are the
+/// On the pavement — a lane of three slabs along x, its ends a cut (`[plate] ends = "cut"`) —
+/// the search reads every position between the two transverse joints (x = ±2.25 m): its stresses are the
 /// whole plate's where they peak inside, and the end panels' peaks are kept beside them. Checked
 /// against the same search reading the whole plate (`Ends::Free`; the same solves, so to the
 /// bit: the whole plate's σ₁ is the larger of the two parts'), and against the position of the
@@ -557,10 +558,11 @@ fn moved_loads_and_answers_equal_the_scene_written_at_that_position() {
 /// tension's critical position is that end.
 #[test]
 fn a_cut_lane_is_read_between_its_first_and_last_transverse_joint() {
-    let (base, options) = heavy_search(Ends::Cut);
+    let (base, options) = heavy_search(None);
     let cut = critical(&base, &options, &liftoff::Monitor::NONE).expect("search");
+    assert_eq!(cut.ends, Ends::Cut, "the scene's [plate] ends");
     let whole = CriticalOptions {
-        ends: Ends::Free,
+        ends: Some(Ends::Free),
         ..options
     };
     let free = critical(&base, &whole, &liftoff::Monitor::NONE).expect("search");
@@ -639,6 +641,44 @@ fn a_cut_lane_is_read_between_its_first_and_last_transverse_joint() {
             && table.contains("(not read)"),
         "{table}"
     );
+}
+
+/// Where the search takes the plate's ends from: a plate that says nothing of them is read
+/// whole (a floor, an apron: its ends are its own) — here the pavement without its `[plate]
+/// ends` —, a damage scene's lane as its `[traffic]` says (cut by default), and `ends` given
+/// to the search over both.
+#[test]
+fn the_plates_ends_are_the_scenes_unless_the_search_is_told() {
+    let one = |text: &str, ends: Option<Ends>| {
+        let p = liftoff::load(&liftoff::Source::Toml(text), &coarse()).expect("scene");
+        let load = if text.contains("name = \"single\"") {
+            "single"
+        } else {
+            "axle"
+        };
+        let options = CriticalOptions {
+            load: load.into(),
+            grid: [1, 1],
+            ends,
+            ..CriticalOptions::default()
+        };
+        critical(&p, &options, &liftoff::Monitor::NONE).expect("search")
+    };
+    let pavement = include_str!("../examples/pavement-3x3.toml");
+    let silent = pavement.replace("ends = \"cut\"", "");
+    assert!(silent.len() < pavement.len());
+    let c = one(&silent, None);
+    assert!(c.ends == Ends::Free && c.read_x.is_none() && c.end_top.is_none());
+    assert!(one(&silent, Some(Ends::Cut)).read_x.is_some());
+    let lane = include_str!("../examples/pavement-damage.toml");
+    assert!(
+        !lane.contains("\nends"),
+        "the bundled damage lane says nothing of its ends"
+    );
+    let c = one(lane, None);
+    assert!(c.ends == Ends::Cut && c.read_x.is_some());
+    let freed = lane.replace("growth = 0.02", "ends = \"free\"\ngrowth = 0.02");
+    assert_eq!(one(&freed, None).ends, Ends::Free);
 }
 
 /// The runs of warm starts are cut from the grid, not from the cores: the search on one thread

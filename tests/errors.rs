@@ -680,7 +680,8 @@ fn e69_a_report_of_a_directory_without_output_is_refused() {
 
 /// E71 and E72 for `liftoff damage`: a bad value of `[traffic]`, `[climate]` or `[damage]` is
 /// refused naming its key (here a group naming no axle of the scene, with the names it has;
-/// climate shares that do not add up to one; an unknown relation; climate bins that curl a slab
+/// climate shares that do not add up to one; an unknown relation; `traffic.ends` against
+/// `plate.ends`; climate bins that curl a slab
 /// with no weight of its own on a tensionless soil) — also when the scene is only
 /// solved —, and `damage` of a scene without `[traffic]` says what it needs. Exit 2 each, and
 /// nothing written to `--out`.
@@ -753,6 +754,7 @@ fn e71_e72_damage_inputs_are_refused_naming_the_key() {
             "ends = \"open\"\ngrowth = 0.02",
             "scene field `traffic.ends`: `open` is not what the plate's ends are: write \"cut\" (the default: the model cuts a lane that goes on) or \"free\" (the lane ends there)",
         ),
+
         (
             "kind = \"uniform\"\npressure = 6.0e3",
             "kind = \"uniform\"\npressure = 0.0",
@@ -765,6 +767,18 @@ fn e71_e72_damage_inputs_are_refused_naming_the_key() {
             assert_eq!(code, Some(2), "E71: exit code ({err})");
             assert!(err.contains(message), "E71: message: {err}");
         }
+    }
+    // The plate's ends said twice, differently.
+    let both = scene
+        .replacen("[plate]", "[plate]\nends = \"free\"", 1)
+        .replace("growth = 0.02", "ends = \"cut\"\ngrowth = 0.02");
+    for command in ["damage", "solve"] {
+        let (code, err) = run(&both, command);
+        assert_eq!(code, Some(2), "E71: exit code ({err})");
+        assert!(
+            err.contains("scene field `traffic.ends`: says \"cut\" where plate.ends says \"free\": the plate's ends are one thing; give one of the two keys"),
+            "E71: message: {err}"
+        );
     }
     // E18: `design --vary` out of order or not a thickness.
     for (vary, message) in [

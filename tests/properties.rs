@@ -92,6 +92,7 @@ impl RandomScene {
             memory_limit: liftoff::budget::default_memory_limit(),
             warnings: Vec::new(),
             damage: None,
+            ends: None,
         }
     }
 }

@@ -28,6 +28,7 @@ fn paper_plate(foundation: FoundationKind, elements: usize, memory_limit: f64) -
         memory_limit,
         warnings: Vec::new(),
         damage: None,
+        ends: None,
     }
 }
 

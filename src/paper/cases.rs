@@ -214,6 +214,7 @@ impl Case {
             memory_limit: default_memory_limit(),
             warnings: Vec::new(),
             damage: None,
+            ends: None,
         })
     }
 }

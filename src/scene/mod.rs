@@ -86,6 +86,9 @@ pub struct Problem {
     /// The traffic, climate and fatigue relation of `liftoff damage` (None: the scene has no
     /// `[traffic]`/`[damage]`).
     pub damage: Option<crate::damage::plan::DamagePlan>,
+    /// What the scene says the plate's ends across x are (`[plate] ends`; None: it says
+    /// nothing, and a study takes its `[traffic]`'s or reads the plate whole, `study::ends`).
+    pub ends: Option<crate::layout::Ends>,
 }
 
 impl SceneFile {

@@ -4,7 +4,7 @@ use serde::Deserialize;
 
 use crate::foundation::soil::{KeyMap, KeyValue};
 use crate::foundation::FoundationKind;
-use crate::layout::{Axis, JointType};
+use crate::layout::{Axis, Ends, JointType};
 use crate::method::{Contact, MethodKind, QpForm, QpSolver, Route, Start};
 use crate::model::{ConstraintPoints, SymmetryMode};
 
@@ -32,6 +32,12 @@ pub struct PlateSpec {
     /// inside the `length` × `width` box (which the mesh covers); default the box itself.
     #[serde(default)]
     pub outline: Option<Vec<[f64; 2]>>,
+    /// What the plate's ends across x (x = ±length/2) are, where it has two or more transverse
+    /// joints: "cut" (the model cuts a lane that goes on: `critical` and `damage` read it
+    /// between its first and last transverse joint) or "free" (it ends there). Default: the
+    /// `[traffic]`'s `ends` in a damage scene (cut), free otherwise.
+    #[serde(default)]
+    pub ends: Option<Ends>,
 }
 
 impl PlateSpec {
@@ -53,6 +59,7 @@ impl PlateSpec {
             shear_correction: None,
             thermal_expansion: None,
             outline: None,
+            ends: None,
         }
     }
 }

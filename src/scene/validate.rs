@@ -580,6 +580,7 @@ pub fn problem(file: &SceneFile) -> Result<Problem> {
         memory_limit,
         warnings,
         damage,
+        ends: file.plate.as_ref().and_then(|p| p.ends),
     })
 }
 
@@ -606,6 +607,21 @@ fn damage_plan(
     else {
         return Ok(None);
     };
+    // `[plate] ends` says it for every study; `[traffic] ends`, older, for the damage run: where
+    // both are given they must agree.
+    if let Some(ends) = file.plate.as_ref().and_then(|p| p.ends) {
+        let cut = ends == crate::layout::Ends::Cut;
+        match file.traffic.as_ref().and_then(|t| t.ends.as_deref()) {
+            None => plan.cut = cut,
+            Some(said) if plan.cut != cut => {
+                return Err(Error::invalid(
+                    "traffic.ends",
+                    format!("says \"{said}\" where plate.ends says \"{ends}\": the plate's ends are one thing; give one of the two keys"),
+                ))
+            }
+            Some(_) => {}
+        }
+    }
     if combinations {
         return Err(Error::invalid(
             "combination",

@@ -33,13 +33,14 @@ use serde::Serialize;
 
 use super::critical_grid::{grid, Grid};
 pub use super::critical_grid::{Along, CriticalOptions, Edge, Footprint, JointLine};
-use super::ends::{self, Ends};
+use super::ends;
 use super::mirror::{self, flipped, Flip};
 use super::warm::Trail;
 use super::RunOutcome;
 use crate::analysis;
 use crate::combination::{assemble_for, on_threads, side_by_side};
 use crate::error::{Error, Result};
+use crate::layout::Ends;
 use crate::model::{Model, SymmetryMode};
 use crate::monitor::{Cases, Monitor};
 use crate::scene::Problem;
@@ -516,7 +517,8 @@ pub fn critical(
     let t0 = Instant::now();
     let (model, k, combination) = chosen(problem, options)?;
     // Where every position is read: between a cut lane's first and last transverse joint.
-    let span = ends::counted_span(&model, options.ends == Ends::Cut);
+    let read_as = ends::of(problem, options.ends);
+    let span = ends::counted_span(&model, read_as == Ends::Cut);
     // A scene that asks for no symmetry gets no mirror images either.
     let mirrors = problem.model.symmetry != SymmetryMode::None;
     let Grid {
@@ -691,7 +693,7 @@ pub fn critical(
         deflection: Critical::argmax(&positions, |p| p.w_max),
         joint_shear: Critical::argmax_of(&positions, |p| p.joint_shear),
         dowel_force: Critical::argmax_of(&positions, |p| p.dowel_force),
-        ends: options.ends,
+        ends: read_as,
         read_x: span,
         end_bottom: Critical::argmax_of(&positions, |p| p.end_bottom),
         end_top: Critical::argmax_of(&positions, |p| p.end_top),

@@ -5,8 +5,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::ends::Ends;
 use crate::error::{Error, Result};
+use crate::layout::Ends;
 use crate::layout::{Axis, JointType};
 use crate::model::Model;
 
@@ -42,10 +42,11 @@ pub struct CriticalOptions {
     /// line, off that one's answer instead of solving it (false: solve every position; a
     /// scene with `mesh.symmetry = "none"` never mirrors).
     pub mirror: bool,
-    /// What the plate's ends across the lane are ([`super::ends`]): `Cut` (the default) reads
-    /// every position's stresses, deflection and joint forces between the first and the last
-    /// transverse joint only, where there are two or more; `Free` reads the whole plate.
-    pub ends: Ends,
+    /// What the plate's ends across the lane are ([`super::ends`]): `Cut` reads every
+    /// position's stresses, deflection and joint forces between the first and the last
+    /// transverse joint only, where there are two or more; `Free` reads the whole plate. None
+    /// (the default): as the scene says (`[plate] ends`, else its `[traffic]`'s), else free.
+    pub ends: Option<Ends>,
 }
 
 impl Default for CriticalOptions {
@@ -62,7 +63,7 @@ impl Default for CriticalOptions {
             warm: true,
             indices: None,
             mirror: true,
-            ends: Ends::Cut,
+            ends: None,
         }
     }
 }

@@ -6,24 +6,22 @@
 //! (`--ends`) read the plate between its first and last transverse joint only; a plate with
 //! one transverse joint has no inner panel, and every element counts.
 
-use serde::{Deserialize, Serialize};
-
-use crate::layout::Axis;
+use crate::layout::{Axis, Ends};
 use crate::model::Model;
+use crate::scene::Problem;
 
-/// What the plate's ends across the lane (x = ±a/2) are.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Ends {
-    /// The model cuts a lane that goes on: the end panels are the inner ones' neighbours, and
-    /// what happens in them is not read.
-    #[default]
-    Cut,
-    /// The lane ends there (a bridge, a building): every panel is read.
-    Free,
+/// What a study takes the plate's ends to be: `asked` (a command's `--ends`) if given, else the
+/// scene's `[plate] ends`, else its `[traffic]`'s (a lane; cut unless it says otherwise), else
+/// free — a plate with no word of a lane is read whole.
+pub(crate) fn of(problem: &Problem, asked: Option<Ends>) -> Ends {
+    asked
+        .or(problem.ends)
+        .or(problem
+            .damage
+            .as_ref()
+            .map(|plan| if plan.cut { Ends::Cut } else { Ends::Free }))
+        .unwrap_or(Ends::Free)
 }
-
-crate::choice::names!(Ends, Cut => "cut", Free => "free");
 
 /// The span of x (m, the model's units) that is read: between the first and the last transverse
 /// joint where the ends are cut and there are two or more; None where the whole plate is read.

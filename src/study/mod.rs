@@ -34,6 +34,7 @@ mod stability;
 mod tradeoff;
 mod warm;
 
+pub use crate::layout::Ends;
 pub use critical::{
     critical, critical_points, critical_positions, Along, Critical, CriticalOptions, Edge,
     Footprint, JointLine, Position,
@@ -44,7 +45,6 @@ pub use damage::{
 };
 pub use damage_part::DamagePart;
 pub use design::{design, Design, DesignOptions, DesignPoint};
-pub use ends::Ends;
 pub use eps_sweep::{eps_sweep, Sweep, SweepRow};
 pub use erosion::{Corner, CornerDamage, Erosion};
 pub use options::{ConstraintVariants, EpsSweepOptions, TradeoffOptions};

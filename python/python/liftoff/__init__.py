@@ -209,7 +209,7 @@ def critical(
     combination: Optional[str] = None,
     warm: bool = True,
     mirror: bool = True,
-    ends: str = "cut",
+    ends: Optional[str] = None,
     client: Any = None,
     chunk: int = 10,
     progress: Any = None,
@@ -234,11 +234,12 @@ def critical(
     is read off that one (its row's ``mirror_of``: the other's index; no steps, no time);
     ``mirror=False`` solves every position.
 
-    On a lane of three or more slabs along x (two or more transverse joints) the plate's ends
-    are by default a cut of a lane that goes on (``ends="cut"``): every position is read
-    between the first and the last transverse joint (``meta["read_x"]``), and the rows'
-    ``end_bottom``/``end_top`` hold the end panels' largest tensions, not read (the indices of
-    their largest in ``meta``); ``ends="free"`` reads the whole plate.
+    On a lane of three or more slabs along x (two or more transverse joints) whose ends are a
+    cut of a lane that goes on (``ends="cut"``; default: the scene's ``[plate] ends``, or its
+    ``[traffic]``'s, else ``"free"``) every position is read between the first and the last
+    transverse joint (``meta["read_x"]``), and the rows' ``end_bottom``/``end_top`` hold the end
+    panels' largest tensions, not read (the indices of their largest in ``meta``);
+    ``ends="free"`` reads the whole plate.
 
     ``grid`` (default ``(11, 9)``) spaces the points evenly over the plate; ``grid_per_panel``
     (``(NX, NY)``, not with ``grid``) puts NX × NY points in every panel between the joint
@@ -249,7 +250,7 @@ def critical(
     """
     if grid is not None and grid_per_panel is not None:
         raise SceneError("give grid or grid_per_panel, not both", "invalid", "grid_per_panel")
-    if ends not in ("cut", "free"):
+    if ends not in (None, "cut", "free"):
         raise SceneError(f"ends must be \"cut\" or \"free\", got {ends!r}", "invalid", "ends")
     kind, text = scene_pair(scene)
     opts = options_json(method, options)

@@ -286,10 +286,11 @@ pub(crate) struct CriticalArgs {
     pub(crate) no_mirror: bool,
     /// What the plate's ends across the lane (x = ±a/2) are, where it has two or more
     /// transverse joints: `cut` (the model cuts a lane that goes on; every position is read
-    /// between the first and the last transverse joint) or `free` (the lane ends there: the
-    /// whole plate is read).
-    #[arg(long, value_parser = choice::<Ends>(), default_value = "cut")]
-    pub(crate) ends: Ends,
+    /// between the first and the last transverse joint) or `free` (the plate ends there: the
+    /// whole plate is read). Default: the scene's `[plate] ends` (or its `[traffic]`'s), else
+    /// free.
+    #[arg(long, value_parser = choice::<Ends>())]
+    pub(crate) ends: Option<Ends>,
     /// Method for unbonded contact (overrides [solver] method).
     #[arg(long, value_parser = choice::<MethodKind>())]
     pub(crate) method: Option<MethodKind>,
