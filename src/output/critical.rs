@@ -187,7 +187,13 @@ pub fn write_critical(dir: &Path, c: &Critical, title: &str) -> Result<Vec<PathB
                 prints,
             },
             &format!(
-                "{title} — {name} with `{}` standing at each point (heading {heading}°)",
+                "{title} — {name}{} with `{}` standing at each point (heading {heading}°)",
+                // A cut lane's values are read between its first and last transverse joint.
+                if c.read_x.is_some() {
+                    " between the transverse joints"
+                } else {
+                    ""
+                },
                 c.load
             ),
             &units,
