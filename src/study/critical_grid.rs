@@ -6,8 +6,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
-use crate::layout::Ends;
-use crate::layout::{Axis, JointType};
+use crate::layout::{Axis, Ends, JointType};
 use crate::model::Model;
 
 /// What to move and over what.

@@ -1,10 +1,12 @@
 //! Where a study reads a lane that the model cuts at its ends. A lane of jointed slabs is
 //! modelled with a slab beyond each joint of the ones that matter, so that those have
 //! neighbours; the plate's ends (x = ±a/2) are then free edges that no pavement has, and an
-//! axle at such an end lifts and stresses the slab as no axle on the road does. With two or
-//! more transverse joints and the ends a cut, `damage` (`[traffic] ends`) and `critical`
-//! (`--ends`) read the plate between its first and last transverse joint only; a plate with
-//! one transverse joint has no inner panel, and every element counts.
+//! axle at such an end lifts and stresses the slab as no axle on the road does. A scene says
+//! so (`[plate] ends = "cut"`, or a damage scene's `[traffic]`, cut unless it says otherwise),
+//! or `critical --ends` does ([`of`]); with two or more transverse joints and the ends a cut,
+//! `damage` and `critical` read the plate between its first and last transverse joint only
+//! ([`counted_span`]); a plate with one transverse joint has no inner panel, and every element
+//! counts.
 
 use crate::layout::{Axis, Ends};
 use crate::model::Model;
