@@ -41,14 +41,14 @@ const CRITICAL: &[(&str, &str, &str, Kind, Option<&str>)] = &[
     // A lane cut at its ends: the end panels' tensions, which the rows above do not read.
     (
         "end_bottom",
-        "bottom tension σ₁ in the end panels (not read)",
+        "end panels' bottom σ₁ (not read)",
         "end_bottom",
         Kind::Stress,
         None,
     ),
     (
         "end_top",
-        "top tension σ₁ in the end panels (not read)",
+        "end panels' top σ₁ (not read)",
         "end_top",
         Kind::Stress,
         None,
