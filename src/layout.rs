@@ -57,7 +57,7 @@ crate::choice::names!(JointType, Free => "free", Continuous => "continuous", Agg
 /// What the plate's ends across a lane (x = ±a/2) are (`[plate] ends`, `critical --ends`,
 /// `[traffic] ends`): where the plate has two or more transverse joints, the studies read a
 /// cut lane between its first and last joint only (`study::ends`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Ends {
     /// The model cuts a lane that goes on: the end panels are the inner ones' neighbours, and
@@ -65,7 +65,6 @@ pub enum Ends {
     Cut,
     /// The plate ends there (a floor, an apron, a lane that ends at a bridge): every panel is
     /// read.
-    #[default]
     Free,
 }
 

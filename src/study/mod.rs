@@ -19,6 +19,7 @@ use crate::solve::StatusKind;
 
 mod critical;
 mod critical_grid;
+mod critical_result;
 mod damage;
 mod damage_part;
 mod damage_pass;
