@@ -388,7 +388,7 @@ pub fn damage_table(title: &str, d: &Damage, files: Option<(usize, &Path)>) -> S
         if let Some((k, v)) = cut {
             let _ = writeln!(
                 s,
-                "               the end panels, where the model cuts a lane that goes on, not counted: Σ n/N up to {:.4e} there, at ({:.2}, {:.2}) {} ([traffic] ends = \"free\" counts them)",
+                "               the end panels, where the model cuts a lane that goes on, not counted: Σ n/N up to {:.4e} there, at ({:.2}, {:.2}) {} ([plate] ends = \"free\" counts them)",
                 v,
                 len.apply(d.x[k]),
                 len.apply(d.y[k]),
@@ -423,7 +423,7 @@ pub fn damage_table(title: &str, d: &Damage, files: Option<(usize, &Path)>) -> S
         if let Some(c) = e.uncounted().and_then(|(j, _)| e.corners.get(j)) {
             let _ = writeln!(
                 s,
-                "               the plate's ends (x = ±{:.2} {}), where the model cuts a lane that goes on, not counted: C2 Σ n/N up to {:.4e} there, at ({:.2}, {:.2}) ([traffic] ends = \"free\" counts them)",
+                "               the plate's ends (x = ±{:.2} {}), where the model cuts a lane that goes on, not counted: C2 Σ n/N up to {:.4e} there, at ({:.2}, {:.2}) ([plate] ends = \"free\" counts them)",
                 len.apply(c.corner.x.abs()),
                 len.unit,
                 c.damage,
@@ -621,7 +621,7 @@ pub fn design_table(
     if d.cut {
         let _ = writeln!(
             s,
-            "  note: the end panels, where the model cuts a lane that goes on, are not counted ([traffic] ends = \"free\" counts them)"
+            "  note: the end panels, where the model cuts a lane that goes on, are not counted ([plate] ends = \"free\" counts them)"
         );
     }
     let _ = writeln!(s, "  time: {:.2} s", d.total_s);

@@ -121,7 +121,7 @@ pub(crate) fn read(l: &mut Listing) -> Result<Option<Part>> {
             .is_some_and(|c| c.iter().any(|b| b.as_bool() == Some(false)));
         if cut {
             html.push_str(
-                "<p>The end panels, where the model cuts a lane that goes on, are mapped but not counted: the governing places, the passes' peaks and the cracking are those between the first and the last transverse joint (<code>[traffic] ends = \"free\"</code> counts them; damage.csv's <code>counted</code>).</p>\n",
+                "<p>The end panels, where the model cuts a lane that goes on, are mapped but not counted: the governing places, the passes' peaks and the cracking are those between the first and the last transverse joint (<code>[plate] ends = \"free\"</code> counts them; damage.csv's <code>counted</code>).</p>\n",
             );
         }
         if let Some(c) = v.get("cracking").filter(|c| !c.is_null()) {
@@ -246,7 +246,7 @@ pub(crate) fn read(l: &mut Listing) -> Result<Option<Part>> {
         );
         if v.get("cut").and_then(Value::as_bool) == Some(true) {
             html.push_str(
-                "<p>The end panels, where the model cuts a lane that goes on, are not counted in these runs (<code>[traffic] ends = \"free\"</code> counts them).</p>\n",
+                "<p>The end panels, where the model cuts a lane that goes on, are not counted in these runs (<code>[plate] ends = \"free\"</code> counts them).</p>\n",
             );
         }
         let rows: Vec<Vec<String>> = v
