@@ -780,6 +780,36 @@ fn e71_e72_damage_inputs_are_refused_naming_the_key() {
             "E71: message: {err}"
         );
     }
+    // A notch at one end of the lane (x < −4.95 m, y > 0.6 m) that the passes' far wheels
+    // would cross: `damage` refuses the lane naming the wander and where its prints leave the
+    // plate (the scene itself solves: its axle stands at the plate's middle).
+    let notched = scene.replacen(
+        "thermal_expansion = 1.0e-5   # 1/K",
+        "thermal_expansion = 1.0e-5\noutline = [[-6.75, -1.8], [6.75, -1.8], [6.75, 1.8], [-4.95, 1.8], [-4.95, 0.6], [-6.75, 0.6]]",
+        1,
+    );
+    assert_ne!(notched, scene, "the plate line to give an outline");
+    let (code, err) = run(&notched, "damage");
+    assert_eq!(code, Some(2), "E71: exit code ({err})");
+    for part in [
+        "scene field `traffic.wander`: a pass of `single` with its outer tire ",
+        "puts a print on an opening or outside the plate's outline at ",
+        "keep the lane on the plate (traffic.edge_at, traffic.wander's mean and deviation)",
+    ] {
+        assert!(err.contains(part), "E71: message: {err}");
+    }
+    let solved = Command::new(env!("CARGO_BIN_EXE_liftoff"))
+        .arg("solve")
+        .arg(dir.path().join("scene.toml"))
+        .arg("--out")
+        .arg(dir.path().join("solved"))
+        .output()
+        .expect("run liftoff");
+    assert!(
+        solved.status.success(),
+        "the notched scene solves: {}",
+        String::from_utf8_lossy(&solved.stderr)
+    );
     // E18: `design --vary` out of order or not a thickness.
     for (vary, message) in [
         (

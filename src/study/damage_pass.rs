@@ -119,9 +119,35 @@ pub(super) fn pass_models(base: &Model, plan: &DamagePlan, bin: &Bin) -> Result<
     .clamp(y_min, y_max);
     let (x0, x1) = (-a / 2.0 - x_lo + gap_x, a / 2.0 - x_hi - gap_x);
     let steps = plan.steps.unwrap_or((base.elements[0] + 1).clamp(3, 401));
-    (0..steps)
-        .map(|s| {
-            let x = x0 + (x1 - x0) * s as f64 / (steps - 1) as f64;
+    let xs: Vec<f64> = (0..steps)
+        .map(|s| x0 + (x1 - x0) * s as f64 / (steps - 1) as f64)
+        .collect();
+    // On a plate with an outline or openings a pass must cross it whole: a print on an opening
+    // or past the outline is carried by no slab, and a pass that skipped those positions would
+    // miss the stresses beside them. Said as the lane's fault, with where it leaves the plate
+    // (`Model::place` would name only the scene's load).
+    let mut off = Vec::new();
+    for &x in &xs {
+        if !model.prints_on_plate(k, [x, y, 0.0])? {
+            off.push(x);
+        }
+    }
+    if let (Some(first), Some(last)) = (off.first(), off.last()) {
+        let l = &plan.lateral[bin.lateral];
+        return Err(Error::invalid(
+            "traffic.wander",
+            format!(
+                "a pass of `{}` with its outer tire {:.3} m from the edge (lateral position {} of {}) puts a print on an opening or outside the plate's outline at {} of its {steps} positions, x = {first:.3} … {last:.3} m: a pass crosses the plate from end to end, and a load that falls through the slab is carried by none — keep the lane on the plate (traffic.edge_at, traffic.wander's mean and deviation) or model the plate's part that carries it",
+                group.load,
+                l.offset,
+                bin.lateral + 1,
+                plan.lateral.len(),
+                off.len(),
+            ),
+        ));
+    }
+    xs.into_iter()
+        .map(|x| {
             let mut m = model.clone();
             m.place(k, [x, y, 0.0])?;
             Ok(m)
