@@ -772,6 +772,68 @@ fn backcalc_reads_a_pddx_survey_as_its_csv_twin() {
     }
 }
 
+/// A PDDX file does not say where on the slab a drop stood; `--location`, `--at` and
+/// `--direction` say it for every drop of the file. The bundled joint station in PDDX
+/// (`examples/fwd-joint.pdx`, station 6+000 of `examples/fwd-joint.csv`) placed as the CSV row
+/// places it gives that row's fit of k, E and the joint's stiffness to the digit in every column
+/// of backcalc.csv (the same drop after either reader, the same model), its load transfer
+/// included; `--at` is in the template's unit of length (m here).
+#[test]
+fn backcalc_places_a_pddx_survey_where_the_flags_say() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let csv_text = std::fs::read_to_string(root.join("examples/fwd-joint.csv")).expect("read");
+    // The CSV file's header and its station 6+000, the twin of the PDDX file's one station.
+    let one: String = csv_text
+        .lines()
+        .filter(|l| l.starts_with("station") || l.starts_with("6+000"))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let csv_path = dir.path().join("one.csv");
+    std::fs::write(&csv_path, one).expect("write");
+    let run = |file: &Path, out: &str, flags: &[&str]| {
+        let out = dir.path().join(out);
+        let mut args = vec![
+            "backcalc",
+            file.to_str().expect("utf-8 path"),
+            "--scene",
+            "example:fwd-joint",
+            "--fit",
+            "subgrade,slab,joint",
+            "--out",
+            out.to_str().expect("utf-8"),
+        ];
+        args.extend_from_slice(flags);
+        let o = liftoff(&args);
+        assert!(o.status.success(), "{}: {}", file.display(), stderr(&o));
+        read_csv(&out.join("backcalc.csv"))
+    };
+    let pddx_path = root.join("examples/fwd-joint.pdx");
+    let (hp, pddx) = run(
+        &pddx_path,
+        "pddx",
+        &[
+            "--location",
+            "joint-approach",
+            "--at",
+            "-0.15,-0.9",
+            "--direction",
+            "0",
+        ],
+    );
+    let (hc, csv) = run(&csv_path, "csv", &[]);
+    assert_eq!(hp, hc);
+    assert_eq!((pddx.len(), csv.len()), (1, 1));
+    assert_eq!(field(&hp, &pddx[0], "location"), "joint-approach");
+    assert!(
+        !field(&hp, &pddx[0], "lte [-]").is_empty(),
+        "a joint drop's LTE"
+    );
+    for (i, name) in hp.iter().enumerate() {
+        assert_eq!(pddx[0][i], csv[0][i], "column {name}");
+    }
+}
+
 /// The intercept method on the bundled void survey (`examples/fwd-void.csv`: liftoff's model in
 /// unbonded contact, two corners with drops of 40, 53 and 71 kN after a seating drop, one over
 /// a 0.5 mm void): intercepts.csv flags the voided corner above 2 mils and passes the sound
@@ -889,4 +951,59 @@ fn backcalc_reads_a_us_template_without_loads_and_reports_in_its_units() {
     let e = number(&h, &rows[0], "E [ksi]");
     assert!((k / 257.9 - 1.0).abs() < 0.02, "k {k} pci");
     assert!((e / 4641.0 - 1.0).abs() < 0.02, "E {e} ksi");
+    // `--at` is in the template's unit of length: the interior station as a PDDX file placed
+    // at (0, −24) — inches on this template — is its CSV row placed at (0, −2) ft. Read as
+    // metres or feet the place would be off the 3.7 m wide plate and refused. The two places
+    // agree in SI to the last bit or so (24 × 0.0254 against 2 × 12 × 0.0254), the fits to
+    // far better than the 1e-6 asked.
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let csv: String = std::fs::read_to_string(&basins)
+        .expect("read")
+        .lines()
+        .filter_map(|l| match l {
+            _ if l.starts_with("station,") => Some(format!("{l},x_ft,y_ft\n")),
+            _ if l.starts_with("1+000,") => Some(format!("{l},0,-2\n")),
+            _ => None,
+        })
+        .collect();
+    let csv_path = dir.path().join("placed.csv");
+    std::fs::write(&csv_path, csv).expect("write");
+    let fit = |file: &Path, out: &str, flags: &[&str]| {
+        let out = dir.path().join(out);
+        let mut args = vec![
+            "backcalc",
+            file.to_str().expect("utf-8"),
+            "--scene",
+            scene.to_str().expect("utf-8"),
+            "--seating",
+            "1",
+            "--out",
+            out.to_str().expect("utf-8"),
+        ];
+        args.extend_from_slice(flags);
+        let o = liftoff(&args);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let (h, rows) = read_csv(&out.join("backcalc.csv"));
+        (
+            number(&h, &rows[0], "k [pci]"),
+            number(&h, &rows[0], "E [ksi]"),
+        )
+    };
+    let pddx = root.join("examples/fwd-interior.pdx");
+    let placed = fit(&pddx, "placed-pddx", &["--at", "0,-24"]);
+    let by_csv = fit(&csv_path, "placed-csv", &[]);
+    let centre = fit(&pddx, "centre-pddx", &[]);
+    assert!(
+        (placed.0 / by_csv.0 - 1.0).abs() < 1e-6,
+        "{placed:?} {by_csv:?}"
+    );
+    assert!(
+        (placed.1 / by_csv.1 - 1.0).abs() < 1e-6,
+        "{placed:?} {by_csv:?}"
+    );
+    // And the place matters: 0.61 m off the centre the same basin reads other moduli.
+    assert!(
+        (placed.0 / centre.0 - 1.0).abs() > 1e-4,
+        "{placed:?} {centre:?}"
+    );
 }

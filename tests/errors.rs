@@ -991,6 +991,36 @@ fn e76_e77_e78_basin_files_templates_and_fits() {
         assert!(err.contains(message), "E76: message: {err}");
         assert!(!out.exists(), "E76: nothing written");
     }
+    // `--location`, `--at` and `--direction` place a PDDX file's drops; a CSV file's columns say
+    // where its drops stood, and the flags are refused beside them (E76) ...
+    let o = run(
+        &format!("{head}1+000,40,106,94,81,64\n"),
+        &["--location", "edge"],
+    );
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "E76: exit code ({err})");
+    assert!(
+        err.contains("is a CSV basin file, which says where each drop stood in its `location`, `x_m`, `y_m` and `direction_deg` columns")
+            && err.contains("\nhint: --location, --at and --direction place the drops of a PDDX file"),
+        "E76: message and hint: {err}"
+    );
+    assert!(!out.exists(), "E76: nothing written");
+    // ... and a PDDX file's joint drops need their place (E77).
+    let pddx = "[Pavement Deflection Data Exchange File]\nPDDXVersionNumber = 2.0\n[Units]\n\
+        LoadPlateRadiusUnits = millimeter\nLoadUnits = kilo-Newton\nDeflectionUnits = micron\n\
+        SensorLocationUnits = millimeter\n[Device Configuration]\nLoadPlateRadius = 150\n\
+        NumberOfDeflectionSensors = 2\nDeflectionSensorXAxisDistances = 0, 305\n\
+        [Test Location 1]\nDropData1 = 40, 100, 90\n";
+    let o = run(pddx, &["--location", "joint-approach"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "E77: exit code ({err})");
+    assert!(
+        err.contains(
+            "scene field `placement.at`: joint-approach drops need the plate's place on the slab"
+        ) && err.contains("\nhint: --at X,Y gives the load plate's centre"),
+        "E77: message and hint: {err}"
+    );
+    assert!(!out.exists(), "E77: nothing written");
     let good = "station,location,load_kN,d0mm_um,d305mm_um,d610mm_um,d914mm_um,d2400mm_um\n";
     let o = run(&format!("{good}2+000,edge,40,270,250,220,185,60\n"), &[]);
     let err = String::from_utf8_lossy(&o.stderr);

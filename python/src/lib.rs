@@ -634,7 +634,7 @@ fn design(
 /// `liftoff backcalc`: backcalc.json (the survey, SI) of the drops in `basins` (the basin file's
 /// text, CSV or PDDX; `source` names it in errors) on the template scene. `spec` is the JSON of
 /// {"method", "fit", "contact", "elements", "seating", "static_k_factor", "max_evaluations",
-/// "void_threshold" (m)},
+/// "void_threshold" (m), "location", "at" ([x, y] m), "direction" (degrees)},
 /// the command line's flags, each optional.
 #[pyfunction]
 #[pyo3(signature = (kind, text, options, basins, source_name, spec, progress=None))]
@@ -663,6 +663,9 @@ fn backcalc(
         static_k_factor: Option<f64>,
         max_evaluations: Option<usize>,
         void_threshold: Option<f64>,
+        location: Option<String>,
+        at: Option<[f64; 2]>,
+        direction: Option<f64>,
     }
     fn word<T: Choice>(field: &str, w: &str) -> liftoff::Result<T> {
         T::from_name(w).ok_or_else(|| {
@@ -704,7 +707,19 @@ fn backcalc(
             static_k_factor: spec.static_k_factor.unwrap_or(defaults.static_k_factor),
             void_threshold: spec.void_threshold.unwrap_or(defaults.void_threshold),
         };
-        let drops = liftoff::backcalc::read_drops(basins, source_name)?;
+        let placement = match (&spec.location, spec.at, spec.direction) {
+            (None, None, None) => None,
+            (location, at, direction) => Some(liftoff::backcalc::Placement {
+                location: location
+                    .as_deref()
+                    .map(|w| word::<liftoff::backcalc::Location>("location", w))
+                    .transpose()?
+                    .unwrap_or(liftoff::backcalc::Location::Interior),
+                at,
+                direction: direction.unwrap_or(0.0),
+            }),
+        };
+        let drops = liftoff::backcalc::read_drops_placed(basins, source_name, placement.as_ref())?;
         let mut file = source(kind, text).parse()?;
         Overrides::from_json(options)?.apply(&mut file);
         liftoff::backcalc::check_template(&file)?;

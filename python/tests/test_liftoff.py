@@ -1144,15 +1144,26 @@ def test_backcalc_fits_a_joint_and_reports_its_load_transfer():
     """The bundled joint survey (examples/fwd-joint.csv, synthetic: AGG = 80, 40 and 15 MN/m²
     along the joint of example:fwd-joint, 1 µm of noise): fitting k, E and the joint gives each
     AGG within 5 %; every row has the LTE, the bending correction above 1 and the fitted
-    model's LTE within 1 % of the measured one."""
+    model's LTE within 1 % of the measured one. Its first station as a PDDX file
+    (examples/fwd-joint.pdx), placed by ``location`` and ``at`` where the CSV row says, fits as
+    that row; beside a CSV file, whose columns say where, a placement raises SceneError."""
     path = pathlib.Path(__file__).resolve().parents[2] / "examples" / "fwd-joint.csv"
-    r = liftoff.backcalc(path, "example:fwd-joint", fit=("subgrade", "slab", "joint"))
+    joint = ("subgrade", "slab", "joint")
+    r = liftoff.backcalc(path, "example:fwd-joint", fit=joint)
     for row, agg in zip(r, [8e7, 4e7, 1.5e7]):
         assert row["location"] == "joint-approach"
         assert abs(row["joint"] / agg - 1) < 0.05, row
         assert row["joint_low"] < row["joint"] < row["joint_high"]
         assert row["bending"] > 1 and abs(row["lte_model"] / row["lte"] - 1) < 0.01, row
         assert row["lte_corrected"] == pytest.approx(row["lte"] * row["bending"])
+    pddx = liftoff.backcalc(path.with_name("fwd-joint.pdx"), "example:fwd-joint", fit=joint,
+                            location="joint-approach", at=(-0.15, -0.9))
+    assert [row["station"] for row in pddx] == ["6+000"]
+    for key in ("location", "subgrade", "slab", "joint", "lte", "lte_model"):
+        assert pddx[0][key] == r[0][key], key
+    with pytest.raises(liftoff.SceneError) as e:
+        liftoff.backcalc(path, "example:fwd-joint", fit=joint, location="edge")
+    assert e.value.field == "placement"
 
 
 L_RAFT = pathlib.Path(__file__).resolve().parents[2] / "tests" / "scenes" / "outline-l-raft.toml"

@@ -29,7 +29,7 @@ pub use fit::{
     fit_drop, model_basin, student_t975, Estimate, Fit, FitOptions, Termination, Unknown,
 };
 pub use infinite::{dimensionless_deflection, Subgrade};
-pub use pddx::{read_drops, read_pddx};
+pub use pddx::{read_drops, read_drops_placed, read_pddx, Placement};
 pub use survey::{
     intercepts, survey, BackcalcMethod, DropResult, Intercept, Survey, SurveyOptions,
 };

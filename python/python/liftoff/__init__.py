@@ -458,12 +458,15 @@ def backcalc(
     static_k_factor: float = 0.5,
     max_evaluations: int = 60,
     void_threshold: float = 50.8e-6,
+    location: Optional[str] = None,
+    at: Optional[Sequence[float]] = None,
+    direction: Optional[float] = None,
     progress: Any = None,
 ) -> Records:
     """Backcalculate the soil and the slab from deflectometer basins (``liftoff backcalc``).
 
     ``basins``: a basin file's path, or its text: CSV (one row a drop, the units in the column
-    names) or AASHTO PDDX (its drops read as interior ones): README, "Backcalculation". ``scene``: the template — the slab's size, thickness, ν
+    names) or AASHTO PDDX (its drops interior ones unless ``location`` says otherwise): README, "Backcalculation". ``scene``: the template — the slab's size, thickness, ν
     and joints, and the soil whose modulus is fitted. ``method``: ``"fit"`` (least squares on
     liftoff's model, with the AREA reading beside it) or ``"area"``; ``fit``: the unknowns,
     ``"subgrade"`` (the soil's ``modulus`` k, or its ``youngs_modulus``), ``"slab"`` (E) and
@@ -473,7 +476,11 @@ def backcalc(
     (NX, NY) (default: the template's counts refined to elements under 0.95 of the plate's
     radius); ``seating``: drops discarded at the start of each station; ``static_k_factor``:
     static over dynamic k (AASHTO 1993: 0.5); ``void_threshold``: the zero-load intercept (m)
-    above which a station's load–deflection line flags a void (2 mils).
+    above which a station's load–deflection line flags a void (2 mils). ``location``
+    (``"interior"``, ``"edge"``, ``"corner"``, ``"joint-approach"``, ``"joint-leave"``), ``at``
+    ((x, y) m, the plate's centre in the template's coordinates) and ``direction`` (degrees from
+    the x axis) say where every drop of a PDDX file stood, which the file does not; a CSV file
+    says it in its columns, and refuses them.
 
     Returns :class:`Records`, one per drop (SI: N/m³, Pa, m): ``station``, ``drop``,
     ``location``, ``load``, ``subgrade`` with ``subgrade_low`` and ``subgrade_high`` (the 95 %
@@ -513,6 +520,9 @@ def backcalc(
         "static_k_factor": float(static_k_factor),
         "max_evaluations": int(max_evaluations),
         "void_threshold": float(void_threshold),
+        "location": location,
+        "at": None if at is None else [float(v) for v in at],
+        "direction": None if direction is None else float(direction),
     }
     doc = json.loads(_progress.run(_core.backcalc, progress, kind, scene_text,
                                    options_json(None, {}), text, name, json.dumps(spec)))

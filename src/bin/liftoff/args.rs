@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::{Parser, Subcommand};
-use liftoff::backcalc::{BackcalcMethod, Unknown};
+use liftoff::backcalc::{BackcalcMethod, Location, Unknown};
 use liftoff::choice::Choice;
 use liftoff::method::{Contact, MethodKind, QpForm, QpSolver, Route, Start};
 use liftoff::model::{ConstraintPoints, SymmetryMode};
@@ -371,7 +371,7 @@ pub(crate) struct DesignArgs {
 #[derive(clap::Args)]
 pub(crate) struct BackcalcArgs {
     /// Basin file: CSV (one row a drop, the units in the column names) or AASHTO PDDX (its
-    /// drops interior ones): README, "Backcalculation".
+    /// drops interior ones unless --location says otherwise): README, "Backcalculation".
     pub(crate) basins: PathBuf,
     /// The template scene (TOML, or `example:NAME`): the slab's size, thickness, ν and joints,
     /// and the soil model whose modulus is fitted; its moduli are where a fit starts when the
@@ -394,6 +394,19 @@ pub(crate) struct BackcalcArgs {
     /// the elements are no wider than 0.95 of the load plate's radius).
     #[arg(long, value_parser = parse_grid)]
     pub(crate) elements: Option<[usize; 2]>,
+    /// Where every drop of a PDDX file stood (the file does not say it): interior (default),
+    /// edge, corner, joint-approach, joint-leave. A CSV file says it in its columns.
+    #[arg(long, value_parser = choice::<Location>())]
+    pub(crate) location: Option<Location>,
+    /// The load plate's centre for every drop of a PDDX file, X,Y in the template's unit of
+    /// length and coordinates (default: the location's own place, as README says; joint
+    /// drops need it).
+    #[arg(long, value_parser = parse_point, allow_hyphen_values = true)]
+    pub(crate) at: Option<[f64; 2]>,
+    /// The sensor line's direction from the x axis for every drop of a PDDX file, degrees
+    /// (default 0: along +x).
+    #[arg(long, allow_hyphen_values = true)]
+    pub(crate) direction: Option<f64>,
     /// Seating drops to discard at the start of each station.
     #[arg(long, default_value_t = 0)]
     pub(crate) seating: usize,
@@ -448,6 +461,20 @@ fn parse_along(s: &str) -> Result<Along, String> {
         liftoff::Error::Invalid { message, .. } => message,
         e => e.to_string(),
     })
+}
+
+fn parse_point(s: &str) -> Result<[f64; 2], String> {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    let n = |p: &str| {
+        p.parse::<f64>()
+            .ok()
+            .filter(|v| v.is_finite())
+            .ok_or_else(|| format!("`{p}` is not a coordinate"))
+    };
+    match parts.as_slice() {
+        [x, y] => Ok([n(x)?, n(y)?]),
+        _ => Err(format!("expected X,Y (two coordinates), got `{s}`")),
+    }
 }
 
 fn parse_grid(s: &str) -> Result<[usize; 2], String> {

@@ -408,10 +408,31 @@ fn backcalc(args: BackcalcArgs) -> Result<(), Failure> {
             source,
         })
     })?;
-    let drops = liftoff::backcalc::read_drops(&text, &path).map_err(Failure::from)?;
     let file = Source::from_arg(&args.scene)
         .parse()
         .map_err(|e| Failure::in_scene(&args.scene, e))?;
+    // `--at` is in the template's unit of length, as every length of its scene.
+    let placement = (args.location.is_some() || args.at.is_some() || args.direction.is_some())
+        .then(|| liftoff::backcalc::Placement {
+            location: args
+                .location
+                .unwrap_or(liftoff::backcalc::Location::Interior),
+            at: args
+                .at
+                .map(|p| p.map(|v| liftoff::units::Quantity::Length.to_si(file.units, v))),
+            direction: args.direction.unwrap_or(0.0),
+        });
+    let drops = liftoff::backcalc::read_drops_placed(&text, &path, placement.as_ref()).map_err(
+        |e| {
+            let hint = match &e {
+                Error::Invalid { field, .. } if field == "placement" => "\nhint: --location, --at and --direction place the drops of a PDDX file; leave them out for a CSV file",
+                Error::Invalid { field, .. } if field == "placement.at" => "\nhint: --at X,Y gives the load plate's centre, in the template's unit of length and coordinates",
+                _ => "",
+            };
+            let f = Failure::from(e);
+            Failure::new(f.code, format!("{}{hint}", f.message))
+        },
+    )?;
     // The template must be valid before the fits change its moduli and loads (it needs no
     // loads of its own: the drops are).
     liftoff::backcalc::check_template(&file).map_err(|e| Failure::in_scene(&args.scene, e))?;
