@@ -608,3 +608,218 @@ fn the_report_of_a_us_scene_shows_us_units() {
     assert_eq!(unit, "mils");
     assert!((w - held).abs() <= 5e-4 * held, "{w} mils vs {held}");
 }
+
+/// Every key a scene's sections accept is either converted in a US scene
+/// (`scene::convert::quantity` names its quantity) or listed below as one without units — a
+/// pure number, a word, an angle, a count, or a key of dimensionless scenes only. A key added to
+/// a section without either fails here, before a US scene reads its inches as metres (as
+/// `[plate] outline`, `[[opening]]`, a region panel's `x`, `y`, `outline` and a joint's `from`,
+/// `to` once were). The sections' keys are serde's own list, from the error a bogus key gets.
+/// (`[foundation]`'s keys are each soil's, converted from its own list of SI units.)
+#[test]
+fn every_scene_key_is_converted_or_has_no_unit() {
+    use liftoff::scene::convert::quantity;
+    let unitless: &[(&str, &[&str])] = &[
+        ("plate", &["poissons_ratio", "shear_correction", "ends"]),
+        ("opening", &[]),
+        ("void", &[]),
+        ("joint", &["kind", "name"]),
+        ("panel", &["thickness_ratio", "modulus_ratio"]),
+        // `curvature`: the free curl of a dimensionless scene; `shrinkage`: a strain; `heading`:
+        // degrees.
+        (
+            "load",
+            &[
+                "kind",
+                "case",
+                "name",
+                "curvature",
+                "interpolation",
+                "shrinkage",
+                "standard",
+                "configuration",
+                "tires",
+                "heading",
+                "contact_shape",
+            ],
+        ),
+        ("foundation.zone", &["gamma"]),
+        (
+            "traffic",
+            &["design_life", "growth", "wander", "edge", "ends", "group"],
+        ),
+        ("traffic.wander", &["positions"]),
+        ("traffic.group", &["load", "repetitions"]),
+        ("climate.bin", &["share"]),
+        // The relations' coefficients are those of their published forms (PCA's and the FAA's
+        // in US units whatever the scene's).
+        (
+            "damage",
+            &[
+                "model",
+                "rupture_growth",
+                "steps",
+                "reliability",
+                "coefficients",
+                "interpolate",
+            ],
+        ),
+    ];
+    for (section, none) in unitless {
+        let heading = match *section {
+            "plate" | "traffic" | "traffic.wander" | "damage" => format!("[{section}]"),
+            s => format!("[[{s}]]"),
+        };
+        let text = format!("{heading}\nno_such_key = 1\n");
+        let err = Problem::from_toml(&text)
+            .map(|_| ())
+            .expect_err("a bogus key")
+            .to_string();
+        let list = err
+            .split_once("expected one of ")
+            .unwrap_or_else(|| panic!("{section}: no key list in {err}"))
+            .1;
+        let keys: Vec<&str> = list
+            .split(", ")
+            .map(|k| k.trim().trim_matches(|c| c == '`' || c == '\n'))
+            .map(|k| k.split(['`', '\n']).next().unwrap_or(k))
+            .collect();
+        assert!(keys.len() >= 2, "{section}: {keys:?} from {err}");
+        let conv = section.rsplit('.').next().unwrap_or(section);
+        let conv = match *section {
+            "foundation.zone" => "zone",
+            "traffic.wander" | "traffic.group" | "climate.bin" => section,
+            _ => conv,
+        };
+        for key in keys {
+            // A load's `difference` is a temperature difference for the temperature kinds.
+            let kind = (conv == "load").then_some("temperature");
+            let converted = quantity(conv, key, kind, None).is_some();
+            let listed = none.contains(&key);
+            assert!(
+                converted != listed,
+                "{section}.{key}: {}",
+                if converted {
+                    "converted and also listed as without units"
+                } else {
+                    "neither converted in a US scene (scene/convert.rs) nor listed as without units"
+                }
+            );
+        }
+    }
+}
+
+/// A shaped plate in US units — an L-shaped 240 in × 160 in slab (10 in cells), a 20 in × 40 in
+/// opening, a thicker region panel of its own outline, a joint segment that ends on the
+/// outline — is its SI twin, every length × 0.0254 m here: the same deflection and pressure at
+/// every node to 1e-9 of the peak (round-off; the twins' numbers agree to ~1e-16).
+#[test]
+fn a_shaped_us_scene_equals_its_si_twin() {
+    const IN: f64 = 0.0254;
+    const LBF: f64 = 4.448_221_615_260_5;
+    let psi = LBF / (IN * IN);
+    let scene = |l: f64, f: f64, p: f64, k: f64, units: &str| {
+        format!(
+            r#"title = "shaped"
+{units}
+[plate]
+length = {}
+width = {}
+thickness = {}
+youngs_modulus = {}
+poissons_ratio = 0.15
+outline = [[{}, {}], [{}, {}], [{}, 0.0], [0.0, 0.0], [0.0, {}], [{}, {}]]
+[[opening]]
+x = [{}, {}]
+y = [{}, {}]
+[[panel]]
+outline = [[{}, {}], [{}, {}], [{}, {}], [{}, {}]]
+thickness = {}
+[[joint]]
+from = [{}, {}]
+to = [{}, 0.0]
+kind = "aggregate"
+stiffness = {}
+[foundation]
+model = "winkler"
+modulus = {}
+[[load]]
+kind = "uniform"
+pressure = {}
+[[load]]
+kind = "point"
+x = {}
+y = {}
+force = {}
+[mesh]
+elements = [24, 16]
+symmetry = "none"
+[solver]
+contact = "unbonded"
+"#,
+            240.0 * l,
+            160.0 * l,
+            9.0 * l,
+            4.0e6 * p,
+            -120.0 * l,
+            -80.0 * l,
+            120.0 * l,
+            -80.0 * l,
+            120.0 * l,
+            80.0 * l,
+            -120.0 * l,
+            80.0 * l,
+            -60.0 * l,
+            -40.0 * l,
+            -20.0 * l,
+            20.0 * l,
+            20.0 * l,
+            -70.0 * l,
+            50.0 * l,
+            -70.0 * l,
+            50.0 * l,
+            -30.0 * l,
+            20.0 * l,
+            -30.0 * l,
+            12.0 * l,
+            80.0 * l,
+            -80.0 * l,
+            80.0 * l,
+            5.0e3 * p,
+            150.0 * k,
+            0.6 * p,
+            -90.0 * l,
+            50.0 * l,
+            9000.0 * f,
+        )
+    };
+    let us = scene(1.0, 1.0, 1.0, 1.0, "units = \"us\"");
+    let si = scene(IN, LBF, psi, psi / IN, "");
+    let a = analyse(&Problem::from_toml(&us).expect("US scene")).expect("US solve");
+    let b = analyse(&Problem::from_toml(&si).expect("SI scene")).expect("SI solve");
+    assert!(a.summary.converged && b.summary.converged);
+    let column = |r: &liftoff::post::Report, name: &str| -> Vec<f64> {
+        r.field
+            .columns()
+            .iter()
+            .find(|(n, _, _)| *n == name)
+            .map(|(_, _, c)| c.to_vec())
+            .unwrap_or_else(|| panic!("no column {name}"))
+    };
+    for name in ["w", "pressure"] {
+        let (x, y) = (column(&a.report, name), column(&b.report, name));
+        assert_eq!(x.len(), y.len(), "{name}: the same plate nodes");
+        let peak = y.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+        assert!(peak > 0.0, "{name}: something to compare");
+        let off = x
+            .iter()
+            .zip(&y)
+            .filter(|(p, q)| p.is_finite() || q.is_finite())
+            .fold(0.0_f64, |m, (p, q)| m.max((p - q).abs()))
+            / peak;
+        assert!(
+            off < 1e-9,
+            "{name}: US and SI differ by {off:e} of the peak"
+        );
+    }
+}

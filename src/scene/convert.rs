@@ -19,7 +19,8 @@ pub fn quantity(
 ) -> Option<Quantity> {
     use Quantity::*;
     match (section, key) {
-        ("plate", "length" | "width" | "thickness") => Some(Length),
+        ("plate", "length" | "width" | "thickness" | "outline") => Some(Length),
+        ("opening", "x" | "y" | "outline") => Some(Length),
         ("plate", "youngs_modulus") => Some(Pressure),
         ("plate", "thermal_expansion") => Some(ThermalExpansion),
         ("foundation", "allowable_pressure") => Some(Pressure),
@@ -33,14 +34,15 @@ pub fn quantity(
         ("zone", "x" | "y") => Some(Length),
         ("zone", "modulus") => Some(SubgradeModulus),
         ("void", "x" | "y" | "depth") => Some(Length),
-        ("joint", "x" | "y" | "spacing" | "offset" | "positions" | "diameter" | "opening") => {
-            Some(Length)
-        }
+        (
+            "joint",
+            "x" | "y" | "from" | "to" | "spacing" | "offset" | "positions" | "diameter" | "opening",
+        ) => Some(Length),
         ("joint", "stiffness" | "youngs_modulus") => Some(Pressure),
         ("joint", "rotational_stiffness") => Some(MomentPerLength),
         ("joint", "support_modulus") => Some(SubgradeModulus),
         ("joint", "dowel_stiffness") => Some(ForcePerLength),
-        ("panel", "at" | "thickness") => Some(Length),
+        ("panel", "at" | "x" | "y" | "outline" | "thickness") => Some(Length),
         ("panel", "youngs_modulus") => Some(Pressure),
         ("load", "x" | "y" | "from" | "to" | "depths" | "depth" | "wheels") => Some(Length),
         ("load", "axle_spacing" | "track" | "dual_spacing" | "radius") => Some(Length),
@@ -127,7 +129,7 @@ pub fn scene_to_si(scene: &mut Value, system: UnitSystem) -> Result<()> {
                 }
             }
             "damage" => table(value, "damage", None, soil, system),
-            "void" | "joint" | "panel" | "load" => {
+            "void" | "joint" | "panel" | "opening" | "load" => {
                 each(value, |entry| {
                     let kind = entry
                         .get("kind")
@@ -189,7 +191,12 @@ mod tests {
         let mut scene: Value = serde_json::json!({
             "units": "us",
             "plate": {"length": 168.0, "width": 144.0, "thickness": 9.0,
-                      "youngs_modulus": 5e6, "poissons_ratio": 0.15, "thermal_expansion": 5e-6},
+                      "youngs_modulus": 5e6, "poissons_ratio": 0.15, "thermal_expansion": 5e-6,
+                      "outline": [[-84.0, -72.0], [84.0, -72.0], [84.0, 72.0], [-84.0, 72.0]]},
+            "opening": [{"x": [0.0, 12.0], "y": [-12.0, 12.0]}],
+            "panel": [{"outline": [[-24.0, 0.0], [0.0, 0.0], [0.0, 24.0], [-24.0, 24.0]],
+                       "thickness": 12.0, "thickness_ratio": 1.5}],
+            "joint": [{"from": [36.0, -72.0], "to": [36.0, 0.0], "kind": "aggregate"}],
             "foundation": {"model": "winkler", "modulus": 200.0,
                            "zone": [{"x": [0.0, 12.0], "y": [0.0, 12.0], "modulus": 100.0}]},
             "load": [{"kind": "temperature", "difference": 27.0},
@@ -209,6 +216,13 @@ mod tests {
         assert!((n("/load/1/y/1") - 0.1524).abs() < 1e-15);
         assert!((n("/load/2/temperatures/0") - 10.0).abs() < 1e-12);
         assert!((n("/load/2/depths/1") - 0.2286).abs() < 1e-15);
+        assert!((n("/plate/outline/1/0") - 84.0 * 0.0254).abs() < 1e-15);
+        assert!((n("/opening/0/y/0") + 0.3048).abs() < 1e-15);
+        assert!((n("/panel/0/outline/2/1") - 0.6096).abs() < 1e-15);
+        assert!((n("/panel/0/thickness") - 0.3048).abs() < 1e-15);
+        assert_eq!(n("/panel/0/thickness_ratio"), 1.5);
+        assert!((n("/joint/0/from/0") - 0.9144).abs() < 1e-15);
+        assert!((n("/joint/0/to/1")).abs() < 1e-15);
         assert_eq!(
             scene.pointer("/mesh/elements/0"),
             Some(&serde_json::json!(28))
