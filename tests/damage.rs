@@ -406,6 +406,29 @@ fn a_us_plan_is_its_si_twin() {
     assert!((r.governing_bottom.x * IN - b.governing_bottom.x).abs() < 1e-9);
     assert!((r.rupture - 4.5e6 / psi).abs() < 1e-9 * r.rupture);
     assert_eq!(r.passes[0].difference, Some(8.0 * 1.8));
+    // The run names its passes in the scene's units: an opening of 0.3 m × 0.6 m under the
+    // lane's outer tire (0.4 m = 15.7 in from the edge at y = −1 m), written in inches on the
+    // 0.15 m grid, refuses the lane in inches — SI's words would be a unit the user never typed.
+    // (31 positions a pass, one every 0.14 m: three would step over the opening.)
+    let holed = format!(
+        "{}\n[[opening]]\nx = [{}, {}]\ny = [{}, {}]\n",
+        us.replace("steps = 3", "steps = 31"),
+        1.2 / IN,
+        1.5 / IN,
+        -0.9 / IN,
+        -0.3 / IN
+    );
+    let p = Problem::from_toml(&holed).expect("the scene's own axle stands clear of the opening");
+    let Err(err) = damage(&p, &Monitor::NONE).map(|_| ()) else {
+        panic!("a print on the opening: the run went through");
+    };
+    let err = err.to_string();
+    assert!(
+        err.contains("with its outer tire 15.7 in from the edge (lateral position 1 of 1)")
+            && err.contains(" in: a pass crosses the plate")
+            && !err.contains(" m "),
+        "{err}"
+    );
 }
 
 /// `design` on the slab with the PCA relation and a damage target: the design curve falls as

@@ -262,6 +262,9 @@ pub struct DamagePlan {
     /// The face stress of one kelvin of a profile's nonlinear part in the model's units
     /// (−E α/(1 − ν) L²/P, [`crate::model::Load::FaceStress`]); None as above.
     pub stress_per_kelvin: Option<f64>,
+    /// The scene's unit system, in which the run names its passes in words (progress, errors);
+    /// None: not known (the values above are SI either way).
+    pub units: Option<crate::units::UnitSystem>,
 }
 
 impl DamagePlan {
@@ -568,6 +571,7 @@ impl DamagePlan {
             cut,
             curvature_per_kelvin: None,
             stress_per_kelvin: None,
+            units: None,
         }))
     }
 

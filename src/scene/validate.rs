@@ -628,6 +628,7 @@ fn damage_plan(
             "a damage scene holds its loads without [[combination]]: the traffic's groups, levels and climate bins make its cases",
         ));
     }
+    plan.units = model.physical.map(|p| p.units);
     plan.curvature_per_kelvin = match (&file.plate, model.physical) {
         (Some(p), Some(ph)) => p
             .thermal_expansion

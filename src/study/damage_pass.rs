@@ -9,26 +9,45 @@ use crate::damage::relations::DamageModel;
 use crate::error::{Error, Result};
 use crate::model::{Load, Model};
 use crate::scene::Problem;
+use crate::units::{Quantity, UnitSystem};
 
-/// A case in words, for the progress bar and the list of missing passes.
+/// A case in words, for the progress bar and the list of missing passes, in the scene's units.
 pub(super) fn label(plan: &DamagePlan, bin: &Bin) -> String {
     let g = &plan.groups[bin.group];
     let climate = plan.climate[bin.climate];
     let d = climate.difference;
+    let us = plan.units == Some(UnitSystem::Us);
+    let load = g.levels[bin.level].load;
     format!(
-        "{} at {:.1} kN, {:.3} m from the edge{}{}",
+        "{} at {}, {} from the edge{}{}",
         g.load,
-        g.levels[bin.level].load / 1e3,
-        plan.lateral[bin.lateral].offset,
-        if d.is_finite() {
-            format!(", ΔT {d:+.1} K")
+        if us {
+            format!("{:.0} lbf", Quantity::Force.from_si(UnitSystem::Us, load))
         } else {
-            String::new()
+            format!("{:.1} kN", load / 1e3)
         },
-        climate
-            .subgrade_modulus
-            .map_or(String::new(), |k| format!(", k {:.1} MN/m³", k / 1e6))
+        length(plan, plan.lateral[bin.lateral].offset),
+        match (d.is_finite(), us) {
+            (false, _) => String::new(),
+            (true, false) => format!(", ΔT {d:+.1} K"),
+            // 9/5 exactly, as damage.json reports the bins (`Damage::reported`).
+            (true, true) => format!(", ΔT {:+.1} °F", d * 9.0 / 5.0),
+        },
+        climate.subgrade_modulus.map_or(String::new(), |k| if us {
+            let pci = Quantity::SubgradeModulus.from_si(UnitSystem::Us, k);
+            format!(", k {pci:.0} pci")
+        } else {
+            format!(", k {:.1} MN/m³", k / 1e6)
+        })
     )
+}
+
+/// A length of the plan (SI) in the scene's unit of length, for words: `0.457 m`, `18.0 in`.
+fn length(plan: &DamagePlan, si: f64) -> String {
+    match plan.units {
+        Some(UnitSystem::Us) => format!("{:.1} in", Quantity::Length.from_si(UnitSystem::Us, si)),
+        _ => format!("{si:.3} m"),
+    }
 }
 
 /// The models of one case's pass: the scene's model with its climate bin's temperature load
@@ -100,8 +119,10 @@ pub(super) fn pass_models(base: &Model, plan: &DamagePlan, bin: &Bin) -> Result<
         return Err(Error::invalid(
             format!("traffic.group[{}].load", bin.group),
             format!(
-                "the prints of `{}` do not fit on the {a} m × {b} m plate",
-                group.load
+                "the prints of `{}` do not fit on the {} × {} plate",
+                group.load,
+                length(plan, a),
+                length(plan, b)
             ),
         ));
     }
@@ -137,12 +158,14 @@ pub(super) fn pass_models(base: &Model, plan: &DamagePlan, bin: &Bin) -> Result<
         return Err(Error::invalid(
             "traffic.wander",
             format!(
-                "a pass of `{}` with its outer tire {:.3} m from the edge (lateral position {} of {}) puts a print on an opening or outside the plate's outline at {} of its {steps} positions, x = {first:.3} … {last:.3} m: a pass crosses the plate from end to end, and a load that falls through the slab is carried by none — keep the lane on the plate (traffic.edge_at, traffic.wander's mean and deviation) or model the plate's part that carries it",
+                "a pass of `{}` with its outer tire {} from the edge (lateral position {} of {}) puts a print on an opening or outside the plate's outline at {} of its {steps} positions, x = {} … {}: a pass crosses the plate from end to end, and a load that falls through the slab is carried by none — keep the lane on the plate (traffic.edge_at, traffic.wander's mean and deviation) or model the plate's part that carries it",
                 group.load,
-                l.offset,
+                length(plan, l.offset),
                 bin.lateral + 1,
                 plan.lateral.len(),
                 off.len(),
+                length(plan, *first),
+                length(plan, *last),
             ),
         ));
     }
