@@ -738,6 +738,36 @@ fn backcalc_recovers_the_bundled_surveys_moduli_and_writes_its_files() {
     assert!(stderr(&area).contains("station 2+000, drop 1`: the AREA method reads interior drops"));
 }
 
+/// `liftoff backcalc FILE --scene SCENE --out OUT FLAGS…`, which must succeed: its
+/// backcalc.csv.
+fn backcalc_table(
+    file: &Path,
+    scene: &str,
+    out: &Path,
+    flags: &[&str],
+) -> (Vec<String>, Vec<csv::StringRecord>) {
+    let mut args = vec![
+        "backcalc",
+        file.to_str().expect("utf-8 path"),
+        "--scene",
+        scene,
+        "--out",
+        out.to_str().expect("utf-8 path"),
+    ];
+    args.extend_from_slice(flags);
+    let o = liftoff(&args);
+    assert!(o.status.success(), "{}: {}", file.display(), stderr(&o));
+    read_csv(&out.join("backcalc.csv"))
+}
+
+/// A bundled basin file's lines as `keep` rewrites them (None: left out), written to `to`.
+fn basin_lines(file: &str, to: &Path, keep: impl FnMut(&str) -> Option<String>) {
+    let text = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(file))
+        .unwrap_or_else(|e| panic!("{file}: {e}"));
+    let lines: String = text.lines().filter_map(keep).collect();
+    std::fs::write(to, lines).unwrap_or_else(|e| panic!("{}: {e}", to.display()));
+}
+
 /// The bundled PDDX survey (`examples/fwd-interior.pdx`) holds station 1+000 of
 /// `examples/fwd-basins.csv` in AASHTO's exchange format: read by `liftoff backcalc`, its fit is
 /// the CSV file's to the digit in every column of backcalc.csv but the station's name (the same
@@ -746,20 +776,9 @@ fn backcalc_recovers_the_bundled_surveys_moduli_and_writes_its_files() {
 fn backcalc_reads_a_pddx_survey_as_its_csv_twin() {
     let dir = tempfile::tempdir().expect("tempdir");
     let run = |file: &str, out: &str| {
-        let basins = Path::new(env!("CARGO_MANIFEST_DIR")).join(file);
-        let out = dir.path().join(out);
-        let o = liftoff(&[
-            "backcalc",
-            basins.to_str().expect("utf-8 path"),
-            "--scene",
-            "example:fwd-panel",
-            "--seating",
-            "1",
-            "--out",
-            out.to_str().expect("utf-8"),
-        ]);
-        assert!(o.status.success(), "{file}: {}", stderr(&o));
-        read_csv(&out.join("backcalc.csv"))
+        let file = Path::new(env!("CARGO_MANIFEST_DIR")).join(file);
+        let flags = ["--seating", "1"];
+        backcalc_table(&file, "example:fwd-panel", &dir.path().join(out), &flags)
     };
     let (hp, pddx) = run("examples/fwd-interior.pdx", "pddx");
     let (hc, csv) = run("examples/fwd-basins.csv", "csv");
@@ -782,31 +801,14 @@ fn backcalc_reads_a_pddx_survey_as_its_csv_twin() {
 fn backcalc_places_a_pddx_survey_where_the_flags_say() {
     let dir = tempfile::tempdir().expect("tempdir");
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let csv_text = std::fs::read_to_string(root.join("examples/fwd-joint.csv")).expect("read");
     // The CSV file's header and its station 6+000, the twin of the PDDX file's one station.
-    let one: String = csv_text
-        .lines()
-        .filter(|l| l.starts_with("station") || l.starts_with("6+000"))
-        .map(|l| format!("{l}\n"))
-        .collect();
     let csv_path = dir.path().join("one.csv");
-    std::fs::write(&csv_path, one).expect("write");
+    basin_lines("examples/fwd-joint.csv", &csv_path, |l| {
+        (l.starts_with("station") || l.starts_with("6+000")).then(|| format!("{l}\n"))
+    });
     let run = |file: &Path, out: &str, flags: &[&str]| {
-        let out = dir.path().join(out);
-        let mut args = vec![
-            "backcalc",
-            file.to_str().expect("utf-8 path"),
-            "--scene",
-            "example:fwd-joint",
-            "--fit",
-            "subgrade,slab,joint",
-            "--out",
-            out.to_str().expect("utf-8"),
-        ];
-        args.extend_from_slice(flags);
-        let o = liftoff(&args);
-        assert!(o.status.success(), "{}: {}", file.display(), stderr(&o));
-        read_csv(&out.join("backcalc.csv"))
+        let flags = [&["--fit", "subgrade,slab,joint"], flags].concat();
+        backcalc_table(file, "example:fwd-joint", &dir.path().join(out), &flags)
     };
     let pddx_path = root.join("examples/fwd-joint.pdx");
     let (hp, pddx) = run(
@@ -957,33 +959,16 @@ fn backcalc_reads_a_us_template_without_loads_and_reports_in_its_units() {
     // agree in SI to the last bit or so (24 × 0.0254 against 2 × 12 × 0.0254), the fits to
     // far better than the 1e-6 asked.
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let csv: String = std::fs::read_to_string(&basins)
-        .expect("read")
-        .lines()
-        .filter_map(|l| match l {
-            _ if l.starts_with("station,") => Some(format!("{l},x_ft,y_ft\n")),
-            _ if l.starts_with("1+000,") => Some(format!("{l},0,-2\n")),
-            _ => None,
-        })
-        .collect();
     let csv_path = dir.path().join("placed.csv");
-    std::fs::write(&csv_path, csv).expect("write");
+    basin_lines("examples/fwd-basins.csv", &csv_path, |l| match l {
+        _ if l.starts_with("station,") => Some(format!("{l},x_ft,y_ft\n")),
+        _ if l.starts_with("1+000,") => Some(format!("{l},0,-2\n")),
+        _ => None,
+    });
+    let scene = scene.to_str().expect("utf-8");
     let fit = |file: &Path, out: &str, flags: &[&str]| {
-        let out = dir.path().join(out);
-        let mut args = vec![
-            "backcalc",
-            file.to_str().expect("utf-8"),
-            "--scene",
-            scene.to_str().expect("utf-8"),
-            "--seating",
-            "1",
-            "--out",
-            out.to_str().expect("utf-8"),
-        ];
-        args.extend_from_slice(flags);
-        let o = liftoff(&args);
-        assert!(o.status.success(), "{}", stderr(&o));
-        let (h, rows) = read_csv(&out.join("backcalc.csv"));
+        let flags = [&["--seating", "1"], flags].concat();
+        let (h, rows) = backcalc_table(file, scene, &dir.path().join(out), &flags);
         (
             number(&h, &rows[0], "k [pci]"),
             number(&h, &rows[0], "E [ksi]"),
