@@ -175,6 +175,29 @@ fn units_errors_name_the_key() {
     let e = Problem::from_toml(&US.replace("thickness = 9.0", "thickness = \"nine\""))
         .expect_err("refused");
     assert!(e.to_string().contains("thickness"), "{e}");
+    // A US scene is checked in SI after its conversion: a message that quotes metres says so
+    // (a 200 in thick slab, 5.08 m, on the 168 in × 144 in plate) ...
+    let note = "(its numbers in SI: a US scene is checked after its conversion;";
+    let e = Problem::from_toml(&US.replace("thickness = 9.0", "thickness = 200.0"))
+        .expect_err("refused")
+        .to_string();
+    assert!(
+        e.contains("5.08 m is not smaller than the plate's sides (4.2672 × 3.6576 m)")
+            && e.contains(note),
+        "{e}"
+    );
+    // ... the SI scene's own message does not, nor does a US message without a unit.
+    let e = Problem::from_toml(&SI.replace("thickness = 0.2286", "thickness = 5.08"))
+        .expect_err("refused")
+        .to_string();
+    assert!(
+        e.contains("5.08 m is not smaller") && !e.contains(note),
+        "{e}"
+    );
+    let e = Problem::from_toml(&US.replace("poissons_ratio = 0.15", "poissons_ratio = 0.7"))
+        .expect_err("refused")
+        .to_string();
+    assert!(e.contains("poissons_ratio") && !e.contains(note), "{e}");
 }
 
 /// Values that suggest a unit slip warn, naming the key and the likely slip, and the scene

@@ -138,10 +138,35 @@ impl SceneFile {
         Self::parse(text)
     }
 
-    /// Validate and convert to the unit system.
+    /// Validate and convert to the unit system. A scene in US units is checked after its
+    /// conversion to SI: a message that quotes SI values says so, naming the factor back.
     pub fn validate(&self) -> Result<Problem> {
-        validate::problem(self)
+        validate::problem(self).map_err(|e| match (self.units, e) {
+            (crate::units::UnitSystem::Us, Error::Invalid { field, message })
+                if quotes_si(&message) =>
+            {
+                Error::Invalid {
+                    field,
+                    message: format!(
+                        "{message} (its numbers in SI: a US scene is checked after its conversion; 1 in = 0.0254 m, 1 lbf = 4.448 N, 1 psi = 6895 Pa)"
+                    ),
+                }
+            }
+            (_, e) => e,
+        })
     }
+}
+
+/// Whether a message quotes a value in an SI unit: a digit, or a closing bracket after one,
+/// then ` m`, ` Pa`, ` N`, ` kN`, ` MN/m³`, ` N/m³` or ` K` as a word of its own.
+fn quotes_si(message: &str) -> bool {
+    const UNITS: [&str; 7] = ["m", "Pa", "N", "kN", "MN/m³", "N/m³", "K"];
+    let words: Vec<&str> = message.split(' ').collect();
+    words.windows(2).any(|w| {
+        let unit = w[1].trim_end_matches(|c: char| ",.:;)]".contains(c));
+        let number = w[0].trim_end_matches(|c: char| ")]".contains(c));
+        UNITS.contains(&unit) && number.ends_with(|c: char| c.is_ascii_digit())
+    })
 }
 
 impl Problem {
