@@ -845,4 +845,29 @@ contact = "unbonded"
             "{name}: US and SI differ by {off:e} of the peak"
         );
     }
+    // The re-entrant corners' notes give their places in the scene's unit: the SI twin's
+    // (x, y) m are the US scene's (x / 0.0254, y / 0.0254) in (the first corner is the
+    // opening's, (−60, −20) in: off the origin, so the factor shows).
+    let corner = |notes: &[String], unit: &str| -> [f64; 2] {
+        let note = notes
+            .iter()
+            .find(|n| n.contains("re-entrant corners (the first at ("))
+            .unwrap_or_else(|| panic!("no corner note in {notes:?}"));
+        let at = note.split("the first at (").nth(1).expect("a place");
+        let (xy, rest) = at.split_once(')').expect("a closing bracket");
+        assert!(rest.starts_with(&format!(" {unit}")), "{note}");
+        let v: Vec<f64> = xy
+            .split(", ")
+            .map(|t| t.parse().expect("a number"))
+            .collect();
+        [v[0], v[1]]
+    };
+    let (us_at, si_at) = (corner(&a.report.notes, "in"), corner(&b.report.notes, "m"));
+    for k in 0..2 {
+        // Printed to 3 decimals in each unit.
+        assert!(
+            (us_at[k] * IN - si_at[k]).abs() < 1e-3,
+            "{us_at:?} in vs {si_at:?} m"
+        );
+    }
 }

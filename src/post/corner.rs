@@ -60,13 +60,15 @@ pub const MINDLIN_LAMBDA: f64 = 0.544_484;
 
 /// The report's notes on the re-entrant corners of `field` (none on a rectangle): where they
 /// are and how the moment grows there; and, when a peak tension sits in an element touching
-/// one, that it is not a design value. `length` names the positions' unit.
+/// one, that it is not a design value. `length` names the positions' unit and its factor on
+/// the field's coordinates (`("m", 1.0)`, `("in", 1 / 0.0254)`, `("L", 1.0)`).
 pub fn notes(
     field: &FullField,
     nu: f64,
     peaks: [(&str, &PeakTension); 2],
-    length: &str,
+    length: (&str, f64),
 ) -> Vec<String> {
+    let (length, scale) = length;
     let corners = re_entrant(field);
     let Some(&(i0, j0)) = corners.first() else {
         return Vec::new();
@@ -74,9 +76,10 @@ pub fn notes(
     let n1 = field.nx + 1;
     let at = |i: usize, j: usize| (field.x[i + j * n1], field.y[i + j * n1]);
     let (x0, y0) = at(i0, j0);
+    let (sx0, sy0) = (x0 * scale, y0 * scale);
     let lambda = williams_lambda(nu);
     let mut notes = vec![format!(
-        "{} re-entrant corner{} (the first at ({x0:.3}, {y0:.3}) {length}): the bending moment is singular there, growing as r^{:.3} towards the corner (Kirchhoff's free edges at ν = {nu}; r^{:.3} within a thickness of it) — a stress read at a corner element grows as the mesh is refined and is not a design value: read it a thickness or more away, or design the corner for the singular field",
+        "{} re-entrant corner{} (the first at ({sx0:.3}, {sy0:.3}) {length}): the bending moment is singular there, growing as r^{:.3} towards the corner (Kirchhoff's free edges at ν = {nu}; r^{:.3} within a thickness of it) — a stress read at a corner element grows as the mesh is refined and is not a design value: read it a thickness or more away, or design the corner for the singular field",
         corners.len(),
         if corners.len() > 1 { "s" } else { "" },
         lambda - 1.0,
@@ -93,8 +96,11 @@ pub fn notes(
         if let Some(&(i, j)) = near.filter(|_| p.value > 0.0) {
             let (x, y) = at(i, j);
             notes.push(format!(
-                "the peak tension at the {face} ({:.3}, {:.3}) {length} is in an element at the re-entrant corner ({x:.3}, {y:.3}) {length}: it is the singular field's value at this mesh, not a design stress",
-                p.x, p.y
+                "the peak tension at the {face} ({:.3}, {:.3}) {length} is in an element at the re-entrant corner ({:.3}, {:.3}) {length}: it is the singular field's value at this mesh, not a design stress",
+                p.x * scale,
+                p.y * scale,
+                x * scale,
+                y * scale
             ));
         }
     }

@@ -330,7 +330,16 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
             fraction_exceeding: area / (lx * ly * plate_fraction),
         }
     });
+    // The notes' lengths in the scene's unit: m, in, or the paper's L.
+    let (unit, per_metre) = match model.physical.map(|p| p.units) {
+        Some(crate::units::UnitSystem::Us) => ("in", 1.0 / crate::units::INCH),
+        Some(crate::units::UnitSystem::Si) => ("m", 1.0),
+        None => ("L", 1.0),
+    };
     let length = match model.physical {
+        Some(p) if unit == "in" => {
+            format!("{:.2} in", model.bearing_length * p.half_length * per_metre)
+        }
         Some(p) => format!("{:.3} m", model.bearing_length * p.half_length),
         None => format!("{:.4} L", model.bearing_length),
     };
@@ -341,7 +350,7 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
         &field,
         model.groups.nu,
         [("bottom", &stress.bottom), ("top", &stress.top)],
-        if model.physical.is_some() { "m" } else { "L" },
+        (unit, per_metre),
     ));
     // The dual-tire print's rectangle stands only along the grid: at other headings each tire
     // is a square of its contact area (README, "Pavement loads").
