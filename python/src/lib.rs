@@ -707,18 +707,13 @@ fn backcalc(
             static_k_factor: spec.static_k_factor.unwrap_or(defaults.static_k_factor),
             void_threshold: spec.void_threshold.unwrap_or(defaults.void_threshold),
         };
-        let placement = match (&spec.location, spec.at, spec.direction) {
-            (None, None, None) => None,
-            (location, at, direction) => Some(liftoff::backcalc::Placement {
-                location: location
-                    .as_deref()
-                    .map(|w| word::<liftoff::backcalc::Location>("location", w))
-                    .transpose()?
-                    .unwrap_or(liftoff::backcalc::Location::Interior),
-                at,
-                direction: direction.unwrap_or(0.0),
-            }),
-        };
+        let location = spec
+            .location
+            .as_deref()
+            .map(|w| word::<liftoff::backcalc::Location>("location", w))
+            .transpose()?;
+        let placement =
+            liftoff::backcalc::Placement::from_options(location, spec.at, spec.direction);
         let drops = liftoff::backcalc::read_drops_placed(basins, source_name, placement.as_ref())?;
         let mut file = source(kind, text).parse()?;
         Overrides::from_json(options)?.apply(&mut file);

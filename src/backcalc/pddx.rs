@@ -1,5 +1,5 @@
-//! Deflectometer drops as an AASHTO PDDX file (Pavement Deflection Data Exchange), and
-//! [`read_drops`], which reads a survey in either form.
+//! Deflectometer drops as an AASHTO PDDX file (Pavement Deflection Data Exchange); `drops.rs`
+//! tells it from a CSV file and places its drops.
 //!
 //! A PDDX file is INI-like: `[Section]` headings, then `Key = value, value, …` lines. liftoff
 //! reads these keys (the names are PDDX's; the case of a key and the spaces around `=` do not
@@ -41,99 +41,14 @@
 //! without them cannot be read safely. Sensors off the sensor line (a Y distance that is not 0)
 //! or behind the plate (a negative X distance) are refused: liftoff places a drop's sensors on
 //! one ray from the plate's centre. PDDX does not say where on a slab a drop was made in a form
-//! liftoff reads: every drop is `interior`, at the template's centre, unless a [`Placement`]
-//! says where the file's drops stood ([`read_drops_placed`]; `liftoff backcalc --location --at
-//! --direction`): a survey file holds one kind of test as a rule (a pass of interior drops, one
-//! of joint drops), and a file of mixed kinds is a CSV file's case, whose `location`, `x_m`,
-//! `y_m` and `direction_deg` columns say it drop by drop (`basins.rs`).
+//! liftoff reads: every drop is `interior`, at the template's centre, unless a placement says
+//! where the file's drops stood (`drops.rs`; `liftoff backcalc --location --at --direction`).
 //! Every drop is [`Drop::check`]ed, as a CSV file's are.
 
 use super::area::Basin;
-use super::basins::{read_basins, Drop, Location};
+use super::basins::{Drop, Location};
 use crate::error::{Error, Result};
 use crate::units::{FOOT, INCH, POUND_FORCE};
-
-/// Read a survey's drops from a PDDX file or a CSV basin file, told apart by the first line
-/// that is not blank or a comment: a `[Section]` heading is PDDX. `source` names the file in
-/// errors.
-pub fn read_drops(text: &str, source: &str) -> Result<Vec<Drop>> {
-    read_drops_placed(text, source, None)
-}
-
-/// Where every drop of a PDDX file stood, which the file does not say in a form liftoff reads
-/// (without one its drops are interior ones at the template's centre).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Placement {
-    /// Where on the slab.
-    pub location: Location,
-    /// The plate's centre in the template's coordinates, m (None: the location's default place,
-    /// as a CSV file's drop without `x_m` and `y_m`; joint drops need it).
-    pub at: Option<[f64; 2]>,
-    /// The sensor line's direction from the x axis, degrees.
-    pub direction: f64,
-}
-
-/// [`read_drops`], a PDDX file's drops placed by `placement`. A CSV file with a placement is
-/// refused: its columns say where each drop stood, and two answers to that would be one too
-/// many. The placement is checked here (a joint location without its place, a value that is
-/// not finite); whether the plate and sensors fall on the template's slab is checked where a
-/// drop meets its template (`fit`).
-pub fn read_drops_placed(
-    text: &str,
-    source: &str,
-    placement: Option<&Placement>,
-) -> Result<Vec<Drop>> {
-    // A byte-order mark, as Windows tools write one, is not part of the text.
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let first = text
-        .lines()
-        .map(str::trim)
-        .find(|l| !(l.is_empty() || l.starts_with('#') || l.starts_with(';')));
-    let pddx = matches!(first, Some(l) if l.starts_with('['));
-    let Some(p) = placement else {
-        return if pddx {
-            read_pddx(text, source)
-        } else {
-            read_basins(text, source)
-        };
-    };
-    if !pddx {
-        return Err(Error::invalid(
-            "placement",
-            format!(
-                "{source} is a CSV basin file, which says where each drop stood in its `location`, `x_m`, `y_m` and `direction_deg` columns; a placement is for the drops of a PDDX file, which does not"
-            ),
-        ));
-    }
-    if let Some(at) = p.at.filter(|at| !at.iter().all(|v| v.is_finite())) {
-        return Err(Error::invalid(
-            "placement.at",
-            format!("({}, {}) is not a place on the slab", at[0], at[1]),
-        ));
-    }
-    if !p.direction.is_finite() {
-        return Err(Error::invalid(
-            "placement.direction",
-            format!("{} is not a direction in degrees", p.direction),
-        ));
-    }
-    if p.at.is_none() && matches!(p.location, Location::JointApproach | Location::JointLeave) {
-        return Err(Error::invalid(
-            "placement.at",
-            format!(
-                "{} drops need the plate's place on the slab (beside which joint, where along it): give it",
-                p.location
-            ),
-        ));
-    }
-    let mut drops = read_pddx(text, source)?;
-    for d in &mut drops {
-        d.location = p.location;
-        d.at = p.at;
-        d.direction = p.direction;
-    }
-    Ok(drops)
-}
 
 /// A unit word as it is written in `[Units]`, lower case without separators or a plural `s`.
 fn unit_word(word: &str) -> String {
@@ -536,7 +451,7 @@ DropData_0 = 40, 110, 80, 95, 62
 
     #[test]
     fn a_file_reads_in_si_its_sensors_in_order_and_its_drops_numbered() {
-        let d = read_drops(FILE, "f.pdx").expect("reads");
+        let d = read_pddx(FILE, "f.pdx").expect("reads");
         assert_eq!(d.len(), 3);
         assert_eq!((d[0].station.as_str(), d[0].drop), ("1.000", 1));
         assert_eq!((d[1].station.as_str(), d[1].drop), ("1.000", 2));
@@ -558,8 +473,8 @@ DropData_0 = 40, 110, 80, 95, 62
             1.000,1,40,150,100,90,75,60\n\
             1.000,2,50,150,125,112,94,75\n\
             2,1,40,150,110,95,80,62\n";
-        let a = read_drops(FILE, "f.pdx").expect("pddx");
-        let b = read_drops(csv, "f.csv").expect("csv");
+        let a = read_pddx(FILE, "f.pdx").expect("pddx");
+        let b = super::super::basins::read_basins(csv, "f.csv").expect("csv");
         assert_eq!(a.len(), b.len());
         for (a, b) in a.iter().zip(&b) {
             assert_eq!(
@@ -575,56 +490,6 @@ DropData_0 = 40, 110, 80, 95, 62
     }
 
     #[test]
-    fn a_placement_puts_every_drop_of_a_pddx_file_and_a_csv_file_refuses_it() {
-        let p = Placement {
-            location: Location::JointLeave,
-            at: Some([0.15, -0.9]),
-            direction: 180.0,
-        };
-        let d = read_drops_placed(FILE, "f.pdx", Some(&p)).expect("placed");
-        assert_eq!(d.len(), 3);
-        for d in &d {
-            assert_eq!(
-                (d.location, d.at, d.direction),
-                (p.location, p.at, p.direction)
-            );
-        }
-        // Unplaced, the same drops stand at the template's centre as interior ones.
-        let plain = read_drops(FILE, "f.pdx").expect("reads");
-        assert!(plain
-            .iter()
-            .all(|d| (d.location, d.at, d.direction) == (Location::Interior, None, 0.0)));
-        let err = |text: &str, p: &Placement| match read_drops_placed(text, "f", Some(p)) {
-            Err(Error::Invalid { field, message }) => format!("{field}: {message}"),
-            other => panic!("{other:?}"),
-        };
-        let csv = "station,load_kN,d0mm_um,d305mm_um\nA,40,100,90\n";
-        assert!(err(csv, &p).starts_with("placement: f is a CSV basin file"));
-        let unplaced = Placement { at: None, ..p };
-        assert!(err(FILE, &unplaced)
-            .starts_with("placement.at: joint-leave drops need the plate's place"));
-        // Edge and corner drops have a default place, as a CSV file's do.
-        let edge = Placement {
-            location: Location::Edge,
-            ..unplaced
-        };
-        assert!(read_drops_placed(FILE, "f", Some(&edge)).is_ok());
-        let nowhere = Placement {
-            at: Some([f64::NAN, 0.0]),
-            ..p
-        };
-        assert!(err(FILE, &nowhere).starts_with("placement.at: (NaN, 0)"));
-    }
-
-    #[test]
-    fn a_byte_order_mark_does_not_hide_the_format() {
-        let d = read_drops(&format!("\u{feff}{FILE}"), "f.pdx").expect("pddx");
-        assert_eq!(d.len(), 3);
-        let csv = "\u{feff}station,load_kN,d0mm_um,d305mm_um\nA,40,100,90\n";
-        assert_eq!(read_drops(csv, "f.csv").expect("csv")[0].station, "A");
-    }
-
-    #[test]
     fn us_units_and_a_decimal_comma_convert_exactly() {
         let f = "[Pavement Deflection Data Exchange File]\nPDDXVersionNumber = 1.0\n\
             DelimiterSymbol = ;\nDecimalSymbol = ,\n\
@@ -633,7 +498,7 @@ DropData_0 = 40, 110, 80, 95, 62
             [Device Configuration]\nLoadPlateRadius = 5,91\nNumberOfDeflectionSensors = 2\n\
             DeflectionSensorXAxisDistances = 0; 12\n\
             [Test Location 7]\nDropData1 = 9000; 4,0; 3,5\n";
-        let d = read_drops(f, "f.pdx").expect("reads");
+        let d = read_pddx(f, "f.pdx").expect("reads");
         assert!((d[0].basin.load - 9000.0 * 4.448_221_615_260_5).abs() < 1e-6);
         assert!((d[0].basin.radius - 5.91 * 0.0254).abs() < 1e-15);
         assert!((d[0].basin.offsets[1] - 0.3048).abs() < 1e-15);
@@ -642,7 +507,7 @@ DropData_0 = 40, 110, 80, 95, 62
 
     #[test]
     fn bad_files_are_refused_naming_the_section_and_key() {
-        let err = |f: &str| match read_drops(f, "f.pdx") {
+        let err = |f: &str| match read_pddx(f, "f.pdx") {
             Err(Error::Invalid { field, message }) => format!("{field}: {message}"),
             other => panic!("{other:?}"),
         };

@@ -261,14 +261,16 @@ impl CellMask {
 /// edges along the grid's lines inside the plate's bounding box [−a/2, a/2] × [−b/2, b/2]
 /// (`size` = [a, b]) of `elements` = [nx, ny] cells. A closing vertex equal to the first is
 /// dropped. Errors name `field` (`plate.outline`, `opening[2].outline`) and the fix, and give
-/// lengths in `unit` (`" m"`; `""` where the coordinates have none, as a dimensionless scene's).
+/// lengths in `unit` (`Some("m")`; None where the coordinates have none, as a dimensionless
+/// scene's s and t).
 pub fn check_polygon(
     vertices: &[[f64; 2]],
     size: [f64; 2],
     elements: [usize; 2],
     field: &str,
-    unit: &str,
+    unit: Option<&str>,
 ) -> Result<Vec<[usize; 2]>> {
+    let unit = unit.map_or(String::new(), |u| format!(" {u}"));
     let mut v: Vec<[f64; 2]> = vertices.to_vec();
     if v.len() > 1 && v.first() == v.last() {
         v.pop();
@@ -437,7 +439,7 @@ mod tests {
 
     #[test]
     fn an_l_is_three_quarters_of_its_box_in_one_piece() {
-        let corners = check_polygon(&L, [4.0, 4.0], [8, 8], "plate.outline", " m").expect("L");
+        let corners = check_polygon(&L, [4.0, 4.0], [8, 8], "plate.outline", Some("m")).expect("L");
         let m = CellMask::inside(8, 8, &corners);
         assert_eq!(m.count(), 48);
         // The cut-away quarter: cells i, j ≥ 4.
@@ -445,7 +447,8 @@ mod tests {
         assert_eq!(m.pieces().len(), 1);
         // The L as the box less a square opening over the cut-away quarter: the same cells.
         let square = [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]];
-        let hole = check_polygon(&square, [4.0, 4.0], [8, 8], "opening[0]", " m").expect("square");
+        let hole =
+            check_polygon(&square, [4.0, 4.0], [8, 8], "opening[0]", Some("m")).expect("square");
         assert_eq!(
             CellMask::full(8, 8).without(&CellMask::inside(8, 8, &hole)),
             m
@@ -456,7 +459,7 @@ mod tests {
     /// cover each cell once.
     #[test]
     fn an_l_is_two_rectangles() {
-        let corners = check_polygon(&L, [4.0, 4.0], [8, 8], "plate.outline", " m").expect("L");
+        let corners = check_polygon(&L, [4.0, 4.0], [8, 8], "plate.outline", Some("m")).expect("L");
         let m = CellMask::inside(8, 8, &corners);
         assert_eq!(m.rectangles(), vec![[0, 8, 0, 4], [0, 4, 4, 8]]);
         assert_eq!(CellMask::full(3, 2).rectangles(), vec![[0, 3, 0, 2]]);
@@ -465,7 +468,7 @@ mod tests {
     #[test]
     fn an_opening_across_the_plate_leaves_two_pieces() {
         let slot = [[-0.5, -2.0], [0.5, -2.0], [0.5, 2.0], [-0.5, 2.0]];
-        let hole = check_polygon(&slot, [4.0, 4.0], [8, 8], "opening[0]", " m").expect("slot");
+        let hole = check_polygon(&slot, [4.0, 4.0], [8, 8], "opening[0]", Some("m")).expect("slot");
         let m = CellMask::full(8, 8).without(&CellMask::inside(8, 8, &hole));
         let pieces = m.pieces();
         assert_eq!(pieces.len(), 2);
@@ -483,12 +486,24 @@ mod tests {
         let mut off = L;
         off[2] = [2.0, 0.3];
         off[3] = [0.0, 0.3];
-        let (f, m) = field(check_polygon(&off, size, [8, 8], "plate.outline", " m"));
+        let (f, m) = field(check_polygon(
+            &off,
+            size,
+            [8, 8],
+            "plate.outline",
+            Some("m"),
+        ));
         assert_eq!(f, "plate.outline[2]");
         assert!(m.contains("a mesh of [8, 40] elements"), "{m}");
         // A diagonal edge.
         let tri = [[-2.0, -2.0], [2.0, -2.0], [2.0, 2.0], [0.0, 2.0]];
-        let (f, m) = field(check_polygon(&tri, size, [8, 8], "plate.outline", " m"));
+        let (f, m) = field(check_polygon(
+            &tri,
+            size,
+            [8, 8],
+            "plate.outline",
+            Some("m"),
+        ));
         assert_eq!(f, "plate.outline[3]");
         assert!(m.contains("runs along neither x nor y"), "{m}");
         // A bow tie of axis-parallel edges: edges 1 and 4 cross.
@@ -500,13 +515,25 @@ mod tests {
             [1.0, 0.0],
             [-2.0, 0.0],
         ];
-        let (f, m) = field(check_polygon(&bow, size, [8, 8], "plate.outline", " m"));
+        let (f, m) = field(check_polygon(
+            &bow,
+            size,
+            [8, 8],
+            "plate.outline",
+            Some("m"),
+        ));
         assert_eq!(f, "plate.outline");
         assert!(m.contains("cross or touch"), "{m}");
         // Outside the box, and too few corners.
         let mut out = L;
         out[0] = [-2.5, -2.0];
-        let (f, m) = field(check_polygon(&out, size, [8, 8], "plate.outline", " m"));
+        let (f, m) = field(check_polygon(
+            &out,
+            size,
+            [8, 8],
+            "plate.outline",
+            Some("m"),
+        ));
         assert_eq!(f, "plate.outline[0]");
         assert!(
             m.starts_with("(-2.5, -2) m lies outside the plate's 4 × 4 m box"),
@@ -518,23 +545,27 @@ mod tests {
             size,
             [8, 8],
             "dimensionless.outline",
-            "",
+            None,
         ));
         assert!(
             m.starts_with("(-2.5, -2) lies outside the plate's 4 × 4 box"),
             "{m}"
         );
-        assert!(
-            field(check_polygon(&L[..3], size, [8, 8], "plate.outline", " m"))
-                .1
-                .contains("at least 4 corners")
-        );
+        assert!(field(check_polygon(
+            &L[..3],
+            size,
+            [8, 8],
+            "plate.outline",
+            Some("m")
+        ))
+        .1
+        .contains("at least 4 corners"));
         // A closing corner equal to the first is the same outline.
         let mut closed = L.to_vec();
         closed.push(L[0]);
         assert_eq!(
-            check_polygon(&closed, size, [8, 8], "plate.outline", " m").expect("closed"),
-            check_polygon(&L, size, [8, 8], "plate.outline", " m").expect("open")
+            check_polygon(&closed, size, [8, 8], "plate.outline", Some("m")).expect("closed"),
+            check_polygon(&L, size, [8, 8], "plate.outline", Some("m")).expect("open")
         );
     }
 }

@@ -331,16 +331,16 @@ pub fn report(model: &Model, ops: &Operators, sol: &Solution) -> Report {
         }
     });
     // The notes' lengths in the scene's unit: m, in, or the paper's L.
-    let (unit, per_metre) = match model.physical.map(|p| p.units) {
-        Some(crate::units::UnitSystem::Us) => ("in", 1.0 / crate::units::INCH),
-        Some(crate::units::UnitSystem::Si) => ("m", 1.0),
-        None => ("L", 1.0),
-    };
+    let system = model.physical.map(|p| p.units);
+    let (unit, per_metre) = (
+        crate::units::Measure::Length.unit(system),
+        crate::units::Measure::Length.from_si(system, 1.0),
+    );
     let length = match model.physical {
-        Some(p) if unit == "in" => {
-            format!("{:.2} in", model.bearing_length * p.half_length * per_metre)
-        }
-        Some(p) => format!("{:.3} m", model.bearing_length * p.half_length),
+        Some(p) => format!(
+            "{:.3} {unit}",
+            model.bearing_length * p.half_length * per_metre
+        ),
         None => format!("{:.4} L", model.bearing_length),
     };
     let mut notes: Vec<String> = average::edge_note(model.groups.foundation(), &length)

@@ -41,16 +41,6 @@ impl Frame {
         }
     }
 
-    /// The unit of scene lengths as a message writes it after a number: `" m"`, or nothing in a
-    /// dimensionless scene (whose s and t differ by axis).
-    pub(super) fn length_unit(&self) -> &'static str {
-        if self.si.is_some() {
-            " m"
-        } else {
-            ""
-        }
-    }
-
     /// 0 for x, 1 for y.
     pub(super) fn index(axis: Axis) -> usize {
         match axis {

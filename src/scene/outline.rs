@@ -35,13 +35,19 @@ pub(super) fn shapes(file: &SceneFile, layout: &mut Layout, frame: &Frame) -> Re
     let [nx, ny] = frame.elements;
     let mut mask = CellMask::full(nx, ny);
     if let Some(vertices) = outline {
-        let corners = check_polygon(vertices, size, frame.elements, field, frame.length_unit())?;
+        let corners = check_polygon(vertices, size, frame.elements, field, frame.si.map(|_| "m"))?;
         mask = CellMask::inside(nx, ny, &corners);
         layout.outline = Some(to_units(vertices, frame));
     }
     for (k, spec) in file.opening.iter().enumerate() {
         let (vertices, field) = opening_polygon(k, spec)?;
-        let corners = check_polygon(&vertices, size, frame.elements, &field, frame.length_unit())?;
+        let corners = check_polygon(
+            &vertices,
+            size,
+            frame.elements,
+            &field,
+            frame.si.map(|_| "m"),
+        )?;
         let hole = CellMask::inside(nx, ny, &corners);
         let removed = mask.plate.iter().zip(&hole.plate).filter(|(&p, &h)| p && h);
         if removed.count() == 0 {

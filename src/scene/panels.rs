@@ -60,7 +60,13 @@ fn region(k: usize, spec: &PanelSpec, layout: &mut Layout, frame: &Frame) -> Res
         spec.outline.as_ref(),
     )?;
     let size = super::outline::box_size(frame);
-    let corners = check_polygon(&vertices, size, frame.elements, &field, frame.length_unit())?;
+    let corners = check_polygon(
+        &vertices,
+        size,
+        frame.elements,
+        &field,
+        frame.si.map(|_| "m"),
+    )?;
     let [nx, ny] = frame.elements;
     let cells = CellMask::inside(nx, ny, &corners);
     let polygon = super::outline::to_units(&vertices, frame);

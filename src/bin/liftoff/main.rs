@@ -412,16 +412,12 @@ fn backcalc(args: BackcalcArgs) -> Result<(), Failure> {
         .parse()
         .map_err(|e| Failure::in_scene(&args.scene, e))?;
     // `--at` is in the template's unit of length, as every length of its scene.
-    let placement = (args.location.is_some() || args.at.is_some() || args.direction.is_some())
-        .then(|| liftoff::backcalc::Placement {
-            location: args
-                .location
-                .unwrap_or(liftoff::backcalc::Location::Interior),
-            at: args
-                .at
-                .map(|p| p.map(|v| liftoff::units::Quantity::Length.to_si(file.units, v))),
-            direction: args.direction.unwrap_or(0.0),
-        });
+    let placement = liftoff::backcalc::Placement::from_options(
+        args.location,
+        args.at
+            .map(|p| p.map(|v| liftoff::units::Quantity::Length.to_si(file.units, v))),
+        args.direction,
+    );
     let drops = liftoff::backcalc::read_drops_placed(&text, &path, placement.as_ref()).map_err(
         |e| {
             let hint = match &e {
