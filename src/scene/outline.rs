@@ -27,27 +27,16 @@ pub(super) fn shapes(file: &SceneFile, layout: &mut Layout, frame: &Frame) -> Re
     if outline.is_none() && file.opening.is_empty() && layout.regions.is_empty() {
         return Ok(());
     }
-    // The box in scene coordinates.
-    let size = [
-        2.0 * frame.half[0] / frame.scale_xy[0],
-        2.0 * frame.half[1] / frame.scale_xy[1],
-    ];
     let [nx, ny] = frame.elements;
     let mut mask = CellMask::full(nx, ny);
     if let Some(vertices) = outline {
-        let corners = check_polygon(vertices, size, frame.elements, field, frame.si.map(|_| "m"))?;
+        let corners = grid_corners(vertices, field, frame)?;
         mask = CellMask::inside(nx, ny, &corners);
         layout.outline = Some(to_units(vertices, frame));
     }
     for (k, spec) in file.opening.iter().enumerate() {
         let (vertices, field) = opening_polygon(k, spec)?;
-        let corners = check_polygon(
-            &vertices,
-            size,
-            frame.elements,
-            &field,
-            frame.si.map(|_| "m"),
-        )?;
+        let corners = grid_corners(&vertices, &field, frame)?;
         let hole = CellMask::inside(nx, ny, &corners);
         let removed = mask.plate.iter().zip(&hole.plate).filter(|(&p, &h)| p && h);
         if removed.count() == 0 {
@@ -63,6 +52,7 @@ pub(super) fn shapes(file: &SceneFile, layout: &mut Layout, frame: &Frame) -> Re
     let mask = CellMask::of_layout(layout, frame.elements, frame.half[1]);
     let pieces = mask.pieces();
     if pieces.len() > 1 {
+        let size = box_size(frame);
         let [hx, hy] = [size[0] / nx as f64, size[1] / ny as f64];
         let centre = |c: usize| {
             let (i, j) = (c % nx, c / nx);
@@ -159,6 +149,22 @@ pub(super) fn box_size(frame: &Frame) -> [f64; 2] {
         2.0 * frame.half[0] / frame.scale_xy[0],
         2.0 * frame.half[1] / frame.scale_xy[1],
     ]
+}
+
+/// A polygon of the scene (`field` names it in errors) checked on the plate's box and grid
+/// ([`check_polygon`], lengths in m where the scene has them): its corners' grid indices.
+pub(super) fn grid_corners(
+    vertices: &[[f64; 2]],
+    field: &str,
+    frame: &Frame,
+) -> Result<Vec<[usize; 2]>> {
+    check_polygon(
+        vertices,
+        box_size(frame),
+        frame.elements,
+        field,
+        frame.si.map(|_| "m"),
+    )
 }
 
 /// Scene coordinates to the unit system.

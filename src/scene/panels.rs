@@ -6,7 +6,7 @@ use super::spec::{PanelSpec, SceneFile};
 use crate::check::finite_positive;
 use crate::error::{Error, Result};
 use crate::layout::{Axis, Layout, PanelOverride, PanelSection, Region};
-use crate::mesh::outline::{check_polygon, CellMask};
+use crate::mesh::outline::CellMask;
 use crate::model::Load;
 
 /// `[[panel]]`: the layout's panel overrides, one per panel of the joints' grid (`at`), and
@@ -59,14 +59,7 @@ fn region(k: usize, spec: &PanelSpec, layout: &mut Layout, frame: &Frame) -> Res
         spec.y,
         spec.outline.as_ref(),
     )?;
-    let size = super::outline::box_size(frame);
-    let corners = check_polygon(
-        &vertices,
-        size,
-        frame.elements,
-        &field,
-        frame.si.map(|_| "m"),
-    )?;
+    let corners = super::outline::grid_corners(&vertices, &field, frame)?;
     let [nx, ny] = frame.elements;
     let cells = CellMask::inside(nx, ny, &corners);
     let polygon = super::outline::to_units(&vertices, frame);
